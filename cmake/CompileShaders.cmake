@@ -1,0 +1,26 @@
+# vkwater_compile_shaders(TARGET name SOURCES a.comp b.frag ...)
+# Compiles GLSL to SPIR-V in the build tree with glslangValidator. The depfile makes
+# an edit to an included .glsl rebuild every shader that includes it. A shader error
+# fails the build with glslang's file:line message.
+function(vkwater_compile_shaders)
+  cmake_parse_arguments(ARG "" "TARGET" "SOURCES" ${ARGN})
+  set(outputs)
+  foreach(src IN LISTS ARG_SOURCES)
+    get_filename_component(abs ${src} ABSOLUTE)
+    file(RELATIVE_PATH rel ${CMAKE_SOURCE_DIR}/shaders ${abs})
+    set(out ${VKWATER_SHADER_OUTPUT_DIR}/${rel}.spv)
+    get_filename_component(out_dir ${out} DIRECTORY)
+    add_custom_command(
+      OUTPUT ${out}
+      COMMAND ${CMAKE_COMMAND} -E make_directory ${out_dir}
+      COMMAND Vulkan::glslangValidator --quiet --target-env vulkan1.3
+              -I${CMAKE_SOURCE_DIR}/shaders
+              --depfile ${out}.d -o ${out} ${abs}
+      MAIN_DEPENDENCY ${abs}
+      DEPFILE ${out}.d
+      COMMENT "GLSL ${rel}"
+      VERBATIM)
+    list(APPEND outputs ${out})
+  endforeach()
+  add_custom_target(${ARG_TARGET} ALL DEPENDS ${outputs})
+endfunction()

@@ -1,0 +1,237 @@
+// The frame graph: passes declare what they read and write with verbs named after
+// the Vulkan use (PassBuilder), and the graph culls, orders, derives every barrier
+// and layout transition, aliases transient memory, and records (FrameExecutor).
+// No pass records a barrier by hand.
+//
+// A pass has a name, a small Data struct of handles, a setup function that runs now
+// (declares uses through the builder) and an execute function that runs at record
+// time, only if the pass survived culling.
+#pragma once
+
+#include "engine/framegraph/access.hpp"
+#include "engine/framegraph/aliasing.hpp"
+#include "engine/framegraph/barriers.hpp"
+#include "engine/framegraph/blackboard.hpp"
+#include "engine/framegraph/frame_needs.hpp"
+#include "engine/framegraph/handles.hpp"
+
+#include <vulkan/vulkan.h>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vkw::fg {
+
+class PassContext;
+
+// Size classes of images created by the graph.
+enum class SizeClass : uint8_t { Absolute, OutputRelative };
+
+struct ImageInfo {
+    VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;
+    SizeClass size_class = SizeClass::OutputRelative;
+    float scale = 1.0f;                     // OutputRelative: fraction of the output size
+    uint32_t width = 0, height = 0;         // Absolute
+};
+
+struct BufferInfo {
+    VkDeviceSize size = 0;
+};
+
+enum class LoadOp : uint8_t { Clear, Load, DontCare };
+
+struct ClearValue {
+    float color[4] = {0, 0, 0, 0};
+    float depth = 0.0f;  // reversed-Z: 0 is the far plane
+    uint32_t stencil = 0;
+};
+
+// An image owned outside the graph (a readback target, a swapchain image, a
+// persistent texture). `initial` is the state it is in when the frame starts;
+// `final`, if set, the state the graph leaves it in.
+struct ImportedImage {
+    VkImage image = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+    uint32_t width = 0, height = 0;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    AccessState initial;
+    std::optional<AccessState> final_state;
+};
+
+struct ImportedBuffer {
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceSize size = 0;
+    AccessState initial;
+    std::optional<AccessState> final_state;
+};
+
+enum class RecordingKind : uint8_t { DynamicRendering, RenderPassObject };
+
+// One declared use of a resource by a pass.
+struct ResourceUse {
+    uint32_t resource;
+    uint32_t version_read;     // version the pass sees
+    uint32_t version_written;  // version it produces (== version_read for reads)
+    Use use;
+    VkPipelineStageFlags2 shader_stages;
+    LoadOp load = LoadOp::Clear;
+    ClearValue clear;
+};
+
+struct ResourceDecl {
+    std::string name;
+    bool is_image = true;
+    bool imported = false;
+    ImageInfo image;
+    BufferInfo buffer;
+    ImportedImage imported_image;
+    ImportedBuffer imported_buffer;
+    uint32_t version = 0;                        // current version
+    std::vector<uint32_t> writer_of_version;     // pass index that produced version v (v >= 1)
+    VkImageUsageFlags image_usage = 0;           // union of declared uses
+    VkBufferUsageFlags buffer_usage = 0;
+};
+
+struct PassDecl {
+    std::string name;
+    PassKind kind;
+    std::vector<ResourceUse> uses;
+    bool side_effect = false;
+    std::optional<Effect> serves;
+    std::optional<RecordingKind> recording;  // overrides the graph's default
+    std::function<void(PassContext&)> execute;
+};
+
+class FrameGraph;
+
+class PassBuilder {
+public:
+    ImageHandle create_image(std::string name, const ImageInfo& info);
+    BufferHandle create_buffer(std::string name, const BufferInfo& info);
+
+    // Reads return the handle they were given; writes return the next version.
+    ImageHandle sample(ImageHandle image, VkPipelineStageFlags2 shader_stages = 0);
+    ImageHandle read_storage(ImageHandle image, VkPipelineStageFlags2 shader_stages = 0);
+    [[nodiscard]] ImageHandle write_storage(ImageHandle image, VkPipelineStageFlags2 shader_stages = 0);
+    [[nodiscard]] ImageHandle read_write_storage(ImageHandle image, VkPipelineStageFlags2 shader_stages = 0);
+    [[nodiscard]] ImageHandle color_attachment(ImageHandle image, LoadOp load = LoadOp::Clear,
+                                               const ClearValue& clear = {});
+    [[nodiscard]] ImageHandle depth_stencil_attachment(ImageHandle image, LoadOp load = LoadOp::Clear,
+                                                       const ClearValue& clear = {});
+    ImageHandle depth_stencil_read_only(ImageHandle image);
+    ImageHandle copy_source(ImageHandle image);
+    [[nodiscard]] ImageHandle copy_destination(ImageHandle image);
+
+    BufferHandle uniform_buffer(BufferHandle buffer, VkPipelineStageFlags2 shader_stages = 0);
+    BufferHandle read_storage(BufferHandle buffer, VkPipelineStageFlags2 shader_stages = 0);
+    [[nodiscard]] BufferHandle write_storage(BufferHandle buffer, VkPipelineStageFlags2 shader_stages = 0);
+    [[nodiscard]] BufferHandle read_write_storage(BufferHandle buffer, VkPipelineStageFlags2 shader_stages = 0);
+    BufferHandle vertex_buffer(BufferHandle buffer);
+    BufferHandle index_buffer(BufferHandle buffer);
+    BufferHandle indirect_buffer(BufferHandle buffer);
+    BufferHandle copy_source(BufferHandle buffer);
+    [[nodiscard]] BufferHandle copy_destination(BufferHandle buffer);
+
+    // The pass must run even if nothing reads its outputs (e.g. it writes a file).
+    void side_effect();
+    // The pass exists for this effect; it is culled when the frame does not need it.
+    void serves(Effect effect);
+    void record_with(RecordingKind kind);
+
+private:
+    friend class FrameGraph;
+    PassBuilder(FrameGraph& graph, uint32_t pass) : graph_(graph), pass_(pass) {}
+    template <class Tag>
+    Handle<Tag> use(Handle<Tag> handle, Use use, VkPipelineStageFlags2 stages, LoadOp load = LoadOp::Clear,
+                    const ClearValue& clear = {});
+    FrameGraph& graph_;
+    uint32_t pass_;
+};
+
+// Why a pass does not run.
+struct CulledPass {
+    std::string name;
+    std::string reason;
+};
+
+// What compile() derives. Positions index passes in execution order.
+struct CompiledGraph {
+    std::vector<uint32_t> order;                      // pass indices, execution order
+    std::vector<CulledPass> culled;
+    std::vector<ResourceTimeline> timelines;          // per resource (index = resource)
+    std::vector<bool> resource_live;                  // used by at least one living pass
+    std::vector<uint32_t> first_use, last_use;        // execution positions, for live resources
+    BarrierPlan barriers;
+    AliasPlan aliasing;                               // transients only, estimated sizes
+    std::vector<uint32_t> aliased_resources;          // resource index of each aliasing request
+    uint32_t output_width = 0, output_height = 0;
+};
+
+class FrameGraph {
+public:
+    explicit FrameGraph(FrameNeeds needs = {});
+
+    ImageHandle import_image(std::string name, const ImportedImage& image);
+    BufferHandle import_buffer(std::string name, const ImportedBuffer& buffer);
+
+    template <class Data, class Setup, class Execute>
+    const Data& add_pass(std::string name, PassKind kind, Setup&& setup, Execute&& execute) {
+        const uint32_t index = add_pass_decl(std::move(name), kind);
+        auto data = std::make_shared<Data>();
+        PassBuilder builder(*this, index);
+        setup(builder, *data);
+        passes_[index].execute = [data, execute = std::forward<Execute>(execute)](PassContext& context) {
+            execute(*data, context);
+        };
+        return *data;
+    }
+
+    // A requested output keeps the passes that produce it (transitively) alive.
+    void request_output(ImageHandle image);
+    void request_output(BufferHandle buffer);
+
+    void set_default_recording(RecordingKind kind) { default_recording_ = kind; }
+    RecordingKind recording_of(uint32_t pass) const;
+
+    Blackboard& blackboard() { return blackboard_; }
+    const FrameNeeds& needs() const { return needs_; }
+
+    // Culling, ordering, lifetimes, barriers and an aliasing estimate. Pure: no GPU.
+    const CompiledGraph& compile(uint32_t output_width, uint32_t output_height);
+    const CompiledGraph& compiled() const;
+    bool is_compiled() const { return compiled_.has_value(); }
+
+    // Recomputes the barrier plan with aliasing predecessors from a real memory plan
+    // (the executor calls this after querying memory requirements).
+    void apply_aliasing(const AliasPlan& plan, const std::vector<uint32_t>& aliased_resources);
+
+    const std::vector<PassDecl>& passes() const { return passes_; }
+    const std::vector<ResourceDecl>& resources() const { return resources_; }
+    uint32_t image_width(uint32_t resource) const;
+    uint32_t image_height(uint32_t resource) const;
+
+    // Printable forms, for `vkwater passes` and golden tests.
+    std::string describe() const;
+    std::string dump_barriers() const;
+    std::string to_dot() const;
+
+private:
+    friend class PassBuilder;
+    uint32_t add_pass_decl(std::string name, PassKind kind);
+    uint32_t add_resource(ResourceDecl decl);
+    void check_current(uint32_t pass, uint32_t resource, uint32_t version, const char* verb) const;
+    std::vector<ResourceTimeline> build_timelines(const std::vector<uint32_t>& order) const;
+
+    FrameNeeds needs_;
+    std::vector<PassDecl> passes_;
+    std::vector<ResourceDecl> resources_;
+    std::vector<std::pair<uint32_t, uint32_t>> requested_;  // (resource, version)
+    Blackboard blackboard_;
+    RecordingKind default_recording_ = RecordingKind::DynamicRendering;
+    std::optional<CompiledGraph> compiled_;
+};
+
+}  // namespace vkw::fg

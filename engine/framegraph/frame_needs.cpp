@@ -1,0 +1,40 @@
+#include "engine/framegraph/frame_needs.hpp"
+
+namespace vkw::fg {
+
+const char* effect_name(Effect effect) {
+    switch (effect) {
+        case Effect::Water: return "water";
+        case Effect::UnderwaterView: return "underwater_view";
+        case Effect::Reflection: return "reflection";
+        case Effect::Refraction: return "refraction";
+        case Effect::SurfaceCaustics: return "caustics";
+        case Effect::VolumeCaustics: return "godrays";
+        case Effect::CausticBlur: return "caustic_blur";
+    }
+    return "?";
+}
+
+bool FrameNeeds::needs(Effect effect) const {
+    const EffectDecision* decision = find(effect);
+    return decision == nullptr || decision->needed;
+}
+
+const EffectDecision* FrameNeeds::find(Effect effect) const {
+    for (const EffectDecision& decision : decisions) {
+        if (decision.effect == effect) return &decision;
+    }
+    return nullptr;
+}
+
+void FrameNeeds::decide(Effect effect, bool needed, std::string reason, bool forced) {
+    for (EffectDecision& decision : decisions) {
+        if (decision.effect == effect) {
+            decision = {effect, needed, forced, std::move(reason)};
+            return;
+        }
+    }
+    decisions.push_back({effect, needed, forced, std::move(reason)});
+}
+
+}  // namespace vkw::fg

@@ -1,0 +1,105 @@
+#include "engine/framegraph/pass_context.hpp"
+
+#include "engine/framegraph/executor.hpp"
+#include "engine/vk/context.hpp"
+
+namespace vkw::fg {
+
+const Context& PassContext::context() const { return executor_.context(); }
+
+VkImage PassContext::image(ImageHandle handle) const { return executor_.image(handle.index); }
+VkImageView PassContext::view(ImageHandle handle) const { return executor_.view(handle.index); }
+VkBuffer PassContext::buffer(BufferHandle handle) const { return executor_.buffer(handle.index); }
+
+VkExtent2D PassContext::extent(ImageHandle handle) const {
+    return {executor_.graph().image_width(handle.index), executor_.graph().image_height(handle.index)};
+}
+
+VkDeviceSize PassContext::size(BufferHandle handle) const {
+    return executor_.graph().resources()[handle.index].buffer.size;
+}
+
+VkExtent2D PassContext::render_extent() const {
+    for (const ResourceUse& use : executor_.graph().passes()[pass_].uses) {
+        if (use.use == Use::ColorAttachmentWrite || use.use == Use::ColorAttachmentBlend ||
+            use.use == Use::DepthStencilWrite || use.use == Use::DepthStencilReadOnly) {
+            return extent({use.resource, 0});
+        }
+    }
+    return {0, 0};
+}
+
+const Pipeline& PassContext::pipeline(const std::string& key, GraphicsPipelineDesc desc) {
+    const FrameGraph& graph = executor_.graph();
+    const PassDecl& pass = graph.passes()[pass_];
+    desc.color_formats.clear();
+    desc.depth_format = VK_FORMAT_UNDEFINED;
+    for (const ResourceUse& use : pass.uses) {
+        const VkFormat format = graph.resources()[use.resource].image.format;
+        if (use.use == Use::ColorAttachmentWrite || use.use == Use::ColorAttachmentBlend) {
+            desc.color_formats.push_back(format);
+        }
+        if (use.use == Use::DepthStencilWrite || use.use == Use::DepthStencilReadOnly) desc.depth_format = format;
+    }
+    desc.render_pass = executor_.render_pass(pass_);
+    // Pipelines made for a VkRenderPass and for dynamic rendering are different objects.
+    const std::string full_key = pass.name + "/" + key + (desc.render_pass ? "/renderpass" : "/dynamic");
+    return executor_.pipelines().get(executor_.context(), full_key, desc);
+}
+
+const Pipeline& PassContext::pipeline(const std::string& key, const ComputePipelineDesc& desc) {
+    const std::string full_key = executor_.graph().passes()[pass_].name + "/" + key;
+    return executor_.pipelines().get(executor_.context(), full_key, desc);
+}
+
+DescriptorBinding PassContext::sampled(uint32_t binding, ImageHandle handle) const {
+    DescriptorBinding b{binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
+    b.image = {executor_.linear_sampler(), view(handle), executor_.layout_in_pass(pass_, handle.index)};
+    return b;
+}
+
+DescriptorBinding PassContext::storage_image(uint32_t binding, ImageHandle handle) const {
+    DescriptorBinding b{binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
+    b.image = {VK_NULL_HANDLE, view(handle), executor_.layout_in_pass(pass_, handle.index)};
+    return b;
+}
+
+DescriptorBinding PassContext::storage_buffer(uint32_t binding, BufferHandle handle) const {
+    DescriptorBinding b{binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+    b.buffer = {buffer(handle), 0, VK_WHOLE_SIZE};
+    return b;
+}
+
+DescriptorBinding PassContext::uniform_buffer(uint32_t binding, BufferHandle handle) const {
+    DescriptorBinding b{binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
+    b.buffer = {buffer(handle), 0, VK_WHOLE_SIZE};
+    return b;
+}
+
+void PassContext::bind(const Pipeline& pipeline, std::initializer_list<DescriptorBinding> bindings) const {
+    vkCmdBindPipeline(cmd_, pipeline.bind_point(), pipeline.handle());
+    if (bindings.size() == 0) return;
+    std::vector<VkWriteDescriptorSet> writes;
+    for (const DescriptorBinding& binding : bindings) {
+        VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        write.dstBinding = binding.binding;
+        write.descriptorCount = 1;
+        write.descriptorType = binding.type;
+        const bool is_buffer = binding.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER ||
+                               binding.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+        if (is_buffer) {
+            write.pBufferInfo = &binding.buffer;
+        } else {
+            write.pImageInfo = &binding.image;
+        }
+        writes.push_back(write);
+    }
+    executor_.context().push_descriptor_set()(cmd_, pipeline.bind_point(), pipeline.layout(), 0,
+                                              static_cast<uint32_t>(writes.size()), writes.data());
+}
+
+void PassContext::push_constants(const Pipeline& pipeline, const void* data, uint32_t bytes) const {
+    vkCmdPushConstants(cmd_, pipeline.layout(), VK_SHADER_STAGE_ALL, 0, bytes, data);
+}
+
+}  // namespace vkw::fg

@@ -1,0 +1,221 @@
+// OpenEXR read/write through the general Imf::InputFile / Imf::OutputFile API
+// (RgbaOutputFile cannot carry the extra layers).
+#include "engine/image/exr_io.hpp"
+
+#include <Imath/half.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfTestFile.h>
+
+#include <algorithm>
+#include <array>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <set>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "engine/core/errors.hpp"
+#include "engine/image/file_paths.hpp"
+
+namespace vkw {
+namespace {
+
+using ChannelNames = std::span<const char* const>;
+
+constexpr std::array<const char*, 4> kRgba = {"R", "G", "B", "A"};
+constexpr std::array<const char*, 3> kRgb = {"R", "G", "B"};
+
+// Largest finite half; anything bigger would become infinity when converted.
+constexpr float kHalfMax = 65504.0f;
+
+// OpenEXR messages can span lines; our errors are one line each.
+std::string one_line(std::string text) {
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    return text;
+}
+
+std::size_t bytes_per_value(Imf::PixelType type) {
+    return type == Imf::HALF ? sizeof(half) : sizeof(float);
+}
+
+// Points one slice per channel at an interleaved buffer (channels.size() values per pixel,
+// pixel (0, 0) at `base` corresponding to the window's top-left corner). Used by both the
+// writer and the reader so the layout is defined in one place.
+void add_interleaved_slices(Imf::FrameBuffer& frame_buffer, const std::string& prefix,
+                            ChannelNames channels, Imf::PixelType type, const void* base,
+                            const Imath::Box2i& window, double fill_value) {
+    const std::size_t value_bytes = bytes_per_value(type);
+    const std::size_t pixel_bytes = value_bytes * channels.size();
+    for (std::size_t c = 0; c < channels.size(); ++c) {
+        const void* first = static_cast<const char*>(base) + c * value_bytes;
+        frame_buffer.insert(prefix + channels[c],
+                            Imf::Slice::Make(type, first, window, pixel_bytes, 0, 1, 1, fill_value));
+    }
+}
+
+// --- writing ---------------------------------------------------------------------------
+
+// One interleaved buffer of the image together with its EXR channel names.
+struct Plane {
+    std::string prefix;  // "" for the main image, "<layer>." for an extra layer
+    ChannelNames channels;
+    std::span<const float> values;
+};
+
+std::vector<Plane> planes_of(const ImageRGBA32F& image) {
+    std::vector<Plane> planes{{"", kRgba, image.rgba}};
+    for (const ExtraLayer& layer : image.layers) planes.push_back({layer.name + ".", kRgb, layer.rgb});
+    return planes;
+}
+
+std::size_t count_nonfinite(std::span<const float> values) {
+    return static_cast<std::size_t>(
+        std::count_if(values.begin(), values.end(), [](float v) { return !std::isfinite(v); }));
+}
+
+// Non-finite values pass through unchanged (NaN stays NaN, inf stays inf) so a broken pixel
+// stays recognisable in the file instead of turning into a plausible number.
+std::vector<half> to_half_clamped(std::span<const float> values, std::size_t& clamped) {
+    std::vector<half> out(values.size());
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        float v = values[i];
+        if (std::isfinite(v) && std::fabs(v) > kHalfMax) {
+            v = std::copysign(kHalfMax, v);
+            ++clamped;
+        }
+        out[i] = half(v);
+    }
+    return out;
+}
+
+}  // namespace
+
+ExrWriteReport write_exr(const std::filesystem::path& path, const ImageRGBA32F& image,
+                         ExrPixelType pixel_type) {
+    require_consistent_image(image);
+    require_writable_file_path(path);
+
+    const Imf::PixelType type = pixel_type == ExrPixelType::Half ? Imf::HALF : Imf::FLOAT;
+    // The default header carries no timestamp or other varying attribute, so with a fixed
+    // compression the bytes depend on the pixels alone.
+    Imf::Header header(image.width, image.height);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    const Imath::Box2i window = header.dataWindow();
+
+    ExrWriteReport report;
+    Imf::FrameBuffer frame_buffer;
+    // Converted copies for Half; each inner vector's storage stays put while the outer grows.
+    std::vector<std::vector<half>> half_planes;
+    for (const Plane& plane : planes_of(image)) {
+        report.nonfinite_values += count_nonfinite(plane.values);
+        const void* base = plane.values.data();
+        if (type == Imf::HALF) {
+            half_planes.push_back(to_half_clamped(plane.values, report.clamped_values));
+            base = half_planes.back().data();
+        }
+        for (const char* channel : plane.channels) {
+            header.channels().insert(plane.prefix + channel, Imf::Channel(type));
+        }
+        add_interleaved_slices(frame_buffer, plane.prefix, plane.channels, type, base, window, 0.0);
+    }
+
+    try {
+        Imf::OutputFile file(path.c_str(), header);
+        file.setFrameBuffer(frame_buffer);
+        file.writePixels(image.height);
+    } catch (const std::exception& e) {  // Iex::BaseExc derives from std::exception
+        throw UserError("cannot write " + quoted_path(path) + ": " + one_line(e.what()));
+    }
+    return report;
+}
+
+// --- reading ---------------------------------------------------------------------------
+
+namespace {
+
+void require_full_resolution(const std::filesystem::path& path, const Imf::ChannelList& channels,
+                             const std::string& name) {
+    const Imf::Channel* channel = channels.findChannel(name);
+    if (channel != nullptr && (channel->xSampling != 1 || channel->ySampling != 1)) {
+        throw UserError("cannot read " + quoted_path(path) + ": channel '" + name +
+                        "' is subsampled, which is not supported");
+    }
+}
+
+bool has_any_channel(const Imf::ChannelList& channels, const std::string& prefix, ChannelNames names) {
+    return std::any_of(names.begin(), names.end(), [&](const char* n) {
+        return channels.findChannel(prefix + n) != nullptr;
+    });
+}
+
+ImageRGBA32F read_pixels(const std::filesystem::path& path, Imf::InputFile& file) {
+    auto fail = [&](const std::string& why) {
+        throw UserError("cannot read " + quoted_path(path) + ": " + why);
+    };
+
+    const Imath::Box2i window = file.header().dataWindow();
+    const std::int64_t width = std::int64_t{window.max.x} - window.min.x + 1;
+    const std::int64_t height = std::int64_t{window.max.y} - window.min.y + 1;
+    if (width <= 0 || height <= 0 || width > INT_MAX || height > INT_MAX) {
+        fail("invalid data window " + std::to_string(width) + "x" + std::to_string(height));
+    }
+
+    const Imf::ChannelList& channels = file.header().channels();
+    for (const char* name : kRgb) {
+        if (channels.findChannel(name) == nullptr) fail(std::string("missing channel '") + name + "'");
+    }
+
+    ImageRGBA32F image;
+    image.width = static_cast<int>(width);
+    image.height = static_cast<int>(height);
+    image.rgba.resize(image.pixel_count() * 4);
+
+    std::set<std::string> layer_names;
+    channels.layers(layer_names);
+    for (const std::string& name : layer_names) {
+        // Layers without colour channels (e.g. "depth.Z") are not ours to interpret.
+        if (has_any_channel(channels, name + ".", kRgb)) {
+            image.layers.push_back({name, std::vector<float>(image.pixel_count() * 3)});
+        }
+    }
+
+    // Every slice is FLOAT: OpenEXR converts half and uint on the way in.
+    Imf::FrameBuffer frame_buffer;
+    for (const char* name : kRgba) require_full_resolution(path, channels, name);
+    // Fill value 1 makes a missing A read as opaque.
+    add_interleaved_slices(frame_buffer, "", kRgba, Imf::FLOAT, image.rgba.data(), window, 1.0);
+    for (ExtraLayer& layer : image.layers) {
+        for (const char* name : kRgb) require_full_resolution(path, channels, layer.name + "." + name);
+        add_interleaved_slices(frame_buffer, layer.name + ".", kRgb, Imf::FLOAT, layer.rgb.data(),
+                               window, 0.0);
+    }
+    file.setFrameBuffer(frame_buffer);
+    file.readPixels(window.min.y, window.max.y);
+    return image;
+}
+
+}  // namespace
+
+ImageRGBA32F read_exr(const std::filesystem::path& path) {
+    require_readable_file_path(path);
+    // Checking the magic number first gives "not an OpenEXR file" instead of a library message.
+    if (!Imf::isOpenExrFile(path.c_str())) {
+        throw UserError("cannot read " + quoted_path(path) + ": not an OpenEXR file");
+    }
+    try {
+        Imf::InputFile file(path.c_str());
+        return read_pixels(path, file);
+    } catch (const UserError&) {
+        throw;
+    } catch (const std::exception& e) {  // Iex::BaseExc (truncated/corrupt data), std::bad_alloc
+        throw UserError("cannot read " + quoted_path(path) + ": " + one_line(e.what()));
+    }
+}
+
+}  // namespace vkw

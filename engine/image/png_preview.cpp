@@ -1,0 +1,60 @@
+// PNG preview writer: tone maps with tone_curve.hpp and encodes with stb_image_write.
+#include "engine/image/png_preview.hpp"
+
+// Debian's libstb is a compiled library: include the declarations only, no *_IMPLEMENTATION.
+#include <stb_image_write.h>
+
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/core/errors.hpp"
+#include "engine/image/file_paths.hpp"
+#include "engine/image/tone_curve.hpp"
+
+namespace vkw {
+namespace {
+
+// Magenta never comes out of the tone curve for a grey-ish water scene, so it stands out.
+constexpr std::array<std::uint8_t, 3> kNonFiniteColor = {255, 0, 255};
+
+}  // namespace
+
+std::size_t write_png_preview(const std::filesystem::path& path, const ImageRGBA32F& image,
+                              float exposure) {
+    if (!std::isfinite(exposure) || exposure <= 0.0f) {
+        throw UserError("PNG preview exposure must be a finite number > 0, got " +
+                        std::to_string(exposure));
+    }
+    require_consistent_image(image);
+    require_writable_file_path(path);
+
+    const std::size_t pixels = image.pixel_count();
+    std::vector<std::uint8_t> rgb8(pixels * 3);
+    std::size_t nonfinite_pixels = 0;
+    for (std::size_t i = 0; i < pixels; ++i) {
+        const float* in = &image.rgba[i * 4];
+        std::uint8_t* out = &rgb8[i * 3];
+        if (!std::isfinite(in[0]) || !std::isfinite(in[1]) || !std::isfinite(in[2])) {
+            std::copy(kNonFiniteColor.begin(), kNonFiniteColor.end(), out);
+            ++nonfinite_pixels;
+            continue;
+        }
+        for (int c = 0; c < 3; ++c) out[c] = tonemap_to_srgb8(in[c] * exposure);
+    }
+
+    // Row 0 is the top row in both ImageRGBA32F and PNG, so no flip.
+    const int row_bytes = image.width * 3;
+    errno = 0;  // stb reports only success/failure; errno from its fopen/fwrite says why
+    if (stbi_write_png(path.c_str(), image.width, image.height, 3, rgb8.data(), row_bytes) == 0) {
+        const std::string why = errno != 0 ? std::strerror(errno) : "stbi_write_png failed";
+        throw UserError("cannot write " + quoted_path(path) + ": " + why);
+    }
+    return nonfinite_pixels;
+}
+
+}  // namespace vkw

@@ -1,0 +1,13 @@
+// The typed blackboard keys through which passes find each other's outputs.
+#pragma once
+
+#include "engine/framegraph/blackboard.hpp"
+#include "engine/framegraph/handles.hpp"
+
+namespace vkw::keys {
+
+inline constexpr fg::BlackboardKey<fg::BufferHandle> kFrameConstants{"frame constants"};
+inline constexpr fg::BlackboardKey<fg::ImageHandle> kHdrColor{"HDR colour"};
+inline constexpr fg::BlackboardKey<fg::ImageHandle> kSceneDepth{"scene depth"};
+
+}  // namespace vkw::keys

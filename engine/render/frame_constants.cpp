@@ -1,0 +1,35 @@
+#include "engine/render/frame_constants.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+namespace vkw {
+
+glm::dmat4 projection_matrix(const Camera& camera, double aspect) {
+    // Swapping near and far in a [0, 1]-depth projection gives reversed-Z, which
+    // spends float precision where perspective depth needs it.
+    return glm::perspectiveRH_ZO(glm::radians(camera.fov_y_deg), aspect, camera.far_plane, camera.near_plane);
+}
+
+FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t height) {
+    const double aspect = static_cast<double>(width) / static_cast<double>(height);
+    const glm::dmat4 view_proj = projection_matrix(scene.camera, aspect) * view_matrix(scene.camera);
+    FrameConstants constants{};
+    constants.view_proj = glm::mat4(view_proj);
+    constants.inv_view_proj = glm::mat4(glm::inverse(view_proj));
+    constants.camera_position = glm::vec4(glm::vec3(scene.camera.position), 1.0f);
+    const bool sun_up = scene.sun.direction.y < 0.0;
+    constants.sun_direction = glm::vec4(glm::vec3(scene.sun.direction), sun_up ? 1.0f : 0.0f);
+    constants.sun_irradiance = glm::vec4(glm::vec3(scene.sun.irradiance), 0.0f);
+    constants.sky_radiance = glm::vec4(glm::vec3(scene.sky.radiance), 0.0f);
+    constants.sun_disk = glm::vec4(static_cast<float>(std::cos(glm::radians(kSunDiskAngularRadiusDeg))),
+                                   static_cast<float>(kSunDiskSolidAngle), 0.0f, 0.0f);
+    constants.floor_plane = glm::vec4(static_cast<float>(scene.floor.height),
+                                      static_cast<float>(scene.floor.half_extent), 0.0f, 0.0f);
+    constants.floor_albedo = glm::vec4(glm::vec3(scene.floor.albedo), 0.0f);
+    constants.viewport = glm::vec4(static_cast<float>(width), static_cast<float>(height), 0.0f, 0.0f);
+    return constants;
+}
+
+}  // namespace vkw

@@ -1,0 +1,38 @@
+// The per-frame constants block, std140, mirroring shaders/common/frame_constants.glsl
+// field by field; and the function that fills it from a scene.
+#pragma once
+
+#include "engine/scene/scene.hpp"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+
+namespace vkw {
+
+// Solid angle of the sun's disk as the model fixes it (PHYSICS.md section 1), and the
+// angular radius it corresponds to: 2 pi (1 - cos r) = 6.80e-5 sr for r = 0.2666 deg.
+inline constexpr double kSunDiskSolidAngle = 6.80e-5;
+inline constexpr double kSunDiskAngularRadiusDeg = 0.2666;
+
+struct alignas(16) FrameConstants {
+    glm::mat4 view_proj;
+    glm::mat4 inv_view_proj;
+    glm::vec4 camera_position;
+    glm::vec4 sun_direction;   // w: 1 if above the horizon
+    glm::vec4 sun_irradiance;
+    glm::vec4 sky_radiance;
+    glm::vec4 sun_disk;        // x: cos(angular radius), y: solid angle
+    glm::vec4 floor_plane;     // x: height, y: half extent
+    glm::vec4 floor_albedo;
+    glm::vec4 viewport;        // xy: width, height in pixels
+};
+static_assert(sizeof(FrameConstants) % 16 == 0, "std140 blocks are a multiple of 16 bytes");
+
+// Reversed-Z perspective projection (depth 1 at the near plane, 0 at the far plane),
+// OpenGL-style y-up clip space: the frame graph flips the viewport.
+glm::dmat4 projection_matrix(const Camera& camera, double aspect);
+
+FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t height);
+
+}  // namespace vkw

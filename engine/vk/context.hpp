@@ -1,0 +1,103 @@
+// The Vulkan instance, the chosen physical device, the logical device and its one
+// queue. Picks a discrete, then integrated GPU, then a CPU device (lavapipe) unless
+// the caller names one. Requires Vulkan 1.3 with dynamic rendering and
+// synchronization2. With validation on, the Khronos layer runs with synchronization
+// validation and every error or warning lands in validation_log() as a failure.
+#pragma once
+
+#include "engine/vk/validation_log.hpp"
+
+#include <vulkan/vulkan.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace vkw {
+
+struct ContextOptions {
+    bool validation = false;
+    std::string device_name;                        // substring of the device name; empty: best available
+    std::vector<std::string> instance_extensions;   // e.g. what GLFW needs for a surface
+    bool swapchain = false;                         // enable VK_KHR_swapchain on the device
+    bool print_validation_messages = true;          // echo failures to stderr as they happen
+};
+
+// Optional device features vkwater uses when present; each pass checks what it needs.
+struct DeviceFeatures {
+    bool depth_clamp = false;
+    bool shader_float64 = false;
+    bool shader_int64 = false;
+    bool buffer_int64_atomics = false;
+    bool wide_lines = false;
+    bool fill_mode_non_solid = false;
+};
+
+class Context {
+public:
+    explicit Context(const ContextOptions& options);
+    ~Context();
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    VkInstance instance() const { return instance_; }
+    VkPhysicalDevice physical_device() const { return physical_device_; }
+    VkDevice device() const { return device_; }
+    VkQueue queue() const { return queue_; }
+    uint32_t queue_family() const { return queue_family_; }
+    const VkPhysicalDeviceProperties& properties() const { return properties_; }
+    const DeviceFeatures& features() const { return features_; }
+    std::string device_name() const { return properties_.deviceName; }
+    // CPU devices (lavapipe) leave raster and fragment work out of timestamps.
+    bool is_cpu_device() const { return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
+    bool validation_enabled() const { return validation_; }
+    ValidationLog& validation_log() { return *validation_log_; }
+    // Outlives the context, to read what its teardown reported.
+    std::shared_ptr<ValidationLog> shared_validation_log() const { return validation_log_; }
+
+    // vkCmdPushDescriptorSetKHR (VK_KHR_push_descriptor), loaded once.
+    PFN_vkCmdPushDescriptorSetKHR push_descriptor_set() const { return push_descriptor_set_; }
+
+    uint32_t find_memory_type(uint32_t type_bits, VkMemoryPropertyFlags required) const;
+
+    // Debug-utils names and labels; no-ops when the extension is absent.
+    void set_name(VkObjectType type, uint64_t handle, const std::string& name) const;
+    template <class Handle>
+    void set_name(Handle handle, VkObjectType type, const std::string& name) const {
+        set_name(type, reinterpret_cast<uint64_t>(handle), name);
+    }
+    void begin_label(VkCommandBuffer cmd, const std::string& label) const;
+    void end_label(VkCommandBuffer cmd) const;
+
+    // Records with `record` into a fresh primary command buffer, submits, and waits.
+    void submit_and_wait(const std::function<void(VkCommandBuffer)>& record, const std::string& name);
+
+private:
+    void create_instance(const ContextOptions& options);
+    void pick_physical_device(const std::string& wanted_name);
+    void create_device(bool swapchain);
+    void release();
+
+    bool validation_ = false;
+    std::shared_ptr<ValidationLog> validation_log_;
+    VkInstance instance_ = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    VkPhysicalDevice physical_device_ = VK_NULL_HANDLE;
+    VkPhysicalDeviceProperties properties_{};
+    VkPhysicalDeviceMemoryProperties memory_properties_{};
+    DeviceFeatures features_;
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkQueue queue_ = VK_NULL_HANDLE;
+    uint32_t queue_family_ = 0;
+    VkCommandPool command_pool_ = VK_NULL_HANDLE;
+    PFN_vkCmdPushDescriptorSetKHR push_descriptor_set_ = nullptr;
+    PFN_vkSetDebugUtilsObjectNameEXT set_object_name_ = nullptr;
+    PFN_vkCmdBeginDebugUtilsLabelEXT begin_label_ = nullptr;
+    PFN_vkCmdEndDebugUtilsLabelEXT end_label_ = nullptr;
+};
+
+// The names of the physical devices Vulkan reports (for `--device` help and errors).
+std::vector<std::string> list_device_names();
+
+}  // namespace vkw

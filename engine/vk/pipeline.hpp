@@ -1,0 +1,68 @@
+// Pipelines with one push-descriptor set and a push-constant block: passes describe
+// their bindings and fixed-function state, this file turns that into Vulkan objects.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <string>
+#include <vector>
+
+namespace vkw {
+
+class Context;
+
+struct PipelineLayoutDesc {
+    std::vector<VkDescriptorSetLayoutBinding> bindings;  // set 0, pushed at record time
+    uint32_t push_constant_bytes = 0;                    // visible to every stage
+};
+
+struct GraphicsPipelineDesc {
+    std::string vertex_shader;    // name under shaders/ without .spv
+    std::string fragment_shader;  // empty: no fragment stage (depth/stencil-only passes)
+    PipelineLayoutDesc layout;
+    std::vector<VkVertexInputBindingDescription> vertex_bindings;
+    std::vector<VkVertexInputAttributeDescription> vertex_attributes;
+    VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkCullModeFlags cull_mode = VK_CULL_MODE_NONE;
+    bool depth_test = false;
+    bool depth_write = false;
+    VkCompareOp depth_compare = VK_COMPARE_OP_GREATER_OR_EQUAL;  // vkwater uses reversed-Z
+    bool depth_clamp = false;
+    VkStencilOpState stencil_front{};
+    VkStencilOpState stencil_back{};
+    bool stencil_test = false;
+    bool additive_blend = false;
+    std::vector<VkFormat> color_formats;
+    VkFormat depth_format = VK_FORMAT_UNDEFINED;
+    // Classic render-pass recording: the pipeline is made for this render pass
+    // (subpass 0) instead of dynamic rendering.
+    VkRenderPass render_pass = VK_NULL_HANDLE;
+};
+
+struct ComputePipelineDesc {
+    std::string shader;
+    PipelineLayoutDesc layout;
+};
+
+class Pipeline {
+public:
+    Pipeline(const Context& context, const GraphicsPipelineDesc& desc, const std::string& name);
+    Pipeline(const Context& context, const ComputePipelineDesc& desc, const std::string& name);
+    ~Pipeline();
+    Pipeline(const Pipeline&) = delete;
+    Pipeline& operator=(const Pipeline&) = delete;
+
+    VkPipeline handle() const { return pipeline_; }
+    VkPipelineLayout layout() const { return layout_; }
+    VkPipelineBindPoint bind_point() const { return bind_point_; }
+
+private:
+    void create_layout(const Context& context, const PipelineLayoutDesc& desc, const std::string& name);
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
+    VkPipelineBindPoint bind_point_ = VK_PIPELINE_BIND_POINT_GRAPHICS;
+};
+
+}  // namespace vkw

@@ -1,0 +1,110 @@
+// Move-only owners of Vulkan buffers, images and device memory. The frame graph
+// creates most of them; tests and the CLI use them for uploads and readbacks.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <string>
+
+namespace vkw {
+
+class Context;
+
+class DeviceMemory {
+public:
+    DeviceMemory() = default;
+    DeviceMemory(const Context& context, VkDeviceSize size, uint32_t type_bits, VkMemoryPropertyFlags properties,
+                 const std::string& name);
+    ~DeviceMemory();
+    DeviceMemory(DeviceMemory&& other) noexcept;
+    DeviceMemory& operator=(DeviceMemory&& other) noexcept;
+
+    VkDeviceMemory handle() const { return memory_; }
+    VkDeviceSize size() const { return size_; }
+    void* mapped() const { return mapped_; }  // non-null when host-visible
+
+private:
+    void reset();
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkDeviceSize size_ = 0;
+    void* mapped_ = nullptr;
+};
+
+struct BufferDesc {
+    VkDeviceSize size = 0;
+    VkBufferUsageFlags usage = 0;
+    bool host_visible = false;  // mapped persistently; for uploads and readbacks
+};
+
+class Buffer {
+public:
+    Buffer() = default;
+    // Creates the buffer with its own memory.
+    Buffer(const Context& context, const BufferDesc& desc, const std::string& name);
+    // Two-step creation for aliasing (device-local only): create, query, bind.
+    static Buffer create_unbound(const Context& context, const BufferDesc& desc, const std::string& name);
+    VkMemoryRequirements memory_requirements() const;
+    void bind(VkDeviceMemory memory, VkDeviceSize offset, const std::string& name);
+    ~Buffer();
+    Buffer(Buffer&& other) noexcept;
+    Buffer& operator=(Buffer&& other) noexcept;
+
+    VkBuffer handle() const { return buffer_; }
+    VkDeviceSize size() const { return size_; }
+    void* mapped() const { return memory_.mapped(); }
+
+private:
+    void reset();
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkBuffer buffer_ = VK_NULL_HANDLE;
+    VkDeviceSize size_ = 0;
+    DeviceMemory memory_;
+};
+
+struct ImageDesc {
+    uint32_t width = 0;
+    uint32_t height = 0;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    VkImageUsageFlags usage = 0;
+};
+
+// An image and its one view. Either owns its memory or is bound into memory owned
+// by someone else (the frame graph's transient heap, where lifetimes alias).
+class Image {
+public:
+    Image() = default;
+    Image(const Context& context, const ImageDesc& desc, const std::string& name);  // own memory
+    ~Image();
+    Image(Image&& other) noexcept;
+    Image& operator=(Image&& other) noexcept;
+
+    // Two-step creation for aliasing: create unbound, query requirements, bind, then make the view.
+    static Image create_unbound(const Context& context, const ImageDesc& desc, const std::string& name);
+    VkMemoryRequirements memory_requirements() const;
+    void bind(const Context& context, VkDeviceMemory memory, VkDeviceSize offset, const std::string& name);
+
+    VkImage handle() const { return image_; }
+    VkImageView view() const { return view_; }
+    const ImageDesc& desc() const { return desc_; }
+    VkImageAspectFlags aspect() const;
+
+private:
+    void reset();
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkImage image_ = VK_NULL_HANDLE;
+    VkImageView view_ = VK_NULL_HANDLE;
+    ImageDesc desc_;
+    DeviceMemory own_memory_;
+};
+
+// Aspect bits of a format: depth and/or stencil for depth formats, colour otherwise.
+VkImageAspectFlags format_aspect(VkFormat format);
+bool format_has_stencil(VkFormat format);
+bool format_is_depth(VkFormat format);
+// 32-bit or 16-bit float colour formats, which the finite-check mode scans.
+bool format_is_float_color(VkFormat format);
+uint32_t format_texel_bytes(VkFormat format);
+const char* format_name(VkFormat format);
+
+}  // namespace vkw

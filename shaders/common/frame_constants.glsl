@@ -1,0 +1,19 @@
+// Per-frame constants, std140. Mirrored field by field by
+// engine/render/frame_constants.hpp; change both together.
+#ifndef VKWATER_FRAME_CONSTANTS_GLSL
+#define VKWATER_FRAME_CONSTANTS_GLSL
+
+layout(set = 0, binding = 0, std140) uniform FrameConstants {
+    mat4 view_proj;           // world -> clip, reversed-Z (near plane at depth 1)
+    mat4 inv_view_proj;       // clip -> world
+    vec4 camera_position;     // xyz, metres
+    vec4 sun_direction;       // xyz: unit direction the sunlight travels (downward); w: 1 if above the horizon
+    vec4 sun_irradiance;      // rgb: W m^-2 on a plane normal to the beam
+    vec4 sky_radiance;        // rgb: constant sky radiance, W m^-2 sr^-1
+    vec4 sun_disk;            // x: cos of the disk's angular radius, y: its solid angle (sr)
+    vec4 floor_plane;         // x: height y of the floor, y: half extent
+    vec4 floor_albedo;        // rgb
+    vec4 viewport;            // xy: output size in pixels
+} frame;
+
+#endif

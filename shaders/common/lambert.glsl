@@ -1,0 +1,20 @@
+// Lambertian receivers above the water (PHYSICS.md section 1): L = rho E / pi with
+// E = E_s max(0, -s.N) (direct sun) + pi L_sky_avg (skylight, no occlusion).
+#ifndef VKWATER_LAMBERT_GLSL
+#define VKWATER_LAMBERT_GLSL
+
+#include "common/frame_constants.glsl"
+
+const float PI = 3.14159265358979323846;
+
+vec3 receiver_irradiance_above_water(vec3 normal) {
+    bool sun_up = frame.sun_direction.w > 0.5;
+    float cos_sun = sun_up ? max(0.0, dot(normal, -frame.sun_direction.xyz)) : 0.0;
+    return frame.sun_irradiance.rgb * cos_sun + PI * frame.sky_radiance.rgb;
+}
+
+vec3 lambert_radiance(vec3 albedo, vec3 irradiance) {
+    return albedo * irradiance / PI;
+}
+
+#endif

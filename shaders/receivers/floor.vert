@@ -1,0 +1,15 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// The floor plane y = floor_plane.x, a square of half extent floor_plane.y, as two
+// triangles generated from the vertex index.
+#include "common/frame_constants.glsl"
+
+layout(location = 0) out vec3 out_world_position;
+
+void main() {
+    const vec2 corners[6] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, -1), vec2(1, 1), vec2(-1, 1));
+    vec2 xz = corners[gl_VertexIndex] * frame.floor_plane.y;
+    vec3 world = vec3(xz.x, frame.floor_plane.x, xz.y);
+    out_world_position = world;
+    gl_Position = frame.view_proj * vec4(world, 1.0);
+}

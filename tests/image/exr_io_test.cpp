@@ -1,0 +1,213 @@
+// Tests of write_exr / read_exr: round trips, half clamping, NaN handling, extra layers,
+// deterministic bytes and error reporting on bad input files.
+#include <gtest/gtest.h>
+
+#include <Imath/half.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfOutputFile.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "engine/image/exr_io.hpp"
+#include "image_test_support.hpp"
+
+namespace vkw {
+namespace {
+
+using test::expect_user_error;
+using test::make_test_image;
+using test::ScratchDir;
+
+void expect_bit_identical(const std::vector<float>& expected, const std::vector<float>& actual) {
+    ASSERT_EQ(expected.size(), actual.size());
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(expected[i]), std::bit_cast<std::uint32_t>(actual[i]))
+            << "value " << i << ": " << expected[i] << " vs " << actual[i];
+    }
+}
+
+// Writes a half EXR the way another program might: only the given channels (no alpha
+// unless listed), data window starting at (x0, y0). Channel k of pixel i holds 10*i + k.
+void write_foreign_exr(const std::filesystem::path& path, int x0, int y0, int width, int height,
+                       const std::vector<std::string>& channels) {
+    const Imath::Box2i window({x0, y0}, {x0 + width - 1, y0 + height - 1});
+    Imf::Header header(window, window);
+    std::vector<std::vector<half>> planes;
+    Imf::FrameBuffer frame_buffer;
+    for (std::size_t k = 0; k < channels.size(); ++k) {
+        std::vector<half> plane(static_cast<std::size_t>(width * height));
+        for (std::size_t i = 0; i < plane.size(); ++i) plane[i] = half(10.0f * i + k);
+        planes.push_back(std::move(plane));
+        header.channels().insert(channels[k], Imf::Channel(Imf::HALF));
+        frame_buffer.insert(channels[k], Imf::Slice::Make(Imf::HALF, planes.back().data(), window));
+    }
+    Imf::OutputFile file(path.c_str(), header);
+    file.setFrameBuffer(frame_buffer);
+    file.writePixels(height);
+}
+
+TEST(image_exr_io, FloatRoundTripIsBitExact) {
+    ScratchDir dir;
+    ImageRGBA32F image = make_test_image(7, 5);
+    image.pixel(0, 0)[0] = -0.0f;
+    image.pixel(1, 0)[1] = std::numeric_limits<float>::denorm_min();
+    image.pixel(6, 4)[2] = 1.0e30f;
+
+    const ExrWriteReport report = write_exr(dir / "float.exr", image);
+    EXPECT_EQ(report.clamped_values, 0u);
+    EXPECT_EQ(report.nonfinite_values, 0u);
+
+    const ImageRGBA32F back = read_exr(dir / "float.exr");
+    EXPECT_EQ(back.width, 7);
+    EXPECT_EQ(back.height, 5);
+    expect_bit_identical(image.rgba, back.rgba);
+    EXPECT_TRUE(back.layers.empty());
+}
+
+TEST(image_exr_io, HalfRoundTripIsWithinHalfRounding) {
+    ScratchDir dir;
+    const ImageRGBA32F image = make_test_image(7, 5);  // all values normal halfs (0.1 .. 52)
+    write_exr(dir / "half.exr", image, ExrPixelType::Half);
+    const ImageRGBA32F back = read_exr(dir / "half.exr");
+    ASSERT_EQ(back.rgba.size(), image.rgba.size());
+    for (std::size_t i = 0; i < image.rgba.size(); ++i) {
+        // Half keeps 10 explicit mantissa bits; round-to-nearest of a normal value is off by
+        // at most half a unit in the last place, i.e. relative 2^-11.
+        const float tolerance = std::fabs(image.rgba[i]) * std::ldexp(1.0f, -11);
+        EXPECT_NEAR(back.rgba[i], image.rgba[i], tolerance) << "value " << i;
+    }
+}
+
+TEST(image_exr_io, HalfClampsAndCountsValuesBeyondHalfMax) {
+    ScratchDir dir;
+    ImageRGBA32F image = make_test_image(2, 1);
+    float* p = image.pixel(0, 0);
+    p[0] = 1.0e6f;
+    p[1] = -1.0e6f;
+    p[2] = 65504.0f;  // exactly the largest half: kept, not counted
+    image.pixel(1, 0)[3] = 70000.0f;
+
+    const ExrWriteReport report = write_exr(dir / "clamp.exr", image, ExrPixelType::Half);
+    EXPECT_EQ(report.clamped_values, 3u);
+    EXPECT_EQ(report.nonfinite_values, 0u);
+
+    const ImageRGBA32F back = read_exr(dir / "clamp.exr");
+    EXPECT_EQ(back.pixel(0, 0)[0], 65504.0f);
+    EXPECT_EQ(back.pixel(0, 0)[1], -65504.0f);
+    EXPECT_EQ(back.pixel(0, 0)[2], 65504.0f);
+    EXPECT_EQ(back.pixel(1, 0)[3], 65504.0f);
+}
+
+TEST(image_exr_io, FloatDoesNotClamp) {
+    ScratchDir dir;
+    ImageRGBA32F image = make_test_image(1, 1);
+    image.pixel(0, 0)[0] = 1.0e6f;
+    EXPECT_EQ(write_exr(dir / "big.exr", image).clamped_values, 0u);
+    EXPECT_EQ(read_exr(dir / "big.exr").pixel(0, 0)[0], 1.0e6f);
+}
+
+TEST(image_exr_io, NonFiniteValuesAreCountedAndKept) {
+    ScratchDir dir;
+    for (const ExrPixelType type : {ExrPixelType::Float, ExrPixelType::Half}) {
+        ImageRGBA32F image = make_test_image(2, 2, {"caustic"});
+        image.pixel(0, 0)[0] = std::numeric_limits<float>::quiet_NaN();
+        image.pixel(1, 1)[1] = std::numeric_limits<float>::infinity();
+        image.layers[0].rgb[5] = -std::numeric_limits<float>::infinity();
+
+        const ExrWriteReport report = write_exr(dir / "nan.exr", image, type);
+        EXPECT_EQ(report.nonfinite_values, 3u);
+        EXPECT_EQ(report.clamped_values, 0u);  // infinities are non-finite, not clamped
+
+        const ImageRGBA32F back = read_exr(dir / "nan.exr");
+        EXPECT_TRUE(std::isnan(back.pixel(0, 0)[0]));
+        EXPECT_EQ(back.pixel(1, 1)[1], std::numeric_limits<float>::infinity());
+        EXPECT_EQ(back.layers.at(0).rgb[5], -std::numeric_limits<float>::infinity());
+    }
+}
+
+TEST(image_exr_io, ExtraLayersRoundTripSortedByName) {
+    ScratchDir dir;
+    const ImageRGBA32F image = make_test_image(4, 3, {"foam", "caustic"});
+    write_exr(dir / "layers.exr", image);
+    const ImageRGBA32F back = read_exr(dir / "layers.exr");
+
+    ASSERT_EQ(back.layers.size(), 2u);
+    EXPECT_EQ(back.layers[0].name, "caustic");
+    EXPECT_EQ(back.layers[1].name, "foam");
+    expect_bit_identical(image.layers[1].rgb, back.layers[0].rgb);
+    expect_bit_identical(image.layers[0].rgb, back.layers[1].rgb);
+    expect_bit_identical(image.rgba, back.rgba);
+}
+
+TEST(image_exr_io, RepeatedWritesAreByteIdentical) {
+    ScratchDir dir;
+    const ImageRGBA32F image = make_test_image(33, 17, {"caustic"});
+    for (const ExrPixelType type : {ExrPixelType::Float, ExrPixelType::Half}) {
+        write_exr(dir / "a.exr", image, type);
+        write_exr(dir / "b.exr", image, type);
+        const auto a = test::read_bytes(dir / "a.exr");
+        EXPECT_FALSE(a.empty());
+        EXPECT_EQ(a, test::read_bytes(dir / "b.exr"));
+    }
+}
+
+TEST(image_exr_io, ForeignFileWithoutAlphaReadsOpaqueFromOffsetWindow) {
+    ScratchDir dir;
+    write_foreign_exr(dir / "rgb.exr", 10, 20, 3, 2, {"R", "G", "B", "depth.Z"});
+    const ImageRGBA32F image = read_exr(dir / "rgb.exr");
+
+    EXPECT_EQ(image.width, 3);
+    EXPECT_EQ(image.height, 2);
+    EXPECT_TRUE(image.layers.empty());  // "depth" has no colour channels
+    // Pixel (2, 1) is the 6th pixel: R = 50, G = 51, B = 52 (exact in half), A filled with 1.
+    EXPECT_EQ(image.pixel(2, 1)[0], 50.0f);
+    EXPECT_EQ(image.pixel(2, 1)[1], 51.0f);
+    EXPECT_EQ(image.pixel(2, 1)[2], 52.0f);
+    EXPECT_EQ(image.pixel(2, 1)[3], 1.0f);
+    EXPECT_EQ(image.pixel(0, 0)[3], 1.0f);
+}
+
+TEST(image_exr_io, FileWithoutColourChannelsIsUserError) {
+    ScratchDir dir;
+    write_foreign_exr(dir / "y.exr", 0, 0, 2, 2, {"Y"});
+    expect_user_error([&] { read_exr(dir / "y.exr"); }, dir / "y.exr", "missing channel 'R'");
+}
+
+TEST(image_exr_io, NonExrFileIsUserError) {
+    ScratchDir dir;
+    test::write_text(dir / "notes.exr", "this is not an image\n");
+    expect_user_error([&] { read_exr(dir / "notes.exr"); }, dir / "notes.exr",
+                      "not an OpenEXR file");
+}
+
+TEST(image_exr_io, TruncatedExrIsUserError) {
+    ScratchDir dir;
+    write_exr(dir / "full.exr", make_test_image(64, 64));
+    const auto bytes = test::read_bytes(dir / "full.exr");
+    test::write_text(dir / "cut.exr", std::string(bytes.begin(), bytes.begin() + bytes.size() / 2));
+    expect_user_error([&] { read_exr(dir / "cut.exr"); }, dir / "cut.exr", "");
+}
+
+TEST(image_exr_io, MissingInputIsUserError) {
+    ScratchDir dir;
+    expect_user_error([&] { read_exr(dir / "absent.exr"); }, dir / "absent.exr", "does not exist");
+    expect_user_error([&] { read_exr(dir.path()); }, dir.path(), "is a directory");
+}
+
+TEST(image_exr_io, InconsistentImageIsInternalError) {
+    ScratchDir dir;
+    ImageRGBA32F image = make_test_image(2, 2, {"caustic"});
+    image.layers[0].rgb.pop_back();
+    EXPECT_THROW(write_exr(dir / "bad.exr", image), InternalError);
+    EXPECT_FALSE(std::filesystem::exists(dir / "bad.exr"));
+}
+
+}  // namespace
+}  // namespace vkw

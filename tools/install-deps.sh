@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs every Debian package that vkwater's build, tests and tools use.
+# Idempotent: re-running it only re-checks the packages. Nothing is downloaded
+# outside Debian's archive, and nothing is vendored into the source tree.
+set -euo pipefail
+
+packages=(
+  # build
+  build-essential cmake pkg-config ninja-build
+  # Vulkan: loader + headers, the software driver (lavapipe), tools, validation layers
+  libvulkan-dev mesa-vulkan-drivers vulkan-tools vulkan-validationlayers
+  # shader compilers and SPIR-V tools
+  glslang-tools glslc spirv-tools
+  # libraries
+  libglm-dev libglfw3-dev libtinygltf-dev libopenexr-dev nlohmann-json3-dev libcli11-dev
+  libimgui-dev libstb-dev libgtest-dev
+  # EXR inspection and conversion (exrheader, oiiotool)
+  openexr openimageio-tools
+  # window tests and screenshots
+  xvfb xauth x11-apps imagemagick
+)
+
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${packages[@]}" >/dev/null
+echo "install-deps: ${#packages[@]} packages present"

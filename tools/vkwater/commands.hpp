@@ -1,0 +1,26 @@
+// The vkwater subcommands. Each registers its options on the CLI11 app and returns
+// the function that runs it; main() maps exceptions to exit codes
+// (0 ok, 1 user error, 2 internal or Vulkan failure).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace vkw::cli {
+
+using Run = std::function<int()>;
+
+// Options every GPU subcommand shares.
+struct DeviceOptions {
+    std::string device;
+    bool validation = false;
+};
+void add_device_options(CLI::App& command, DeviceOptions& options);
+
+Run add_render_command(CLI::App& app);
+Run add_passes_command(CLI::App& app);
+
+}  // namespace vkw::cli

@@ -1,0 +1,42 @@
+// vkwater: the command-line entry point. Subcommands live in one file each.
+#include "engine/core/errors.hpp"
+#include "tools/vkwater/commands.hpp"
+
+#include <cstdio>
+#include <map>
+
+int main(int argc, char** argv) {
+    CLI::App app{"vkwater: a Vulkan renderer for water with compute-shader caustics"};
+    app.require_subcommand(1);
+    std::map<CLI::App*, vkw::cli::Run> commands;
+    auto add = [&](vkw::cli::Run (*register_command)(CLI::App&)) {
+        const size_t before = app.get_subcommands({}).size();
+        vkw::cli::Run run = register_command(app);
+        commands[app.get_subcommands({})[before]] = std::move(run);
+    };
+    add(vkw::cli::add_render_command);
+    add(vkw::cli::add_passes_command);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        // --help exits 0; every other parse error is the user's (exit 1).
+        const int code = app.exit(error);
+        return code == 0 ? vkw::kExitOk : vkw::kExitUserError;
+    }
+    try {
+        for (auto& [command, run] : commands) {
+            if (command->parsed()) return run();
+        }
+        return vkw::kExitUserError;
+    } catch (const vkw::UserError& error) {
+        std::fprintf(stderr, "vkwater: %s\n", error.what());
+        return vkw::kExitUserError;
+    } catch (const vkw::InternalError& error) {
+        std::fprintf(stderr, "vkwater: %s\n", error.what());
+        return vkw::kExitInternalError;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "vkwater: internal error: %s\n", error.what());
+        return vkw::kExitInternalError;
+    }
+}

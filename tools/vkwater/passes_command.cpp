@@ -1,0 +1,57 @@
+// vkwater passes SCENE: prints the compiled frame graph without rendering: the needs
+// decisions and their reasons, the living passes in order with their reads and
+// writes, the culled passes and why, and transient memory before/after aliasing.
+#include "engine/core/errors.hpp"
+#include "engine/framegraph/frame_graph.hpp"
+#include "engine/image/file_paths.hpp"
+#include "engine/render/frame_needs.hpp"
+#include "engine/render/renderer.hpp"
+#include "engine/scene/scene_loader.hpp"
+#include "tools/vkwater/commands.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <memory>
+
+namespace vkw::cli {
+namespace {
+
+struct PassesArgs {
+    std::string scene;
+    uint32_t width = 800;
+    uint32_t height = 600;
+    std::string dot;
+    bool barriers = false;
+    std::vector<std::string> overrides;
+};
+
+int run_passes(const PassesArgs& args) {
+    const Scene scene = load_scene(args.scene, args.overrides);
+    fg::FrameGraph graph(decide_frame_needs(scene));
+    build_frame_graph(graph, scene, args.width, args.height, VK_NULL_HANDLE);
+    graph.compile(args.width, args.height);
+    std::printf("%s", graph.describe().c_str());
+    if (args.barriers) std::printf("barriers:\n%s", graph.dump_barriers().c_str());
+    if (!args.dot.empty()) {
+        require_writable_file_path(args.dot);
+        std::ofstream(args.dot) << graph.to_dot();
+        std::printf("wrote %s\n", args.dot.c_str());
+    }
+    return kExitOk;
+}
+
+}  // namespace
+
+Run add_passes_command(CLI::App& app) {
+    auto args = std::make_shared<PassesArgs>();
+    CLI::App* command = app.add_subcommand("passes", "Print the frame graph a scene compiles to, and why");
+    command->add_option("scene", args->scene, "Scene file (JSON)")->required();
+    command->add_option("--width", args->width, "Output width in pixels")->capture_default_str();
+    command->add_option("--height", args->height, "Output height in pixels")->capture_default_str();
+    command->add_option("--dot", args->dot, "Also write the graph as Graphviz to this file");
+    command->add_flag("--barriers", args->barriers, "Also print every derived barrier");
+    command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
+    return [args] { return run_passes(*args); };
+}
+
+}  // namespace vkw::cli

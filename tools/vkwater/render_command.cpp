@@ -1,0 +1,107 @@
+// vkwater render SCENE --out FILE.exr: renders offscreen, writes linear HDR OpenEXR,
+// prints the device, the output path and the time of each pass.
+#include "engine/core/errors.hpp"
+#include "engine/image/exr_io.hpp"
+#include "engine/image/file_paths.hpp"
+#include "engine/image/png_preview.hpp"
+#include "engine/render/renderer.hpp"
+#include "engine/scene/scene_loader.hpp"
+#include "engine/vk/context.hpp"
+#include "tools/vkwater/commands.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+namespace vkw::cli {
+namespace {
+
+struct RenderArgs {
+    std::string scene;
+    std::string out;
+    uint32_t width = 800;
+    uint32_t height = 600;
+    bool half = false;
+    bool png = false;
+    bool check_finite = false;
+    std::string recording = "dynamic";
+    std::vector<std::string> overrides;
+    DeviceOptions device;
+};
+
+int run_render(const RenderArgs& args) {
+    const auto start = std::chrono::steady_clock::now();
+    const Scene scene = load_scene(args.scene, args.overrides);
+    // Fail on an unwritable output before spending time on the render.
+    const std::filesystem::path out = args.out;
+    require_writable_file_path(out);
+    const std::filesystem::path png_path = std::filesystem::path(out).replace_extension(".png");
+    if (args.png) require_writable_file_path(png_path);
+
+    ContextOptions context_options;
+    context_options.validation = args.device.validation;
+    context_options.device_name = args.device.device;
+    auto context = std::make_unique<Context>(context_options);
+    const std::shared_ptr<ValidationLog> validation_log = context->shared_validation_log();
+    std::printf("device: %s\n", context->device_name().c_str());
+
+    RenderOptions options;
+    options.width = args.width;
+    options.height = args.height;
+    options.check_finite = args.check_finite;
+    options.recording =
+        args.recording == "renderpass" ? fg::RecordingKind::RenderPassObject : fg::RecordingKind::DynamicRendering;
+    RenderResult result;
+    {
+        Renderer renderer(*context);  // its pipelines must go before the device
+        result = renderer.render(scene, options);
+    }
+
+    std::printf("pass times (%s):\n", result.timing.method_name().c_str());
+    for (const fg::PassTime& pass : result.timing.passes) std::printf("  %-24s %8.2f ms\n", pass.pass.c_str(), pass.ms);
+    std::printf("  %-24s %8.2f ms\n", "frame", result.timing.total_ms);
+
+    context.reset();  // tear the device down now: teardown can report validation messages too
+    const ExrWriteReport report = write_exr(out, result.image, args.half ? ExrPixelType::Half : ExrPixelType::Float);
+    std::printf("wrote %s (%dx%d, %s)\n", out.c_str(), result.image.width, result.image.height,
+                args.half ? "half float" : "32-bit float");
+    if (args.half && report.clamped_values > 0) {
+        std::printf("clamped %zu values to the half-float maximum 65504\n", report.clamped_values);
+    }
+    if (args.png) {
+        write_png_preview(png_path, result.image, static_cast<float>(scene.camera.exposure));
+        std::printf("wrote %s (preview: ACES filmic, sRGB)\n", png_path.c_str());
+    }
+    const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::printf("total %.1f ms (whole command)\n", total);
+    const size_t validation_failures = validation_log->failure_count();
+    if (validation_failures > 0) {
+        throw InternalError(std::to_string(validation_failures) +
+                            " validation message(s); see above. Every error or warning fails a --validation run");
+    }
+    return kExitOk;
+}
+
+}  // namespace
+
+Run add_render_command(CLI::App& app) {
+    auto args = std::make_shared<RenderArgs>();
+    CLI::App* command = app.add_subcommand("render", "Render a scene offscreen to a linear HDR OpenEXR file");
+    command->add_option("scene", args->scene, "Scene file (JSON, see scenes/README.md)")->required();
+    command->add_option("--out,-o", args->out, "Output OpenEXR file")->required();
+    command->add_option("--width", args->width, "Image width in pixels")->capture_default_str();
+    command->add_option("--height", args->height, "Image height in pixels")->capture_default_str();
+    command->add_flag("--half", args->half, "Write half floats (values beyond 65504 are clamped and counted)");
+    command->add_flag("--png", args->png, "Also write a tone-mapped PNG preview next to the EXR");
+    command->add_flag("--check-finite", args->check_finite,
+                      "After each pass, scan every float target it wrote for NaN/Inf and name the first");
+    command->add_option("--recording", args->recording, "Graphics pass recording: dynamic or renderpass")
+        ->check(CLI::IsMember({"dynamic", "renderpass"}))
+        ->capture_default_str();
+    command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
+    add_device_options(*command, args->device);
+    return [args] { return run_render(*args); };
+}
+
+}  // namespace vkw::cli
