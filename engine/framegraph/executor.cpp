@@ -26,8 +26,10 @@ FrameExecutor::FrameExecutor(Context& context, FrameGraph& graph, PipelineStore&
     if (options_.timing == TimingMode::Auto) {
         options_.timing = context_.is_cpu_device() ? TimingMode::Fences : TimingMode::Timestamps;
     }
-    // Finite checks read back after each pass, which needs one submission per pass.
-    if (options_.check_finite && options_.timing != TimingMode::None) options_.timing = TimingMode::Fences;
+    // Finite checks copy each written float image right after its pass, inside the
+    // same command buffer, and are scanned in pass order once the frame is done, so
+    // the first offender is still named and a single-submission frame stays one
+    // submission (synchronization validation sees hazards only within one).
     VkDevice device = context_.device();
 
     VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};

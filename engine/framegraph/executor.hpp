@@ -19,6 +19,8 @@ enum class TimingMode : uint8_t {
     None,        // one submission, whole-frame time only
     Timestamps,  // GPU timestamp queries around each pass
     Fences,      // each pass submitted alone and timed on the CPU clock
+    // Note: Debian 12's synchronization validation checks hazards only within one
+    // submission, so tests record with None (one command buffer for the frame).
 };
 
 struct ExecutorOptions {

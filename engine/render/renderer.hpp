@@ -17,6 +17,7 @@ struct RenderOptions {
     uint32_t width = 800;
     uint32_t height = 600;
     bool check_finite = false;
+    // Tests use None: one submission, which synchronization validation can check whole.
     fg::TimingMode timing = fg::TimingMode::Auto;
     fg::RecordingKind recording = fg::RecordingKind::DynamicRendering;
 };

@@ -245,6 +245,9 @@ void Context::create_device(bool swapchain) {
     VkPhysicalDeviceVulkan13Features enable13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     enable13.dynamicRendering = VK_TRUE;
     enable13.synchronization2 = VK_TRUE;
+    // glslang's vulkan1.3 target declares compute local sizes with LocalSizeId, which
+    // needs maintenance4 (a feature every Vulkan 1.3 device has).
+    enable13.maintenance4 = supported13.maintenance4;
     VkPhysicalDeviceVulkan12Features enable12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
     enable12.pNext = &enable13;
     enable12.shaderBufferInt64Atomics = supported12.shaderBufferInt64Atomics;

@@ -1,0 +1,61 @@
+// The "sun" and "sky" sections of the scene schema. The sun's direction has two exclusive
+// forms: elevation_deg/azimuth_deg (toward the sun, see direction_toward_sun) or direction
+// (the travelling direction of the light, normalised here).
+#include <algorithm>
+#include <cmath>
+
+#include "engine/scene/scene_json.hpp"
+
+namespace vkw {
+namespace {
+
+constexpr std::string_view kSunForms = "either direction, or elevation_deg with optional azimuth_deg";
+
+// Normalises a finite vector of any magnitude: dividing by the largest component first keeps
+// the length computation from overflowing (1e200 components) or underflowing (1e-200).
+glm::dvec3 normalised_direction(FieldReader& fields, const glm::dvec3& given) {
+    const double largest = std::max({std::abs(given.x), std::abs(given.y), std::abs(given.z)});
+    if (largest == 0.0) fields.fail("direction", "[0, 0, 0] has no direction", "a non-zero vector with y < 0");
+    const glm::dvec3 direction = glm::normalize(given / largest);
+    if (!(direction.y < 0.0)) {
+        fields.fail("direction",
+                    format_vec3(given) + " does not point downward; it is the direction the light travels, not the "
+                                         "direction toward the sun",
+                    "a non-zero vector with y < 0, e.g. [0, -1, 0] for an overhead sun");
+    }
+    return direction;
+}
+
+}  // namespace
+
+Sun read_sun(FieldReader& fields) {
+    const Sun defaults;
+    const auto direction = fields.optional_vec3("direction", Range::any());
+    const Range elevation_range = Range::closed(-90.0, 90.0, "degrees");  // below the horizon lights nothing
+    const auto elevation = fields.optional_number("elevation_deg", elevation_range);
+    const auto azimuth = fields.optional_number("azimuth_deg", Range::closed(-360.0, 360.0, "degrees"));
+    Sun sun;
+    sun.irradiance = fields.vec3("irradiance", Range::at_least(0.0, "W m^-2"), defaults.irradiance);
+    // A misspelt "elevaton_deg" is the real reason when no form is found below.
+    fields.finish();
+
+    const bool angles = elevation.has_value() || azimuth.has_value();
+    if (direction && angles) fields.fail("", "both direction and elevation_deg/azimuth_deg are given", kSunForms);
+    if (!direction && !angles) fields.fail("", "no direction given", kSunForms);
+    if (direction) {
+        sun.direction = normalised_direction(fields, *direction);
+    } else {
+        // azimuth_deg alone does not place the sun; elevation is what matters most for lighting.
+        if (!elevation) fields.fail("elevation_deg", "missing (azimuth_deg is given)", elevation_range.describe());
+        sun.direction = -direction_toward_sun(*elevation, azimuth.value_or(0.0));
+    }
+    return sun;
+}
+
+Sky read_sky(FieldReader& fields) {
+    Sky sky;
+    sky.radiance = fields.vec3("radiance", Range::at_least(0.0, "W m^-2 sr^-1"));
+    return sky;
+}
+
+}  // namespace vkw
