@@ -99,8 +99,8 @@ TEST_P(FrameGraphChain, ComputeSampleCopyGivesExactPixelsAndNoValidationMessages
 
 INSTANTIATE_TEST_SUITE_P(BothRecordingKinds, FrameGraphChain,
                          ::testing::Values(fg::RecordingKind::DynamicRendering, fg::RecordingKind::RenderPassObject),
-                         [](const auto& info) {
-                             return info.param == fg::RecordingKind::DynamicRendering ? "DynamicRendering"
+                         [](const auto& param_info) {
+                             return param_info.param == fg::RecordingKind::DynamicRendering ? "DynamicRendering"
                                                                                       : "RenderPassObject";
                          });
 

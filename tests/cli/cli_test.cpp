@@ -1,0 +1,130 @@
+// The vkwater command line, run as a user runs it: exit codes (0 ok, 1 user error,
+// 2 internal or Vulkan failure) and one clear line naming what was wrong. Each bad
+// input must fail cleanly: no crash, no validation message.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandRun {
+    int exit_code;
+    std::string output;  // stdout and stderr together
+};
+
+CommandRun run_vkwater(const std::string& arguments, const std::string& environment = "") {
+    const std::string command = environment + " '" VKWATER_CLI "' " + arguments + " 2>&1";
+    FILE* pipe = ::popen(command.c_str(), "r");
+    CommandRun run{-1, ""};
+    if (!pipe) return run;
+    std::array<char, 4096> buffer;
+    while (size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) run.output.append(buffer.data(), n);
+    const int status = ::pclose(pipe);
+    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    return run;
+}
+
+fs::path scratch(const std::string& name) {
+    const fs::path dir = fs::path(::testing::TempDir()) / "vkwater_cli_test";
+    fs::create_directories(dir);
+    return dir / name;
+}
+
+const std::string kPool = std::string(VKWATER_SOURCE_DIR) + "/scenes/pool.json";
+
+void expect_clean_failure(const CommandRun& run, int exit_code, const std::string& needle) {
+    EXPECT_EQ(run.exit_code, exit_code) << run.output;
+    EXPECT_NE(run.output.find(needle), std::string::npos) << "expected '" << needle << "' in:\n" << run.output;
+    EXPECT_EQ(run.output.find("validation error"), std::string::npos) << run.output;
+    EXPECT_EQ(run.output.find("validation warning"), std::string::npos) << run.output;
+}
+
+TEST(cli, RenderDefaultSceneWithValidationSucceeds) {
+    const fs::path out = scratch("pool.exr");
+    fs::remove(out);
+    const CommandRun run = run_vkwater("render " + kPool + " --out " + out.string() +
+                                " --width 64 --height 48 --validation --check-finite --png");
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    EXPECT_TRUE(fs::exists(out));
+    EXPECT_TRUE(fs::exists(fs::path(out).replace_extension(".png")));
+    EXPECT_NE(run.output.find("pass times"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("wrote " + out.string()), std::string::npos) << run.output;
+}
+
+TEST(cli, RenderPassRecordingWithValidationSucceeds) {
+    const CommandRun run = run_vkwater("render " + kPool + " --out " + scratch("rp.exr").string() +
+                                " --width 64 --height 48 --validation --recording renderpass");
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+}
+
+TEST(cli, HelpExitsZero) {
+    EXPECT_EQ(run_vkwater("--help").exit_code, 0);
+    EXPECT_EQ(run_vkwater("render --help").exit_code, 0);
+}
+
+TEST(cli, MissingSceneFile) {
+    expect_clean_failure(run_vkwater("render /nonexistent/scene.json --out " + scratch("x.exr").string()), 1,
+                         "/nonexistent/scene.json");
+}
+
+TEST(cli, MalformedJsonNamesLineAndColumn) {
+    const fs::path scene = scratch("malformed.json");
+    std::ofstream(scene) << "{\n  \"camera\": {\n    \"position\": [0, 1, 2,\n  }\n}\n";
+    const CommandRun run = run_vkwater("render " + scene.string() + " --out " + scratch("x.exr").string());
+    expect_clean_failure(run, 1, scene.string());
+    EXPECT_NE(run.output.find("line 4"), std::string::npos) << run.output;
+}
+
+TEST(cli, UnwritableOutputPath) {
+    expect_clean_failure(run_vkwater("render " + kPool + " --out /nonexistent-dir/out.exr"), 1,
+                         "/nonexistent-dir/out.exr");
+}
+
+TEST(cli, UnknownFlag) {
+    const CommandRun run = run_vkwater("render " + kPool + " --out x.exr --no-such-flag");
+    EXPECT_EQ(run.exit_code, 1) << run.output;
+    EXPECT_NE(run.output.find("--no-such-flag"), std::string::npos) << run.output;
+}
+
+TEST(cli, UnknownSceneFieldOverride) {
+    expect_clean_failure(run_vkwater("render " + kPool + " --out " + scratch("x.exr").string() +
+                                     " --set camera.fovy=40"),
+                         1, "did you mean");
+}
+
+TEST(cli, ImageSizeOutOfRange) {
+    expect_clean_failure(run_vkwater("render " + kPool + " --out " + scratch("x.exr").string() + " --width 0"), 1,
+                         "accepted: 1 to");
+}
+
+TEST(cli, NoVulkanDeviceIsExitTwo) {
+    // Point the loader at a driver manifest that does not exist: no device at all.
+    expect_clean_failure(run_vkwater("render " + kPool + " --out " + scratch("x.exr").string(),
+                                     "VK_DRIVER_FILES=/nonexistent/icd.json VK_ICD_FILENAMES=/nonexistent/icd.json"),
+                         2, "Vulkan");
+}
+
+TEST(cli, UnknownDeviceNameListsTheAvailableOnes) {
+    expect_clean_failure(run_vkwater("render " + kPool + " --out " + scratch("x.exr").string() +
+                                     " --device no-such-gpu"),
+                         1, "available:");
+}
+
+TEST(cli, PassesPrintsDecisionsOrderAndMemory) {
+    const CommandRun run = run_vkwater("passes " + kPool + " --barriers --dot " + scratch("graph.dot").string());
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    for (const char* needle : {"needs:", "passes, in execution order:", "culled passes:", "transient memory:",
+                               "barriers:", "wrote "}) {
+        EXPECT_NE(run.output.find(needle), std::string::npos) << needle << " missing in:\n" << run.output;
+    }
+}
+
+}  // namespace
