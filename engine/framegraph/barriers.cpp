@@ -31,8 +31,11 @@ std::optional<Barrier> step(Tracker& tracker, const AccessState& next, bool writ
         // A layout transition is a write too: later readers wait for it through its dst stages.
         tracker.last_write = {next.stages, writes ? (next.access & kWriteAccess) : VK_ACCESS_2_NONE, next.layout};
         tracker.read_stages = writes ? 0 : next.stages;
-        tracker.visible_stages = next.stages;
-        tracker.visible_access = next.access;
+        // After a write nothing has seen it yet, not even its own stage: a later read
+        // in the same stage (another dispatch) still needs a barrier. After a
+        // transition-only step the new layout's readers have been served.
+        tracker.visible_stages = writes ? 0 : next.stages;
+        tracker.visible_access = writes ? 0 : next.access;
         tracker.layout = next.layout;
         if (!layout_change && barrier.src.stages == VK_PIPELINE_STAGE_2_NONE) return std::nullopt;  // first use
         return barrier;

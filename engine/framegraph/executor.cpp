@@ -411,6 +411,18 @@ double FrameExecutor::submit_and_wait(VkCommandBuffer cmd) {
     return std::chrono::duration<double, std::milli>(end - start).count();
 }
 
+void FrameExecutor::record(VkCommandBuffer cmd) {
+    pending_checks_.clear();
+    for (uint32_t position = 0; position < graph_.compiled().order.size(); ++position) {
+        record_pass(cmd, position, pending_checks_);
+    }
+}
+
+void FrameExecutor::scan_finite_checks() {
+    scan_finite_checks(pending_checks_);
+    pending_checks_.clear();
+}
+
 FrameReport FrameExecutor::execute() {
     const CompiledGraph& compiled = graph_.compiled();
     FrameReport report;
@@ -435,13 +447,16 @@ FrameReport FrameExecutor::execute() {
 
     VkCommandBuffer cmd = begin_command_buffer("frame");
     const bool timestamps = options_.timing == TimingMode::Timestamps;
-    if (timestamps) vkCmdResetQueryPool(cmd, query_pool_, 0, static_cast<uint32_t>(2 * count));
-    for (uint32_t position = 0; position < count; ++position) {
-        if (timestamps) vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, query_pool_, 2 * position);
-        record_pass(cmd, position, checks);
-        if (timestamps) {
+    if (timestamps) {
+        vkCmdResetQueryPool(cmd, query_pool_, 0, static_cast<uint32_t>(2 * count));
+        for (uint32_t position = 0; position < count; ++position) {
+            vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, query_pool_, 2 * position);
+            record_pass(cmd, position, checks);
             vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, query_pool_, 2 * position + 1);
         }
+    } else {
+        record(cmd);
+        checks = std::move(pending_checks_);
     }
     report.total_ms = submit_and_wait(cmd);
     scan_finite_checks(checks);

@@ -52,6 +52,12 @@ public:
     // texel of the first non-finite value when check_finite is on.
     FrameReport execute();
 
+    // Records the whole frame into `cmd` (begun by the caller, who submits it: the
+    // window loop, with its swapchain semaphores). Finite checks are recorded too;
+    // call scan_finite_checks() once the submission has completed.
+    void record(VkCommandBuffer cmd);
+    void scan_finite_checks();
+
     // Test hook: forget one derived barrier, to prove that validation sees the hazard.
     void drop_barrier_for_test(const std::string& pass, const std::string& resource);
 
@@ -87,6 +93,7 @@ private:
     void end_rendering(VkCommandBuffer cmd, uint32_t pass) const;
     void record_finite_checks(VkCommandBuffer cmd, uint32_t position, std::vector<FiniteCheck>& checks);
     void scan_finite_checks(const std::vector<FiniteCheck>& checks) const;
+    std::vector<FiniteCheck> pending_checks_;  // recorded by record(), scanned by scan_finite_checks()
     VkCommandBuffer begin_command_buffer(const std::string& name);
     double submit_and_wait(VkCommandBuffer cmd);
 

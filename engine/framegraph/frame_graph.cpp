@@ -62,15 +62,25 @@ void FrameGraph::check_current(uint32_t pass, uint32_t resource, uint32_t versio
 }
 
 void FrameGraph::request_output(ImageHandle image) {
-    check_current(static_cast<uint32_t>(passes_.size() - 1), image.index, image.version, "requests");
+    check_requestable(image.index, image.version);
     requested_.emplace_back(image.index, image.version);
     compiled_.reset();
 }
 
 void FrameGraph::request_output(BufferHandle buffer) {
-    check_current(static_cast<uint32_t>(passes_.size() - 1), buffer.index, buffer.version, "requests");
+    check_requestable(buffer.index, buffer.version);
     requested_.emplace_back(buffer.index, buffer.version);
     compiled_.reset();
+}
+
+void FrameGraph::check_requestable(uint32_t resource, uint32_t version) const {
+    if (resource >= resources_.size()) throw InternalError("request_output: invalid handle");
+    const ResourceDecl& decl = resources_[resource];
+    if (version != decl.version) {
+        throw InternalError("request_output: stale handle of '" + decl.name + "' (version " + std::to_string(version) +
+                            "; the current version " + std::to_string(decl.version) + " was written by pass '" +
+                            passes_[decl.writer_of_version[decl.version]].name + "')");
+    }
 }
 
 RecordingKind FrameGraph::recording_of(uint32_t pass) const {
@@ -267,8 +277,15 @@ const CompiledGraph& FrameGraph::compile(uint32_t output_width, uint32_t output_
         result.culled.push_back({pass.name, reason});
     }
 
-    for (DependencyGraph::NodeId node : dag.topological_order()) {
-        if (node < passes_.size()) result.order.push_back(node);
+    // Execution order is the declaration order of the living passes. Versioned handles
+    // make it a valid topological order (a pass can only read versions written by
+    // earlier passes), and it is the only order that also keeps write-after-read
+    // right: a reader of version v must run before the writer of v + 1, an ordering
+    // the DAG does not state (it would keep readers alive). The DAG's own topological
+    // sort still runs, as a check that it has no cycle.
+    dag.topological_order();
+    for (uint32_t p = 0; p < passes_.size(); ++p) {
+        if (!dag.is_culled(p)) result.order.push_back(p);
     }
     compiled_ = std::move(result);
     compiled_->timelines = build_timelines(compiled_->order);
@@ -340,7 +357,7 @@ void FrameGraph::apply_aliasing(const AliasPlan& plan, const std::vector<uint32_
         for (uint32_t predecessor : plan.predecessors[i]) {
             for (const TimelineAccess& access : compiled.timelines[aliased_resources[predecessor]].accesses) {
                 timeline.initial.stages |= access.state.stages;
-                if (access.writes) timeline.initial.access = access.state.access;
+                if (access.writes) timeline.initial.access |= access.state.access;
             }
         }
     }

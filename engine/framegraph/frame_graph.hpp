@@ -223,6 +223,7 @@ private:
     uint32_t add_pass_decl(std::string name, PassKind kind);
     uint32_t add_resource(ResourceDecl decl);
     void check_current(uint32_t pass, uint32_t resource, uint32_t version, const char* verb) const;
+    void check_requestable(uint32_t resource, uint32_t version) const;
     std::vector<ResourceTimeline> build_timelines(const std::vector<uint32_t>& order) const;
 
     FrameNeeds needs_;

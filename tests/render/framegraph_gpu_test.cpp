@@ -10,6 +10,7 @@
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/vk/resources.hpp"
 #include "passes/readback.hpp"
+#include "tools/benchmarks/chain_graph.hpp"
 #include "tests/support/gpu_test.hpp"
 
 #include <algorithm>
@@ -21,48 +22,6 @@ namespace {
 constexpr uint32_t kWidth = 16;
 constexpr uint32_t kHeight = 8;
 constexpr VkDeviceSize kReadbackBytes = VkDeviceSize{kWidth} * kHeight * 4 * sizeof(float);
-
-// compute -> sample into attachment -> copy to host
-fg::ImageHandle add_chain(fg::FrameGraph& graph) {
-    struct GradientData {
-        fg::ImageHandle pattern;
-    };
-    const auto& gradient = graph.add_pass<GradientData>(
-        "gradient", fg::PassKind::Compute,
-        [](fg::PassBuilder& builder, GradientData& d) {
-            d.pattern = builder.create_image("pattern", {VK_FORMAT_R32G32B32A32_SFLOAT});
-            d.pattern = builder.write_storage(d.pattern);
-        },
-        [](const GradientData& d, fg::PassContext& context) {
-            ComputePipelineDesc desc;
-            desc.shader = "tests/gradient.comp";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
-            const Pipeline& pipeline = context.pipeline("gradient", desc);
-            context.bind(pipeline, {context.storage_image(0, d.pattern)});
-            vkCmdDispatch(context.cmd(), (kWidth + 7) / 8, (kHeight + 7) / 8, 1);
-        });
-    struct CopyData {
-        fg::ImageHandle pattern;
-        fg::ImageHandle doubled;
-    };
-    const auto& copy = graph.add_pass<CopyData>(
-        "copy texels", fg::PassKind::Graphics,
-        [&](fg::PassBuilder& builder, CopyData& d) {
-            d.pattern = builder.sample(gradient.pattern);
-            d.doubled = builder.create_image("doubled", {VK_FORMAT_R32G32B32A32_SFLOAT});
-            d.doubled = builder.color_attachment(d.doubled, fg::LoadOp::DontCare);
-        },
-        [](const CopyData& d, fg::PassContext& context) {
-            GraphicsPipelineDesc desc;
-            desc.vertex_shader = "common/fullscreen.vert";
-            desc.fragment_shader = "tests/copy_texels.frag";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}};
-            const Pipeline& pipeline = context.pipeline("copy", desc);
-            context.bind(pipeline, {context.sampled(0, d.pattern)});
-            vkCmdDraw(context.cmd(), 3, 1, 0, 0);
-        });
-    return copy.doubled;
-}
 
 std::vector<float> read_floats(const Buffer& buffer) {
     std::vector<float> values(kReadbackBytes / sizeof(float));
@@ -79,7 +38,7 @@ TEST_P(FrameGraphChain, ComputeSampleCopyGivesExactPixelsAndNoValidationMessages
         fg::PipelineStore pipelines;
         fg::FrameGraph graph;
         graph.set_default_recording(GetParam());
-        passes::add_readback_pass(graph, add_chain(graph), readback.handle(), kReadbackBytes);
+        passes::add_readback_pass(graph, chain::add_chain(graph), readback.handle(), kReadbackBytes);
         graph.compile(kWidth, kHeight);
         fg::FrameExecutor executor(context(), graph, pipelines, {.check_finite = true, .timing = fg::TimingMode::None});
         executor.execute();

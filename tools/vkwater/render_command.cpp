@@ -25,6 +25,7 @@ struct RenderArgs {
     bool half = false;
     bool png = false;
     bool check_finite = false;
+    uint32_t repeat = 1;
     std::string recording = "dynamic";
     std::vector<std::string> overrides;
     DeviceOptions device;
@@ -42,9 +43,13 @@ int run_render(const RenderArgs& args) {
     ContextOptions context_options;
     context_options.validation = args.device.validation;
     context_options.device_name = args.device.device;
+    const auto context_start = std::chrono::steady_clock::now();
     auto context = std::make_unique<Context>(context_options);
+    const double context_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - context_start).count();
     const std::shared_ptr<ValidationLog> validation_log = context->shared_validation_log();
-    std::printf("device: %s\n", context->device_name().c_str());
+    std::printf("device: %s (instance + device created in %.1f ms%s)\n", context->device_name().c_str(), context_ms,
+                args.device.validation ? ", with validation" : "");
 
     RenderOptions options;
     options.width = args.width;
@@ -55,10 +60,10 @@ int run_render(const RenderArgs& args) {
     RenderResult result;
     {
         Renderer renderer(*context);  // its pipelines must go before the device
-        result = renderer.render(scene, options);
+        for (uint32_t frame = 0; frame < args.repeat; ++frame) result = renderer.render(scene, options);
     }
 
-    std::printf("pass times (%s):\n", result.timing.method_name().c_str());
+    std::printf("pass times of frame %u of %u (%s):\n", args.repeat, args.repeat, result.timing.method_name().c_str());
     for (const fg::PassTime& pass : result.timing.passes) std::printf("  %-24s %8.2f ms\n", pass.pass.c_str(), pass.ms);
     std::printf("  %-24s %8.2f ms\n", "frame", result.timing.total_ms);
 
@@ -94,6 +99,11 @@ Run add_render_command(CLI::App& app) {
     command->add_option("--height", args->height, "Image height in pixels")->capture_default_str();
     command->add_flag("--half", args->half, "Write half floats (values beyond 65504 are clamped and counted)");
     command->add_flag("--png", args->png, "Also write a tone-mapped PNG preview next to the EXR");
+    command->add_option("--repeat", args->repeat,
+                        "Render this many frames and report the last: the first frame includes llvmpipe's "
+                        "compilation of shader variants on first use")
+        ->check(CLI::Range(1u, 10000u))
+        ->capture_default_str();
     command->add_flag("--check-finite", args->check_finite,
                       "After each pass, scan every float target it wrote for NaN/Inf and name the first");
     command->add_option("--recording", args->recording, "Graphics pass recording: dynamic or renderpass")

@@ -1,0 +1,231 @@
+// framegraph_bench: what the frame graph costs on the CPU.
+//  1. compile() of a 30-pass graph (culling, ordering, barriers, aliasing estimate);
+//  2. recording the test chain (compute -> sample into attachment -> copy) through the
+//     graph against the same commands and barriers written by hand.
+// Prints a table of medians; nothing is asserted (speed is measured, not tested).
+#include "engine/framegraph/executor.hpp"
+#include "engine/framegraph/pass_context.hpp"
+#include "engine/vk/check.hpp"
+#include "engine/vk/context.hpp"
+#include "engine/vk/pipeline.hpp"
+#include "passes/readback.hpp"
+#include "tools/benchmarks/chain_graph.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+using namespace vkw;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double median_ms(int runs, const std::function<void()>& work) {
+    std::vector<double> times;
+    for (int i = 0; i < runs; ++i) {
+        const auto start = Clock::now();
+        work();
+        times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    }
+    std::sort(times.begin(), times.end());
+    return times[times.size() / 2];
+}
+
+// 30 passes: 10 rounds of (compute writes a buffer, compute writes an image from it,
+// graphics samples that image into an attachment); the last attachment is the output.
+void declare_thirty_passes(fg::FrameGraph& graph) {
+    struct Data {
+        fg::BufferHandle buffer;
+        fg::ImageHandle image;
+        fg::ImageHandle target;
+    };
+    fg::ImageHandle previous;
+    for (int round = 0; round < 10; ++round) {
+        const std::string n = std::to_string(round);
+        const auto& a = graph.add_pass<Data>(
+            "simulate " + n, fg::PassKind::Compute,
+            [&](fg::PassBuilder& b, Data& d) {
+                if (previous.valid()) b.sample(previous);
+                d.buffer = b.write_storage(b.create_buffer("particles " + n, {1 << 20}));
+            },
+            [](const Data&, fg::PassContext&) {});
+        const auto& c = graph.add_pass<Data>(
+            "splat " + n, fg::PassKind::Compute,
+            [&](fg::PassBuilder& b, Data& d) {
+                b.read_storage(a.buffer);
+                d.image = b.write_storage(b.create_image("density " + n, {VK_FORMAT_R32_SFLOAT, fg::SizeClass::OutputRelative, 0.5f}));
+            },
+            [](const Data&, fg::PassContext&) {});
+        const auto& g = graph.add_pass<Data>(
+            "shade " + n, fg::PassKind::Graphics,
+            [&](fg::PassBuilder& b, Data& d) {
+                b.sample(c.image);
+                d.target = b.color_attachment(b.create_image("shaded " + n, {VK_FORMAT_R16G16B16A16_SFLOAT}));
+            },
+            [](const Data&, fg::PassContext&) {});
+        previous = g.target;
+    }
+    graph.request_output(previous);
+}
+
+constexpr uint32_t kSize = 256;
+constexpr VkDeviceSize kBytes = VkDeviceSize{kSize} * kSize * 16;
+
+void image_barrier(VkCommandBuffer cmd, VkImage image, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                   VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access, VkImageLayout from, VkImageLayout to) {
+    VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+    b.srcStageMask = src_stage;
+    b.srcAccessMask = src_access;
+    b.dstStageMask = dst_stage;
+    b.dstAccessMask = dst_access;
+    b.oldLayout = from;
+    b.newLayout = to;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = image;
+    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dependency.imageMemoryBarrierCount = 1;
+    dependency.pImageMemoryBarriers = &b;
+    vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
+// The test chain written by hand, as a careful Vulkan programmer would without a graph.
+struct HandWrittenChain {
+    Image pattern, doubled;
+    Buffer readback;
+    VkSampler sampler = VK_NULL_HANDLE;
+    std::unique_ptr<Pipeline> compute, graphics;
+    const Context& context;
+
+    explicit HandWrittenChain(const Context& c)
+        : pattern(c, {kSize, kSize, VK_FORMAT_R32G32B32A32_SFLOAT, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT}, "pattern"),
+          doubled(c, {kSize, kSize, VK_FORMAT_R32G32B32A32_SFLOAT, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT}, "doubled"),
+          readback(c, {kBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "readback"),
+          context(c) {
+        VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+        VKW_CHECK(vkCreateSampler(c.device(), &info, nullptr, &sampler), "sampler");
+        ComputePipelineDesc cd{chain::kPatternShader, {{{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT}}}};
+        compute = std::make_unique<Pipeline>(c, cd, "hand compute");
+        GraphicsPipelineDesc gd;
+        gd.vertex_shader = "common/fullscreen.vert";
+        gd.fragment_shader = chain::kCopyShader;
+        gd.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}};
+        gd.color_formats = {VK_FORMAT_R32G32B32A32_SFLOAT};
+        graphics = std::make_unique<Pipeline>(c, gd, "hand graphics");
+    }
+    ~HandWrittenChain() { vkDestroySampler(context.device(), sampler, nullptr); }
+
+    void record(VkCommandBuffer cmd) const {
+        image_barrier(cmd, pattern.handle(), VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute->handle());
+        VkDescriptorImageInfo storage{VK_NULL_HANDLE, pattern.view(), VK_IMAGE_LAYOUT_GENERAL};
+        VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        write.descriptorCount = 1;
+        write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+        write.pImageInfo = &storage;
+        context.push_descriptor_set()(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute->layout(), 0, 1, &write);
+        vkCmdDispatch(cmd, kSize / 8, kSize / 8, 1);
+        image_barrier(cmd, pattern.handle(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+                      VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+        image_barrier(cmd, doubled.handle(), VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                      VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+        VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        color.imageView = doubled.view();
+        color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        color.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+        color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+        rendering.renderArea = {{0, 0}, {kSize, kSize}};
+        rendering.layerCount = 1;
+        rendering.colorAttachmentCount = 1;
+        rendering.pColorAttachments = &color;
+        vkCmdBeginRendering(cmd, &rendering);
+        const VkViewport viewport{0, float(kSize), float(kSize), -float(kSize), 0, 1};
+        const VkRect2D scissor{{0, 0}, {kSize, kSize}};
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        vkCmdSetScissor(cmd, 0, 1, &scissor);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, graphics->handle());
+        VkDescriptorImageInfo sampled{sampler, pattern.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+        write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+        write.pImageInfo = &sampled;
+        context.push_descriptor_set()(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, graphics->layout(), 0, 1, &write);
+        vkCmdDraw(cmd, 3, 1, 0, 0);
+        vkCmdEndRendering(cmd);
+        image_barrier(cmd, doubled.handle(), VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                      VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
+                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {kSize, kSize, 1};
+        vkCmdCopyImageToBuffer(cmd, doubled.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.handle(), 1, &region);
+    }
+};
+
+// Times only the recording (begin .. end of the command buffer), never the GPU.
+double median_record_ms(const Context& context, VkCommandPool pool, int runs,
+                        const std::function<void(VkCommandBuffer)>& record) {
+    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    alloc.commandPool = pool;
+    alloc.commandBufferCount = 1;
+    VkCommandBuffer cmd;
+    VKW_CHECK(vkAllocateCommandBuffers(context.device(), &alloc, &cmd), "bench command buffer");
+    const double ms = median_ms(runs, [&] {
+        VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        vkBeginCommandBuffer(cmd, &begin);
+        record(cmd);
+        vkEndCommandBuffer(cmd);
+        vkResetCommandBuffer(cmd, 0);
+    });
+    vkFreeCommandBuffers(context.device(), pool, 1, &cmd);
+    return ms;
+}
+
+}  // namespace
+
+int main() {
+    const int runs = 201;
+    const double declare_ms = median_ms(runs, [] {
+        fg::FrameGraph graph;
+        declare_thirty_passes(graph);
+    });
+    const double declare_compile_ms = median_ms(runs, [] {
+        fg::FrameGraph graph;
+        declare_thirty_passes(graph);
+        graph.compile(1920, 1080);
+    });
+    std::printf("| measurement | median of %d runs |\n| --- | --- |\n", runs);
+    std::printf("| declare a 30-pass graph | %.3f ms |\n", declare_ms);
+    std::printf("| compile it (culling, order, barriers, aliasing estimate) | %.3f ms |\n",
+                declare_compile_ms - declare_ms);
+
+    Context context({});
+    VkCommandPool pool;
+    VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pool_info.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    pool_info.queueFamilyIndex = context.queue_family();
+    VKW_CHECK(vkCreateCommandPool(context.device(), &pool_info, nullptr, &pool), "bench pool");
+    {
+        HandWrittenChain hand(context);
+        Buffer readback(context, {kBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "graph readback");
+        fg::PipelineStore pipelines;
+        fg::FrameGraph graph;
+        passes::add_readback_pass(graph, chain::add_chain(graph), readback.handle(), kBytes);
+        graph.compile(kSize, kSize);
+        fg::FrameExecutor executor(context, graph, pipelines, {.timing = fg::TimingMode::None});
+        const double by_hand = median_record_ms(context, pool, runs, [&](VkCommandBuffer cmd) { hand.record(cmd); });
+        const double by_graph = median_record_ms(context, pool, runs, [&](VkCommandBuffer cmd) { executor.record(cmd); });
+        const size_t passes = graph.compiled().order.size();
+        std::printf("| record the chain by hand (%zu passes) | %.4f ms |\n", passes, by_hand);
+        std::printf("| record it through the frame graph | %.4f ms |\n", by_graph);
+        std::printf("| graph overhead per pass | %.4f ms |\n", (by_graph - by_hand) / double(passes));
+        std::printf("device: %s\n", context.device_name().c_str());
+    }
+    vkDestroyCommandPool(context.device(), pool, nullptr);
+    return 0;
+}
