@@ -5,7 +5,7 @@
 
 namespace vkw::passes {
 
-void add_frame_constants_upload(fg::FrameGraph& graph, const FrameConstants& constants) {
+void add_frame_constants_upload(fg::FrameGraph& graph, const FrameConstants* constants) {
     struct Data {
         fg::BufferHandle buffer;
     };
@@ -18,7 +18,7 @@ void add_frame_constants_upload(fg::FrameGraph& graph, const FrameConstants& con
             d.buffer = builder.copy_destination(d.buffer);
         },
         [constants](const Data& d, fg::PassContext& context) {
-            vkCmdUpdateBuffer(context.cmd(), context.buffer(d.buffer), 0, sizeof(FrameConstants), &constants);
+            vkCmdUpdateBuffer(context.cmd(), context.buffer(d.buffer), 0, sizeof(FrameConstants), constants);
         });
     graph.blackboard().put(keys::kFrameConstants, data.buffer);
 }

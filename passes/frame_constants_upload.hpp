@@ -1,5 +1,7 @@
 // Uploads the frame's constants into a uniform buffer with vkCmdUpdateBuffer, as a
 // transfer pass of the graph, so every reader gets its barrier from the graph.
+// `constants` is read when the pass records, not when it is declared: a compiled graph
+// is reused frame after frame while its owner updates the values in place.
 // Publishes keys::kFrameConstants.
 #pragma once
 
@@ -8,6 +10,6 @@
 
 namespace vkw::passes {
 
-void add_frame_constants_upload(fg::FrameGraph& graph, const FrameConstants& constants);
+void add_frame_constants_upload(fg::FrameGraph& graph, const FrameConstants* constants);
 
 }  // namespace vkw::passes

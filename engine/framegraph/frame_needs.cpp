@@ -27,6 +27,14 @@ const EffectDecision* FrameNeeds::find(Effect effect) const {
     return nullptr;
 }
 
+std::string FrameNeeds::key() const {
+    std::string key;
+    for (const EffectDecision& decision : decisions) {
+        key += std::string(effect_name(decision.effect)) + (decision.needed ? "+" : "-");
+    }
+    return key;
+}
+
 void FrameNeeds::decide(Effect effect, bool needed, std::string reason, bool forced) {
     for (EffectDecision& decision : decisions) {
         if (decision.effect == effect) {

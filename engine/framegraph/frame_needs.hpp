@@ -36,6 +36,8 @@ struct FrameNeeds {
     bool needs(Effect effect) const;
     const EffectDecision* find(Effect effect) const;
     void decide(Effect effect, bool needed, std::string reason, bool forced = false);
+    // Which effects are on: two frames with the same key compile to the same graph.
+    std::string key() const;
 };
 
 }  // namespace vkw::fg

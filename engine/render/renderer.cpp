@@ -2,10 +2,8 @@
 
 #include "engine/core/errors.hpp"
 #include "engine/render/blackboard_keys.hpp"
-#include "engine/render/frame_constants.hpp"
 #include "engine/render/frame_needs.hpp"
 #include "engine/vk/context.hpp"
-#include "engine/vk/resources.hpp"
 #include "passes/floor.hpp"
 #include "passes/frame_constants_upload.hpp"
 #include "passes/readback.hpp"
@@ -19,13 +17,25 @@ namespace {
 VkDeviceSize hdr_bytes(uint32_t width, uint32_t height) { return VkDeviceSize{width} * height * 4 * sizeof(float); }
 }  // namespace
 
-void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, uint32_t width, uint32_t height,
+void build_frame_graph(fg::FrameGraph& graph, const FrameConstants* constants, uint32_t width, uint32_t height,
                        VkBuffer readback) {
-    passes::add_frame_constants_upload(graph, make_frame_constants(scene, width, height));
+    passes::add_frame_constants_upload(graph, constants);
     passes::add_sky_pass(graph);
     passes::add_floor_pass(graph);
     passes::add_readback_pass(graph, graph.blackboard().get(keys::kHdrColor), readback, hdr_bytes(width, height));
 }
+
+// Everything that depends on the configuration; destroyed in reverse order.
+struct Renderer::CompiledFrame {
+    std::string configuration;
+    Buffer readback;
+    std::unique_ptr<fg::FrameGraph> graph;
+    std::unique_ptr<fg::FrameExecutor> executor;
+};
+
+Renderer::Renderer(Context& context) : context_(context), constants_(std::make_unique<FrameConstants>()) {}
+
+Renderer::~Renderer() = default;
 
 RenderResult Renderer::render(const Scene& scene, const RenderOptions& options) {
     const uint32_t max_size = context_.properties().limits.maxImageDimension2D;
@@ -34,22 +44,35 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options) 
                         " is out of range (accepted: 1 to " + std::to_string(max_size) + " on '" +
                         context_.device_name() + "')");
     }
-    Buffer readback(context_,
-                    {hdr_bytes(options.width, options.height), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
-                    "HDR readback");
-    fg::FrameGraph graph(decide_frame_needs(scene));
-    graph.set_default_recording(options.recording);
-    build_frame_graph(graph, scene, options.width, options.height, readback.handle());
-    graph.compile(options.width, options.height);
+    fg::FrameNeeds needs = decide_frame_needs(scene);
+    const std::string configuration = std::to_string(options.width) + "x" + std::to_string(options.height) + " " +
+                                      needs.key() + " " + std::to_string(int(options.recording)) + " " +
+                                      std::to_string(int(options.check_finite)) + " " +
+                                      std::to_string(int(options.timing));
+    *constants_ = make_frame_constants(scene, options.width, options.height);
 
-    fg::FrameExecutor executor(context_, graph, pipelines_, {options.check_finite, options.timing});
+    if (!frame_ || frame_->configuration != configuration) {
+        frame_.reset();  // release the old graph's resources before making new ones
+        auto frame = std::make_unique<CompiledFrame>();
+        frame->configuration = configuration;
+        frame->readback = Buffer(context_, {hdr_bytes(options.width, options.height), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
+                                 "HDR readback");
+        frame->graph = std::make_unique<fg::FrameGraph>(std::move(needs));
+        frame->graph->set_default_recording(options.recording);
+        build_frame_graph(*frame->graph, constants_.get(), options.width, options.height, frame->readback.handle());
+        frame->graph->compile(options.width, options.height);
+        ++compile_count_;
+        frame->executor = std::make_unique<fg::FrameExecutor>(context_, *frame->graph, pipelines_,
+                                                              fg::ExecutorOptions{options.check_finite, options.timing});
+        frame_ = std::move(frame);
+    }
+
     RenderResult result;
-    result.timing = executor.execute();
-
+    result.timing = frame_->executor->execute();
     result.image.width = static_cast<int>(options.width);
     result.image.height = static_cast<int>(options.height);
     result.image.rgba.resize(size_t{options.width} * options.height * 4);
-    std::memcpy(result.image.rgba.data(), readback.mapped(), result.image.rgba.size() * sizeof(float));
+    std::memcpy(result.image.rgba.data(), frame_->readback.mapped(), result.image.rgba.size() * sizeof(float));
     return result;
 }
 

@@ -1,13 +1,20 @@
-// Renders a scene offscreen: builds the frame graph from the scene's needs, compiles
-// it, runs it on the device and reads the HDR image back.
+// Renders a scene offscreen: decides the frame's needs, builds and compiles the frame
+// graph, runs it on the device and reads the HDR image back. The compiled graph and
+// its resources are kept and reused while the configuration (output size, needs,
+// recording kind, check and timing modes) stays the same; only the frame constants
+// change between such frames.
 #pragma once
 
 #include "engine/framegraph/executor.hpp"
 #include "engine/framegraph/frame_graph.hpp"
 #include "engine/image/image.hpp"
+#include "engine/render/frame_constants.hpp"
 #include "engine/scene/scene.hpp"
+#include "engine/vk/resources.hpp"
 
 #include <cstdint>
+#include <memory>
+#include <string>
 
 namespace vkw {
 
@@ -27,21 +34,29 @@ struct RenderResult {
     fg::FrameReport timing;
 };
 
-// Declares every pass of a frame into `graph`; the readback target is `readback`
-// (VK_NULL_HANDLE is fine when the graph is only compiled and printed).
-void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, uint32_t width, uint32_t height,
+// Declares every pass of a frame into `graph`. `constants` is read at record time.
+// The readback target is `readback` (VK_NULL_HANDLE when the graph is only printed).
+void build_frame_graph(fg::FrameGraph& graph, const FrameConstants* constants, uint32_t width, uint32_t height,
                        VkBuffer readback);
 
 class Renderer {
 public:
-    explicit Renderer(Context& context) : context_(context) {}
+    explicit Renderer(Context& context);
+    ~Renderer();
     RenderResult render(const Scene& scene, const RenderOptions& options);
+
     // Pipelines created so far; culled passes never add one.
     const fg::PipelineStore& pipelines() const { return pipelines_; }
+    // How many times a frame graph was compiled (once per configuration).
+    size_t compile_count() const { return compile_count_; }
 
 private:
+    struct CompiledFrame;
     Context& context_;
     fg::PipelineStore pipelines_;
+    std::unique_ptr<FrameConstants> constants_;  // stable address, read when the frame records
+    std::unique_ptr<CompiledFrame> frame_;
+    size_t compile_count_ = 0;
 };
 
 }  // namespace vkw

@@ -28,7 +28,8 @@ struct PassesArgs {
 int run_passes(const PassesArgs& args) {
     const Scene scene = load_scene(args.scene, args.overrides);
     fg::FrameGraph graph(decide_frame_needs(scene));
-    build_frame_graph(graph, scene, args.width, args.height, VK_NULL_HANDLE);
+    const FrameConstants constants = make_frame_constants(scene, args.width, args.height);
+    build_frame_graph(graph, &constants, args.width, args.height, VK_NULL_HANDLE);
     graph.compile(args.width, args.height);
     std::printf("%s", graph.describe().c_str());
     if (args.barriers) std::printf("barriers:\n%s", graph.dump_barriers().c_str());
