@@ -1,0 +1,56 @@
+// Sum of sine and Gerstner waves: positions and analytic tangents (wave_sum_surface.hpp).
+#include "engine/water/wave_sum_surface.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "engine/water/validate_waves.hpp"
+
+namespace vkw {
+
+namespace {
+
+double radians(double degrees) { return degrees * (std::numbers::pi / 180.0); }
+
+}  // namespace
+
+WaveSumSurface::WaveSumSurface(const WaveSettings& settings, double level, double time)
+    : level_(level) {
+    WaveSettings as_sum = settings;
+    as_sum.model = WaveModel::Sum;
+    validate_waves(as_sum);
+    waves_.reserve(settings.components.size());
+    for (const WaveComponent& c : settings.components) {
+        const double k = 2.0 * std::numbers::pi / c.wavelength;
+        const double omega = c.speed < 0.0 ? std::sqrt(kGravity * k) : c.speed * k;
+        const double a = radians(c.direction_deg);
+        Wave w;
+        w.k_vector = k * glm::dvec2(std::cos(a), std::sin(a));
+        w.phase_at_origin = radians(c.phase_deg) - omega * time;
+        w.amplitude = c.amplitude;
+        w.displacement_scale = c.steepness / (k * k);
+        waves_.push_back(w);
+        amplitude_sum_ += c.amplitude;
+        heightfield_ = heightfield_ && c.steepness == 0.0;
+    }
+}
+
+SurfacePoint WaveSumSurface::at_parameter(double x0, double z0) const {
+    glm::dvec3 position(x0, level_, z0);
+    glm::dvec3 dP_du(1.0, 0.0, 0.0);
+    glm::dvec3 dP_dv(0.0, 0.0, 1.0);
+    for (const Wave& w : waves_) {
+        const double theta = glm::dot(w.k_vector, glm::dvec2(x0, z0)) + w.phase_at_origin;
+        const double s = std::sin(theta);
+        const double c = std::cos(theta);
+        const double kx = w.k_vector.x, kz = w.k_vector.y;
+        // D = (s / k) d cos(theta) = (s / k^2) k_vector cos(theta), and d(theta)/du = kx.
+        const double q = w.displacement_scale;
+        position += glm::dvec3(q * kx * c, w.amplitude * s, q * kz * c);
+        dP_du += glm::dvec3(-q * kx * kx * s, w.amplitude * kx * c, -q * kx * kz * s);
+        dP_dv += glm::dvec3(-q * kx * kz * s, w.amplitude * kz * c, -q * kz * kz * s);
+    }
+    return make_surface_point(position, dP_du, dP_dv);
+}
+
+}  // namespace vkw

@@ -1,0 +1,44 @@
+// A sum of directional sine and Gerstner waves with analytic first derivatives (seed 003's
+// "derivatives, not finite differences"; the Gerstner form of GPU Gems 1 ch. 1, y up).
+//
+// For wave i with amplitude A, wave number k = 2 pi / wavelength, unit direction of travel
+// d = (cos a, sin a) in the xz-plane, angular frequency w (= k speed, or sqrt(g k) for the
+// deep-water default), phase offset p and steepness s:
+//   theta = k (d . (x0, z0)) - w t + p
+//   h     = sum A sin(theta)
+//   D     = sum (s / k) d cos(theta)        (Q A = s / k: zero for a sine, s = 0)
+// so dP/du = (1 - sum s d_x d_x sin, sum A k d_x cos, -sum s d_x d_z sin) and dP/dv
+// likewise with d_z. h is measured from `level`.
+#pragma once
+
+#include <vector>
+
+#include "engine/water/surface.hpp"
+
+namespace vkw {
+
+class WaveSumSurface final : public WaterSurface {
+public:
+    // Throws vkw::UserError (validate_waves) for bad components or a steepness sum above 1
+    // without allow_folding. settings.model is not consulted: the components are used.
+    WaveSumSurface(const WaveSettings& settings, double level, double time);
+
+    SurfacePoint at_parameter(double x0, double z0) const override;
+    bool is_heightfield() const override { return heightfield_; }
+    // sum of A_i: a true bound (reached where all crests coincide).
+    double max_amplitude() const override { return amplitude_sum_; }
+
+private:
+    struct Wave {
+        glm::dvec2 k_vector;        // k d, rad/m
+        double phase_at_origin;     // -w t + p, radians
+        double amplitude;           // A, m
+        double displacement_scale;  // s / k^2, so that D = displacement_scale k_vector cos(theta)
+    };
+    std::vector<Wave> waves_;
+    double level_;
+    double amplitude_sum_ = 0.0;
+    bool heightfield_ = true;
+};
+
+}  // namespace vkw
