@@ -1,16 +1,9 @@
 #include "engine/render/frame_constants.hpp"
 
-#include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 
 namespace vkw {
-
-glm::dmat4 projection_matrix(const Camera& camera, double aspect) {
-    // Swapping near and far in a [0, 1]-depth projection gives reversed-Z, which
-    // spends float precision where perspective depth needs it.
-    return glm::perspectiveRH_ZO(glm::radians(camera.fov_y_deg), aspect, camera.far_plane, camera.near_plane);
-}
 
 FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t height) {
     const double aspect = static_cast<double>(width) / static_cast<double>(height);

@@ -29,10 +29,6 @@ struct alignas(16) FrameConstants {
 };
 static_assert(sizeof(FrameConstants) % 16 == 0, "std140 blocks are a multiple of 16 bytes");
 
-// Reversed-Z perspective projection (depth 1 at the near plane, 0 at the far plane),
-// OpenGL-style y-up clip space: the frame graph flips the viewport.
-glm::dmat4 projection_matrix(const Camera& camera, double aspect);
-
 FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t height);
 
 }  // namespace vkw

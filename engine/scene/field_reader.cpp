@@ -2,6 +2,7 @@
 #include "engine/scene/field_reader.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -30,12 +31,15 @@ bool names_non_finite_number(const std::string& text) {
     return end == text.c_str() + text.size() && !std::isfinite(value);
 }
 
-std::string vec3_accepted(const Range& range) {
+std::string array_accepted(const Range& range, std::size_t count) {
+    const std::string numbers = "an array of " + std::to_string(count);
     if (range.contains(-std::numeric_limits<double>::max()) && range.contains(std::numeric_limits<double>::max())) {
-        return "an array of 3 finite numbers" + (range.unit.empty() ? "" : ", in " + range.unit);
+        return numbers + " finite numbers" + (range.unit.empty() ? "" : ", in " + range.unit);
     }
-    return "an array of 3 numbers, each " + range.describe();
+    return numbers + " numbers, each " + range.describe();
 }
+
+std::string integer_accepted(const Range& range) { return "an integer, " + range.describe(); }
 
 std::string join(const std::vector<std::string>& keys) {
     std::string out;
@@ -44,6 +48,12 @@ std::string join(const std::vector<std::string>& keys) {
 }
 
 }  // namespace
+
+std::string one_of(const std::vector<std::string_view>& names) {
+    std::string out = "one of ";
+    for (std::size_t i = 0; i < names.size(); ++i) out += (i == 0 ? "" : ", ") + std::string(names[i]);
+    return out;
+}
 
 std::string describe_value(const json& value) {
     if (value.is_array()) {
@@ -69,23 +79,33 @@ void FieldReader::note_missing(std::string_view key, std::string accepted) {
     missing_.push_back({std::string(key), std::move(accepted)});
 }
 
-double FieldReader::to_number(const json& value, const std::string& path, const Range& range) const {
+double FieldReader::to_number(const json& value, const std::string& path, const Range& range,
+                              const std::string& accepted) const {
     if (value.is_number()) {
         const double number = value.get<double>();
-        if (!std::isfinite(number)) errors_.fail(path, format_number(number) + " is not a finite number", range.describe());
-        if (!range.contains(number)) errors_.fail(path, format_number(number) + " is out of range", range.describe());
+        if (!std::isfinite(number)) errors_.fail(path, format_number(number) + " is not a finite number", accepted);
+        if (!range.contains(number)) errors_.fail(path, format_number(number) + " is out of range", accepted);
         return number;
     }
     if (value.is_string() && names_non_finite_number(value.get_ref<const std::string&>())) {
-        errors_.fail(path, describe_value(value) + " is not a finite number", range.describe());
+        errors_.fail(path, describe_value(value) + " is not a finite number", accepted);
     }
-    fail_type(path, "a number", value, range.describe());
+    fail_type(path, "a number", value, accepted);
+}
+
+void FieldReader::to_numbers(const json& value, const std::string& path, const Range& range, double* out,
+                             std::size_t count) const {
+    const std::string expected = "an array of " + std::to_string(count) + " numbers";
+    if (!value.is_array() || value.size() != count) fail_type(path, expected, value, array_accepted(range, count));
+    for (std::size_t i = 0; i < count; ++i) {
+        out[i] = to_number(value[i], element_path(path, i), range, range.describe());
+    }
 }
 
 std::optional<double> FieldReader::optional_number(std::string_view key, const Range& range) {
     const json* value = find(key);
     if (value == nullptr) return std::nullopt;
-    return to_number(*value, path_of(key), range);
+    return to_number(*value, path_of(key), range, range.describe());
 }
 
 double FieldReader::number(std::string_view key, const Range& range) {
@@ -101,24 +121,63 @@ double FieldReader::number(std::string_view key, const Range& range, double fall
 std::optional<glm::dvec3> FieldReader::optional_vec3(std::string_view key, const Range& range) {
     const json* value = find(key);
     if (value == nullptr) return std::nullopt;
-    const std::string path = path_of(key);
-    if (!value->is_array() || value->size() != 3) fail_type(path, "an array of 3 numbers", *value, vec3_accepted(range));
-    glm::dvec3 result;
-    for (std::size_t i = 0; i < 3; ++i) {
-        result[static_cast<glm::length_t>(i)] = to_number((*value)[i], element_path(path, i), range);
-    }
-    return result;
+    std::array<double, 3> numbers{};
+    to_numbers(*value, path_of(key), range, numbers.data(), numbers.size());
+    return glm::dvec3(numbers[0], numbers[1], numbers[2]);
 }
 
 glm::dvec3 FieldReader::vec3(std::string_view key, const Range& range) {
     if (const auto value = optional_vec3(key, range)) return *value;
-    note_missing(key, vec3_accepted(range));
+    note_missing(key, array_accepted(range, 3));
     return glm::dvec3(std::numeric_limits<double>::quiet_NaN());
 }
 
 glm::dvec3 FieldReader::vec3(std::string_view key, const Range& range, const glm::dvec3& fallback) {
     return optional_vec3(key, range).value_or(fallback);
 }
+
+std::optional<glm::dvec2> FieldReader::optional_vec2(std::string_view key, const Range& range) {
+    const json* value = find(key);
+    if (value == nullptr) return std::nullopt;
+    std::array<double, 2> numbers{};
+    to_numbers(*value, path_of(key), range, numbers.data(), numbers.size());
+    return glm::dvec2(numbers[0], numbers[1]);
+}
+
+glm::dvec2 FieldReader::vec2(std::string_view key, const Range& range) {
+    if (const auto value = optional_vec2(key, range)) return *value;
+    note_missing(key, array_accepted(range, 2));
+    return glm::dvec2(std::numeric_limits<double>::quiet_NaN());
+}
+
+std::optional<int64_t> FieldReader::optional_integer(std::string_view key, const Range& range) {
+    const json* value = find(key);
+    if (value == nullptr) return std::nullopt;
+    const std::string path = path_of(key);
+    const std::string accepted = integer_accepted(range);
+    const double number = to_number(*value, path, range, accepted);
+    if (number != std::floor(number)) errors_.fail(path, format_number(number) + " is not an integer", accepted);
+    return static_cast<int64_t>(number);
+}
+
+int64_t FieldReader::integer(std::string_view key, const Range& range) {
+    if (const auto value = optional_integer(key, range)) return *value;
+    note_missing(key, integer_accepted(range));
+    return 0;
+}
+
+int64_t FieldReader::integer(std::string_view key, const Range& range, int64_t fallback) {
+    return optional_integer(key, range).value_or(fallback);
+}
+
+std::optional<bool> FieldReader::optional_boolean(std::string_view key) {
+    const json* value = find(key);
+    if (value == nullptr) return std::nullopt;
+    if (!value->is_boolean()) fail_type(path_of(key), "true or false", *value, {});
+    return value->get<bool>();
+}
+
+bool FieldReader::boolean(std::string_view key, bool fallback) { return optional_boolean(key).value_or(fallback); }
 
 std::optional<std::string> FieldReader::optional_string(std::string_view key) {
     const json* value = find(key);
@@ -129,6 +188,25 @@ std::optional<std::string> FieldReader::optional_string(std::string_view key) {
 
 std::string FieldReader::string(std::string_view key, std::string fallback) {
     return optional_string(key).value_or(std::move(fallback));
+}
+
+std::optional<std::size_t> FieldReader::optional_choice_index(std::string_view key,
+                                                              const std::vector<std::string_view>& names) {
+    const json* value = find(key);
+    if (value == nullptr) return std::nullopt;
+    const std::string path = path_of(key);
+    if (!value->is_string()) fail_type(path, "a string", *value, one_of(names));
+    const std::string& text = value->get_ref<const std::string&>();
+    const auto it = std::find(names.begin(), names.end(), text);
+    if (it != names.end()) return static_cast<std::size_t>(it - names.begin());
+    std::string what = "unknown value " + shortened(value->dump());
+    const std::vector<std::string> valid(names.begin(), names.end());
+    if (const auto hint = closest_key(text, valid)) what += " (did you mean '" + *hint + "'?)";
+    errors_.fail(path, what, one_of(names));
+}
+
+void FieldReader::declare(std::initializer_list<std::string_view> keys) {
+    for (const std::string_view key : keys) find(key);
 }
 
 void FieldReader::finish() {

@@ -1,9 +1,9 @@
 // The "sun" and "sky" sections of the scene schema. The sun's direction has two exclusive
 // forms: elevation_deg/azimuth_deg (toward the sun, see direction_toward_sun) or direction
 // (the travelling direction of the light, normalised here).
-#include <algorithm>
-#include <cmath>
+#include <array>
 
+#include "engine/scene/direction.hpp"
 #include "engine/scene/scene_json.hpp"
 
 namespace vkw {
@@ -11,12 +11,15 @@ namespace {
 
 constexpr std::string_view kSunForms = "either direction, or elevation_deg with optional azimuth_deg";
 
-// Normalises a finite vector of any magnitude: dividing by the largest component first keeps
-// the length computation from overflowing (1e200 components) or underflowing (1e-200).
+constexpr std::array<Named<SkyModel>, 2> kSkyModels = {{
+    {"constant", SkyModel::Constant},
+    {"gradient", SkyModel::Gradient},
+}};
+
 glm::dvec3 normalised_direction(FieldReader& fields, const glm::dvec3& given) {
-    const double largest = std::max({std::abs(given.x), std::abs(given.y), std::abs(given.z)});
-    if (largest == 0.0) fields.fail("direction", "[0, 0, 0] has no direction", "a non-zero vector with y < 0");
-    const glm::dvec3 direction = glm::normalize(given / largest);
+    const std::optional<glm::dvec3> unit = unit_direction(given);
+    if (!unit) fields.fail("direction", "[0, 0, 0] has no direction", "a non-zero vector with y < 0");
+    const glm::dvec3 direction = *unit;
     if (!(direction.y < 0.0)) {
         fields.fail("direction",
                     format_vec3(given) + " does not point downward; it is the direction the light travels, not the "
@@ -52,9 +55,22 @@ Sun read_sun(FieldReader& fields) {
     return sun;
 }
 
+// The sky's model decides its other fields: radiance for constant; zenith, horizon, ground and
+// exponent for gradient. A field of the other model is then an unknown field.
 Sky read_sky(FieldReader& fields) {
+    const Sky defaults;
+    const Range radiance = Range::at_least(0.0, "W m^-2 sr^-1");
     Sky sky;
-    sky.radiance = fields.vec3("radiance", Range::at_least(0.0, "W m^-2 sr^-1"));
+    sky.model = fields.choice("model", kSkyModels, defaults.model);
+    if (sky.model == SkyModel::Constant) {
+        sky.radiance = fields.vec3("radiance", radiance);
+        return sky;
+    }
+    sky.zenith = fields.vec3("zenith", radiance);
+    sky.horizon = fields.vec3("horizon", radiance);
+    // The horizon's radiance continued below it: no step at the horizon.
+    sky.ground = fields.vec3("ground", radiance, sky.horizon);
+    sky.exponent = fields.number("exponent", Range::above(0.0), defaults.exponent);
     return sky;
 }
 

@@ -1,31 +1,14 @@
-// Geometry derived from the scene description: sun angles to a direction, and the view matrix.
+// Quantities derived from the scene description: sun angles to a direction, the view matrix,
+// the sky's radiance and the bottom of the water.
 #include "engine/scene/scene.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "engine/scene/angles.hpp"
+
 namespace vkw {
-namespace {
-
-// sin and cos of an angle in degrees, exact at multiples of 90: reducing to [-45, 45] first
-// means sin(0) = 0 and cos(0) = 1 are what gets evaluated there, instead of cos(pi/2) ~ 6e-17.
-void sin_cos_deg(double deg, double& s, double& c) {
-    const double quadrant = std::round(deg / 90.0);
-    const double rest = (deg - 90.0 * quadrant) * (std::numbers::pi / 180.0);
-    const double rs = std::sin(rest);
-    const double rc = std::cos(rest);
-    // ((q mod 4) + 4) mod 4 handles negative angles.
-    switch (((static_cast<long long>(quadrant) % 4) + 4) % 4) {
-        case 0: s = rs;  c = rc;  break;
-        case 1: s = rc;  c = -rs; break;
-        case 2: s = -rs; c = -rc; break;
-        default: s = -rc; c = rs; break;
-    }
-}
-
-}  // namespace
 
 glm::dvec3 direction_toward_sun(double elevation_deg, double azimuth_deg) {
     double sin_el = 0.0, cos_el = 0.0, sin_az = 0.0, cos_az = 0.0;
@@ -40,6 +23,29 @@ glm::dmat4 view_matrix(const Camera& camera) {
     // axis; there |dir.z| < 0.045, so -z is safely far from parallel to dir.
     const glm::dvec3 up = std::abs(dir.y) > 0.999 ? glm::dvec3(0.0, 0.0, -1.0) : glm::dvec3(0.0, 1.0, 0.0);
     return glm::lookAtRH(camera.position, camera.target, up);
+}
+
+glm::dvec3 sky_radiance(const Sky& sky, const glm::dvec3& dir) {
+    if (sky.model == SkyModel::Constant) return sky.radiance;
+    if (dir.y < 0.0) return sky.ground;
+    return glm::mix(sky.horizon, sky.zenith, std::pow(dir.y, sky.exponent));
+}
+
+glm::dvec3 sky_average_radiance(const Sky& sky) {
+    if (sky.model == SkyModel::Constant) return sky.radiance;
+    // (1/pi) int_0^2pi int_0^1 mix(h, z, mu^e) mu dmu dphi = h + (z - h) * 2 int_0^1 mu^(e+1) dmu.
+    return sky.horizon + (sky.zenith - sky.horizon) * (2.0 / (sky.exponent + 2.0));
+}
+
+double water_bottom(const Scene& scene) {
+    if (scene.water && scene.water->depth) return scene.water->level - *scene.water->depth;
+    return scene.floor.height;
+}
+
+glm::dmat4 projection_matrix(const Camera& camera, double aspect) {
+    // Swapping near and far in a [0, 1]-depth projection gives reversed-Z, which
+    // spends float precision where perspective depth needs it.
+    return glm::perspectiveRH_ZO(glm::radians(camera.fov_y_deg), aspect, camera.far_plane, camera.near_plane);
 }
 
 }  // namespace vkw

@@ -1,21 +1,34 @@
-// The scene as the renderers see it: camera, sun, sky and floor, in double precision
-// (the CPU reference renderer works in doubles). Units: metres, y up, right-handed;
-// irradiance in W m^-2 and radiance in W m^-2 sr^-1 per RGB channel (PHYSICS.md section 1).
+// The scene as the renderers see it: camera, sun, sky, floor, water, medium, receivers and
+// effect settings, in double precision (the CPU reference renderer works in doubles).
+// Units: metres, y up, right-handed; irradiance in W m^-2 and radiance in W m^-2 sr^-1 per RGB
+// channel (PHYSICS.md section 1).
 //
 // The default member values are the defaults of the optional fields of the scene file
 // (scenes/README.md); the loader reads them from here, so they are stated only once.
 #pragma once
 
+#include <array>
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
+
+#include "engine/framegraph/frame_needs.hpp"
+#include "engine/scene/medium.hpp"
+#include "engine/scene/mesh.hpp"
+#include "engine/water/wave_params.hpp"
 
 namespace vkw {
 
 struct Camera {
     glm::dvec3 position{0.0, 0.0, 0.0};   // required in a scene file
-    glm::dvec3 target{0.0, 0.0, -1.0};    // required in a scene file; != position
+    // A point the camera looks at, != position. The file gives either `target` or `direction`;
+    // a direction d becomes target = position + d / |d|.
+    glm::dvec3 target{0.0, 0.0, -1.0};
     double fov_y_deg = 60.0;              // full vertical field of view, in (1, 179)
     double near_plane = 0.05;             // metres, 0 < near_plane < far_plane
     double far_plane = 500.0;             // metres
@@ -31,8 +44,16 @@ struct Sun {
     glm::dvec3 irradiance{1.0, 1.0, 1.0};
 };
 
+enum class SkyModel : uint8_t { Constant, Gradient };
+
+// Sky radiance L(dir) in W m^-2 sr^-1 for a unit direction dir (see sky_radiance below).
 struct Sky {
-    glm::dvec3 radiance{0.0, 0.0, 0.0};   // constant sky radiance, W m^-2 sr^-1; required
+    SkyModel model = SkyModel::Constant;
+    glm::dvec3 radiance{0.0, 0.0, 0.0};   // Constant: the radiance of every direction; required
+    glm::dvec3 zenith{0.0, 0.0, 0.0};     // Gradient: straight up; required
+    glm::dvec3 horizon{0.0, 0.0, 0.0};    // Gradient: at the horizon; required
+    glm::dvec3 ground{0.0, 0.0, 0.0};     // Gradient: every direction below the horizon; default horizon
+    double exponent = 0.5;                // Gradient: > 0, shape of the blend
 };
 
 // Horizontal Lambertian plane y = height: a square of side 2 * half_extent centred
@@ -43,6 +64,50 @@ struct FloorPlane {
     double half_extent = 10.0;            // metres, > 0
 };
 
+// The water body: a surface around y = level over the square |x|, |z| <= half_extent, and the
+// water volume below it down to level - depth (or to the floor when depth is not given).
+struct Water {
+    double level = 0.0;                   // metres, mean surface height
+    double ior = 1.333;                   // index of refraction, in [1, 2] (PHYSICS.md section 1)
+    double half_extent = 10.0;            // metres, > 0
+    // Surface grid cells per side, in [2, 4096]. The device's own limits (buffer sizes,
+    // dispatch counts) are checked by the renderer, not here.
+    uint32_t grid_resolution = 256;
+    double time = 0.0;                    // seconds at which the waves are evaluated
+    std::optional<double> depth;          // metres below level, > 0; nullopt: down to the floor
+    WaveSettings waves;                   // the file's water.seed is waves.seed
+};
+
+enum class ReceiverType : uint8_t { Plane, Box, Sphere, Terrain, Gltf };
+
+// A Lambertian object (PHYSICS.md section 1): the built-in shape or glTF mesh, already
+// transformed to world space.
+struct Receiver {
+    std::string name;                     // from the file; default: its field path, "receivers[2]"
+    ReceiverType type = ReceiverType::Plane;
+    // Lambertian albedo in [0, 1]; multiplies the base colour texture when the mesh has one.
+    // Default: 0.5 grey, or the glTF material's baseColorFactor for a glTF mesh.
+    glm::dvec3 albedo{0.5, 0.5, 0.5};
+    glm::dmat4 object_to_world{1.0};      // translation * rotation * scale, as in the file
+    Mesh mesh;                            // world space
+};
+
+// effects.<name>.mode: auto lets the frame's needs decide; on and off force the decision.
+enum class EffectMode : uint8_t { Auto, On, Off };
+
+struct EffectSettings {
+    EffectMode mode = EffectMode::Auto;   // later: per-effect settings beside it
+};
+
+// One entry per fg::Effect, indexed by the enum (CausticBlur is its last value).
+inline constexpr std::size_t kEffectCount = static_cast<std::size_t>(fg::Effect::CausticBlur) + 1;
+
+struct EffectsSettings {
+    std::array<EffectSettings, kEffectCount> settings{};
+    const EffectSettings& operator[](fg::Effect effect) const { return settings[static_cast<std::size_t>(effect)]; }
+    EffectSettings& operator[](fg::Effect effect) { return settings[static_cast<std::size_t>(effect)]; }
+};
+
 struct Scene {
     std::filesystem::path source;         // the file it was loaded from, as given to the loader
     std::string description;              // free text saying what the scene exercises
@@ -50,7 +115,23 @@ struct Scene {
     Sun sun;
     Sky sky;
     FloorPlane floor;
+    std::optional<Water> water;           // nullopt: no water in the scene
+    Medium medium = default_medium();     // the water's optical properties
+    std::vector<Receiver> receivers;
+    EffectsSettings effects;
 };
+
+// Sky radiance toward unit direction `dir`. Constant: sky.radiance. Gradient (scenes/README.md):
+//   L = mix(horizon, zenith, pow(dir.y, exponent)) for dir.y >= 0, ground below.
+glm::dvec3 sky_radiance(const Sky& sky, const glm::dvec3& dir);
+
+// L_sky_avg of PHYSICS.md section 1: (1/pi) * integral over the upper hemisphere of
+// L cos(theta) d(omega). Constant: radiance; gradient, in closed form:
+//   horizon + (zenith - horizon) * 2 / (exponent + 2).
+glm::dvec3 sky_average_radiance(const Sky& sky);
+
+// The y of the bottom of the water volume: level - depth, or the floor's height.
+double water_bottom(const Scene& scene);
 
 // Direction TOWARD the sun for elevation `el` above the horizon and azimuth `az`, both in
 // degrees: u = (cos(el) sin(az), sin(el), -cos(el) cos(az)). Azimuth 0 faces -z ("north",
@@ -62,5 +143,10 @@ glm::dvec3 direction_toward_sun(double elevation_deg, double azimuth_deg);
 // within about 2.6 degrees of vertical (|dot(dir, +y)| > 0.999) +y cannot define "up", so
 // -z (north) is used instead: looking straight down or up, north is at the top of the image.
 glm::dmat4 view_matrix(const Camera& camera);
+
+// Reversed-Z perspective projection (depth 1 at the near plane, 0 at the far plane) in
+// OpenGL-style y-up clip space, for an output of this width/height ratio. Both
+// renderers build their camera rays from view_matrix and this.
+glm::dmat4 projection_matrix(const Camera& camera, double aspect);
 
 }  // namespace vkw

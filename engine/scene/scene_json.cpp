@@ -5,7 +5,8 @@ namespace vkw {
 
 Scene scene_from_json(const nlohmann::json& root, const ErrorContext& errors, const std::filesystem::path& source) {
     if (!root.is_object()) {
-        errors.fail("", "expected a JSON object, got " + describe_value(root), "an object with camera, sun, sky, floor");
+        errors.fail("", "expected a JSON object, got " + describe_value(root),
+                    "an object with camera, sun, sky and optional floor, water, medium, receivers, effects");
     }
     FieldReader fields(root, "", errors);
     Scene scene;
@@ -15,7 +16,21 @@ Scene scene_from_json(const nlohmann::json& root, const ErrorContext& errors, co
     scene.sun = fields.object("sun", Presence::required, read_sun);
     scene.sky = fields.object("sky", Presence::required, read_sky);
     scene.floor = fields.object("floor", Presence::optional, read_floor);
+    // Absent water means no water, not default water.
+    if (fields.has("water")) scene.water = fields.object("water", Presence::required, read_water);
+    scene.medium = fields.object("medium", Presence::optional, read_medium);
+    const std::filesystem::path base_dir = source.parent_path();
+    scene.receivers =
+        fields.objects("receivers", [&](FieldReader& receiver) { return read_receiver(receiver, base_dir); });
+    scene.effects = fields.object("effects", Presence::optional, read_effects);
     fields.finish();
+
+    if (scene.water && !scene.water->depth && !(scene.floor.height < scene.water->level)) {
+        errors.fail("water.level",
+                    format_number(scene.water->level) + " is not above floor.height = " +
+                        format_number(scene.floor.height) + ", so the water has no volume",
+                    "value > floor.height, or water.depth to give the volume its own bottom");
+    }
     return scene;
 }
 

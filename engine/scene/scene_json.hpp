@@ -1,6 +1,6 @@
 // The scene schema: JSON (already parsed and overridden) to a validated Scene. One reader
-// function per section, each over a FieldReader; a new section (water, waves, medium, ...)
-// is a new function here and one line in scene_from_json.
+// function per section, each over a FieldReader; a new section is a new function here and one
+// line in scene_from_json.
 #pragma once
 
 #include <filesystem>
@@ -15,9 +15,15 @@ namespace vkw {
 
 Scene scene_from_json(const nlohmann::json& root, const ErrorContext& errors, const std::filesystem::path& source);
 
-Camera read_camera(FieldReader& fields);      // camera_json.cpp
-Sun read_sun(FieldReader& fields);            // light_json.cpp
-Sky read_sky(FieldReader& fields);            // light_json.cpp
-FloorPlane read_floor(FieldReader& fields);   // floor_json.cpp
+Camera read_camera(FieldReader& fields);          // camera_json.cpp
+Sun read_sun(FieldReader& fields);                // light_json.cpp
+Sky read_sky(FieldReader& fields);                // light_json.cpp
+FloorPlane read_floor(FieldReader& fields);       // floor_json.cpp
+Water read_water(FieldReader& fields);            // water_json.cpp
+WaveSettings read_waves(FieldReader& fields);     // waves_json.cpp
+Medium read_medium(FieldReader& fields);          // medium_json.cpp
+EffectsSettings read_effects(FieldReader& fields);  // effects_json.cpp
+// `base_dir`: the scene file's folder, against which glTF file names are resolved.
+Receiver read_receiver(FieldReader& fields, const std::filesystem::path& base_dir);  // receiver_json.cpp
 
 }  // namespace vkw

@@ -22,7 +22,7 @@ namespace vkw {
 Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
 
 // The same from text in memory; `name_for_messages` stands in for the file name in errors
-// and becomes Scene::source.
+// and becomes Scene::source, and glTF receivers' files are resolved against its folder.
 Scene parse_scene(std::string_view json_text, const std::filesystem::path& name_for_messages,
                   const std::vector<std::string>& overrides = {});
 

@@ -1,5 +1,5 @@
-// First pixels: the default scene (a constant sky over a sunlit Lambertian floor, no
-// water yet) rendered on the device, written to OpenEXR, read back with OpenEXR,
+// First pixels: the default scene without its water (a constant sky over a sunlit
+// Lambertian floor) rendered on the device, written to OpenEXR, read back with OpenEXR,
 // and checked against the model (PHYSICS.md section 1):
 //   floor radiance = rho (E_s cos(theta_s) + pi L_sky) / pi,   sky radiance = L_sky.
 #include "engine/image/exr_io.hpp"
@@ -38,7 +38,8 @@ bool ray_hits_floor(const Scene& scene, int x, int y) {
 using FirstPixels = GpuTest;
 
 TEST_F(FirstPixels, DefaultSceneFloorAndSkyMatchTheModel) {
-    const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
+    // water=null removes the water: this test pins the foundation's sky and floor.
+    const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json", {"water=null"});
     const std::filesystem::path exr = std::filesystem::path(::testing::TempDir()) / "first_pixels.exr";
     {
         Renderer renderer(context());
@@ -73,7 +74,7 @@ TEST_F(FirstPixels, DefaultSceneFloorAndSkyMatchTheModel) {
 
 TEST_F(FirstPixels, SunDiskShowsWithTheModelsRadiance) {
     // Look straight at the sun: the centre pixel sees the disk, radiance L_sky + E_s / 6.80e-5.
-    Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
+    Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json", {"water=null"});
     scene.camera.target = scene.camera.position - scene.sun.direction;
     scene.camera.fov_y_deg = 2.0;  // the disk (0.53 degrees across) covers many pixels
     Renderer renderer(context());

@@ -1,5 +1,6 @@
 // scenes/pool.json loads with the values it states, omitted fields take their defaults, and
 // an unreadable file is refused with the reason.
+#include <cmath>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -22,8 +23,9 @@ TEST(scene_pool, LoadsWithExpectedValues) {
     EXPECT_EQ(scene.camera.far_plane, 500.0);
     EXPECT_EQ(scene.camera.exposure, 1.0);
 
-    // elevation 60, azimuth 30: toward the sun (cos60 sin30, sin60, -cos60 cos30).
-    const glm::dvec3 expected = -glm::dvec3(0.25, std::sqrt(3.0) / 2.0, -std::sqrt(3.0) / 4.0);
+    // elevation 80, azimuth 30: toward the sun (cos80 sin30, sin80, -cos80 cos30).
+    const double el = 80.0 * std::numbers::pi / 180.0;
+    const glm::dvec3 expected = -glm::dvec3(std::cos(el) * 0.5, std::sin(el), -std::cos(el) * std::sqrt(3.0) / 2.0);
     EXPECT_NEAR(scene.sun.direction.x, expected.x, 1e-15);
     EXPECT_NEAR(scene.sun.direction.y, expected.y, 1e-15);
     EXPECT_NEAR(scene.sun.direction.z, expected.z, 1e-15);
@@ -33,6 +35,37 @@ TEST(scene_pool, LoadsWithExpectedValues) {
     EXPECT_EQ(scene.floor.height, -1.5);
     EXPECT_EQ(scene.floor.albedo, glm::dvec3(0.6));
     EXPECT_EQ(scene.floor.half_extent, 10.0);
+
+    ASSERT_TRUE(scene.water.has_value());
+    EXPECT_EQ(scene.water->level, 0.0);
+    EXPECT_EQ(scene.water->ior, 1.333);
+    EXPECT_EQ(scene.water->grid_resolution, 1024u);
+    EXPECT_FALSE(scene.water->depth.has_value());
+    EXPECT_EQ(water_bottom(scene), -1.5);
+    EXPECT_EQ(scene.medium.preset, "pure");
+    EXPECT_TRUE(scene.receivers.empty());
+}
+
+TEST(scene_pool, WavesFocusNearTheFloor) {
+    // PHYSICS.md section 5: first cusp under a vertical sun at d* = f - A, f = 1 / ((1 - 1/n) A k^2);
+    // each of the two perpendicular sines focuses on its own axis.
+    const Scene scene = load_scene(test::kSourceDir / "scenes/pool.json");
+    const WaveSettings& waves = scene.water->waves;
+    ASSERT_EQ(waves.model, WaveModel::Sum);
+    ASSERT_EQ(waves.components.size(), 2u);
+    const double depth = scene.water->level - scene.floor.height;
+    for (const WaveComponent& wave : waves.components) {
+        EXPECT_EQ(wave.wavelength, 0.5);
+        EXPECT_EQ(wave.amplitude, 0.017);
+        EXPECT_EQ(wave.steepness, 0.0);
+        EXPECT_LT(wave.speed, 0.0);  // deep-water dispersion
+        const double k = 2.0 * std::numbers::pi / wave.wavelength;
+        const double focus = 1.0 / ((1.0 - 1.0 / scene.water->ior) * wave.amplitude * k * k) - wave.amplitude;
+        EXPECT_NEAR(focus, 1.47, 0.01);
+        EXPECT_NEAR(focus, depth, 0.05);
+    }
+    EXPECT_NEAR(waves.components[1].direction_deg - waves.components[0].direction_deg, 90.0, 0.0);
+    EXPECT_GE(-scene.sun.direction.y, std::sin(75.0 * std::numbers::pi / 180.0));  // a high sun
 }
 
 TEST(scene_pool, FloorAndSkyRadianceAreOfTheSameOrder) {
@@ -60,6 +93,11 @@ TEST(scene_defaults, OmittedFieldsTakeDocumentedDefaults) {
     EXPECT_EQ(scene.floor.height, -1.5);
     EXPECT_EQ(scene.floor.albedo, glm::dvec3(0.5));
     EXPECT_EQ(scene.floor.half_extent, 10.0);
+    EXPECT_FALSE(scene.water.has_value());
+    EXPECT_EQ(scene.medium.preset, "pure");
+    EXPECT_EQ(scene.sky.model, SkyModel::Constant);
+    EXPECT_TRUE(scene.receivers.empty());
+    for (const EffectSettings& effect : scene.effects.settings) EXPECT_EQ(effect.mode, EffectMode::Auto);
 }
 
 TEST(scene_file, MissingFileNamesPathAndReason) {

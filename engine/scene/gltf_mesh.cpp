@@ -1,0 +1,328 @@
+// glTF 2.0 to Mesh through tinygltf (see gltf_mesh.hpp). Debian's tinygltf is a compiled shared
+// library: no TINYGLTF_IMPLEMENTATION or STB_IMAGE_IMPLEMENTATION here.
+#include "engine/scene/gltf_mesh.hpp"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <initializer_list>
+#include <memory>
+#include <string>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "engine/core/errors.hpp"
+
+namespace vkw {
+namespace {
+
+// Deeper node hierarchies than this are taken for a cycle (malformed) rather than recursed into.
+constexpr int kMaxNodeDepth = 64;
+
+const char* mode_name(int mode) {
+    switch (mode) {
+        case TINYGLTF_MODE_POINTS: return "POINTS";
+        case TINYGLTF_MODE_LINE: return "LINES";
+        case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
+        case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
+        case TINYGLTF_MODE_TRIANGLES: return "TRIANGLES";
+        case TINYGLTF_MODE_TRIANGLE_STRIP: return "TRIANGLE_STRIP";
+        case TINYGLTF_MODE_TRIANGLE_FAN: return "TRIANGLE_FAN";
+        default: return "unknown";
+    }
+}
+
+template <class T>
+T load(const unsigned char* at) {
+    T value;
+    std::memcpy(&value, at, sizeof value);
+    return value;
+}
+
+// One component at `at`: normalised integers mapped to [0, 1] or [-1, 1] as the glTF
+// specification states; plain integers (indices) converted exactly.
+double component(const unsigned char* at, int type, bool normalized) {
+    switch (type) {
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: return load<float>(at);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return load<uint32_t>(at);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+            const double v = load<uint16_t>(at);
+            return normalized ? v / 65535.0 : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_SHORT: {
+            const double v = load<int16_t>(at);
+            return normalized ? std::max(v / 32767.0, -1.0) : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? *at / 255.0 : *at;
+        case TINYGLTF_COMPONENT_TYPE_BYTE: {
+            const double v = load<int8_t>(at);
+            return normalized ? std::max(v / 127.0, -1.0) : v;
+        }
+        default: return 0.0;
+    }
+}
+
+// A primitive's vertex sequence as a triangle list. Strips alternate their winding; the
+// odd triangles are reordered so that every triangle keeps the first one's orientation.
+std::vector<uint32_t> triangle_list(int mode, const std::vector<uint32_t>& order) {
+    if (mode == TINYGLTF_MODE_TRIANGLES) return {order.begin(), order.end() - std::ptrdiff_t(order.size() % 3)};
+    std::vector<uint32_t> triangles;
+    for (std::size_t i = 2; i < order.size(); ++i) {
+        if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+            triangles.insert(triangles.end(), {order[0], order[i - 1], order[i]});
+        } else if (i % 2 == 0) {
+            triangles.insert(triangles.end(), {order[i - 2], order[i - 1], order[i]});
+        } else {
+            triangles.insert(triangles.end(), {order[i - 1], order[i - 2], order[i]});
+        }
+    }
+    return triangles;
+}
+
+glm::dmat4 local_transform(const tinygltf::Node& node) {
+    glm::dmat4 local(1.0);
+    if (node.matrix.size() == 16) {
+        for (int i = 0; i < 16; ++i) local[i / 4][i % 4] = node.matrix[std::size_t(i)];  // column-major, as glm
+        return local;
+    }
+    glm::dmat4 rotation(1.0), scale(1.0);
+    const std::vector<double>& t = node.translation;
+    if (t.size() == 3) local[3] = glm::dvec4(t[0], t[1], t[2], 1.0);
+    if (node.rotation.size() == 4) {
+        rotation = glm::mat4_cast(glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));
+    }
+    for (std::size_t i = 0; i < node.scale.size() && i < 3; ++i) scale[int(i)][int(i)] = node.scale[i];
+    return local * rotation * scale;  // T R S
+}
+
+class GltfReader {
+public:
+    GltfReader(const std::filesystem::path& file, const tinygltf::Model& model) : file_(file), model_(model) {}
+
+    [[noreturn]] void fail(const std::string& what) const {
+        throw UserError("glTF file '" + file_.string() + "': " + what);
+    }
+
+    void add_node(Mesh& mesh, int index, const glm::dmat4& parent, int depth) {
+        if (index < 0 || std::size_t(index) >= model_.nodes.size()) fail("no node " + std::to_string(index));
+        if (depth > kMaxNodeDepth) fail("nodes nested more than " + std::to_string(kMaxNodeDepth) + " deep (a cycle?)");
+        const tinygltf::Node& node = model_.nodes[std::size_t(index)];
+        const glm::dmat4 transform = parent * local_transform(node);
+        if (node.mesh >= 0) add_mesh(mesh, node.mesh, transform);
+        for (const int child : node.children) add_node(mesh, child, transform, depth + 1);
+    }
+
+    void add_mesh(Mesh& mesh, int index, const glm::dmat4& transform) {
+        if (index < 0 || std::size_t(index) >= model_.meshes.size()) fail("no mesh " + std::to_string(index));
+        const tinygltf::Mesh& source = model_.meshes[std::size_t(index)];
+        const std::string name = "meshes[" + std::to_string(index) + "]";
+        for (std::size_t p = 0; p < source.primitives.size(); ++p) {
+            const std::string mesh_name = source.name.empty() ? name : "mesh '" + source.name + "' (" + name + ")";
+            add_primitive(mesh, source.primitives[p], mesh_name + ", primitive " + std::to_string(p), transform);
+        }
+    }
+
+private:
+    // Elements of accessor `index` as doubles, `width` components each; `kinds` lists the
+    // accepted component types. Bounds are checked so that malformed files cannot read past
+    // their buffers.
+    std::vector<double> read(int index, int width, std::initializer_list<int> kinds, const std::string& what) const {
+        const std::string name = "accessors[" + std::to_string(index) + "]";
+        if (index < 0 || std::size_t(index) >= model_.accessors.size()) fail(what + ": no " + name);
+        const tinygltf::Accessor& accessor = model_.accessors[std::size_t(index)];
+        if (accessor.sparse.isSparse) fail(what + ": sparse accessors are not supported");
+        if (tinygltf::GetNumComponentsInType(uint32_t(accessor.type)) != width ||
+            std::find(kinds.begin(), kinds.end(), accessor.componentType) == kinds.end()) {
+            fail(what + ": unsupported type or component type in " + name);
+        }
+        if (accessor.bufferView < 0 || std::size_t(accessor.bufferView) >= model_.bufferViews.size()) {
+            fail(what + ": " + name + " has no bufferView");
+        }
+        const tinygltf::BufferView& view = model_.bufferViews[std::size_t(accessor.bufferView)];
+        if (view.buffer < 0 || std::size_t(view.buffer) >= model_.buffers.size()) {
+            fail(what + ": bufferView has no buffer");
+        }
+        const std::vector<unsigned char>& data = model_.buffers[std::size_t(view.buffer)].data;
+        const auto size = std::size_t(tinygltf::GetComponentSizeInBytes(uint32_t(accessor.componentType)));
+        const std::size_t element = size * std::size_t(width);
+        const std::size_t stride = view.byteStride != 0 ? view.byteStride : element;
+        const std::size_t end = accessor.count == 0 ? 0 : accessor.byteOffset + stride * (accessor.count - 1) + element;
+        if (end > view.byteLength || view.byteOffset + view.byteLength > data.size()) {
+            fail(what + ": " + name + " reaches past the end of its buffer");
+        }
+        std::vector<double> values;
+        values.reserve(accessor.count * std::size_t(width));
+        const unsigned char* base = data.data() + view.byteOffset + accessor.byteOffset;
+        for (std::size_t i = 0; i < accessor.count; ++i) {
+            for (std::size_t c = 0; c < std::size_t(width); ++c) {
+                values.push_back(component(base + i * stride + c * size, accessor.componentType, accessor.normalized));
+            }
+        }
+        return values;
+    }
+
+    // The primitive's vertices in drawing order: its indices, or 0, 1, 2, ... without them.
+    std::vector<uint32_t> vertex_order(const tinygltf::Primitive& primitive, std::size_t count,
+                                       const std::string& where) const {
+        std::vector<uint32_t> order;
+        if (primitive.indices < 0) {
+            for (std::size_t i = 0; i < count; ++i) order.push_back(uint32_t(i));
+            return order;
+        }
+        const auto kinds = {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                            TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT};
+        for (const double i : read(primitive.indices, 1, kinds, where + " indices")) {
+            if (i >= double(count)) {
+                fail(where + ": index " + std::to_string(uint64_t(i)) + " >= vertex count " + std::to_string(count));
+            }
+            order.push_back(uint32_t(i));
+        }
+        return order;
+    }
+
+    void add_primitive(Mesh& mesh, const tinygltf::Primitive& primitive, const std::string& where,
+                       const glm::dmat4& transform) {
+        const int mode = primitive.mode;
+        if (mode < TINYGLTF_MODE_TRIANGLES || mode > TINYGLTF_MODE_TRIANGLE_FAN) {  // lists, strips and fans
+            fail(where + ": mode " + mode_name(mode) + " (" + std::to_string(mode) +
+                 ") is not supported (accepted: TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN)");
+        }
+        const auto attribute = [&](const char* name) {
+            const auto it = primitive.attributes.find(name);
+            return it == primitive.attributes.end() ? -1 : it->second;
+        };
+        if (attribute("POSITION") < 0) fail(where + ": no POSITION attribute");
+        const auto floats = {TINYGLTF_COMPONENT_TYPE_FLOAT};
+        const std::vector<double> positions = read(attribute("POSITION"), 3, floats, where + " POSITION");
+        const std::size_t count = positions.size() / 3;
+        std::vector<double> normals, uvs;
+        if (attribute("NORMAL") >= 0) normals = read(attribute("NORMAL"), 3, floats, where + " NORMAL");
+        if (attribute("TEXCOORD_0") >= 0) {
+            const auto kinds = {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
+            uvs = read(attribute("TEXCOORD_0"), 2, kinds, where + " TEXCOORD_0");
+        }
+        if (!normals.empty() && normals.size() != positions.size()) fail(where + ": NORMAL and POSITION counts differ");
+        if (!uvs.empty() && uvs.size() / 2 != count) fail(where + ": TEXCOORD_0 and POSITION counts differ");
+        const std::vector<uint32_t> triangles = triangle_list(mode, vertex_order(primitive, count, where));
+
+        const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(transform)));
+        const bool mirrored = glm::determinant(glm::dmat3(transform)) < 0.0;  // flips the winding
+        const auto position = [&](uint32_t i) {
+            const glm::dvec3 p(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
+            return glm::dvec3(transform * glm::dvec4(p, 1.0));
+        };
+        // uvs stays one per position: once any primitive has them, the others get (0, 0).
+        if (!uvs.empty() && !any_uvs_) mesh.uvs.resize(mesh.positions.size(), glm::vec2(0.0f));
+        any_uvs_ = any_uvs_ || !uvs.empty();
+        const auto push_vertex = [&](uint32_t i, const glm::dvec3& normal) {
+            mesh.positions.emplace_back(position(i));
+            mesh.normals.emplace_back(normal);
+            if (any_uvs_) mesh.uvs.push_back(uvs.empty() ? glm::vec2(0.0f) : glm::vec2(uvs[2 * i], uvs[2 * i + 1]));
+        };
+        const bool flat = normals.empty();  // the specification asks for flat normals then
+        const auto base = uint32_t(mesh.positions.size());
+        for (uint32_t i = 0; !flat && i < count; ++i) {
+            const glm::dvec3 n(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
+            push_vertex(i, glm::normalize(normal_matrix * n));
+        }
+        for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
+            std::array<uint32_t, 3> tri = {triangles[t], triangles[t + 1], triangles[t + 2]};
+            if (mirrored) std::swap(tri[1], tri[2]);
+            if (!flat) {
+                for (const uint32_t i : tri) mesh.indices.push_back(base + i);
+                continue;
+            }
+            const glm::dvec3 a = position(tri[0]);
+            const glm::dvec3 cross = glm::cross(position(tri[1]) - a, position(tri[2]) - a);
+            const glm::dvec3 n = glm::length(cross) > 0.0 ? glm::normalize(cross) : glm::dvec3(0.0, 1.0, 0.0);
+            for (const uint32_t i : tri) {
+                mesh.indices.push_back(uint32_t(mesh.positions.size()));
+                push_vertex(i, n);
+            }
+        }
+        if (!material_found_ && primitive.material >= 0) take_material(mesh, primitive.material, where);
+    }
+
+    void take_material(Mesh& mesh, int index, const std::string& where) {
+        if (std::size_t(index) >= model_.materials.size()) fail(where + ": no material " + std::to_string(index));
+        material_found_ = true;
+        const tinygltf::PbrMetallicRoughness& pbr = model_.materials[std::size_t(index)].pbrMetallicRoughness;
+        const std::vector<double>& factor = pbr.baseColorFactor;
+        if (factor.size() == 4) mesh.base_color = {factor[0], factor[1], factor[2], factor[3]};
+        const int texture = pbr.baseColorTexture.index;
+        if (texture < 0) return;
+        if (std::size_t(texture) >= model_.textures.size()) fail(where + ": no texture " + std::to_string(texture));
+        const int image = model_.textures[std::size_t(texture)].source;
+        if (image < 0 || std::size_t(image) >= model_.images.size()) fail(where + ": texture without image");
+        const std::string& uri = model_.images[std::size_t(image)].uri;
+        mesh.base_color_texture = uri.empty() || uri.starts_with("data:")
+                                      ? file_.string() + "#images[" + std::to_string(image) + "]"
+                                      : (file_.parent_path() / uri).lexically_normal().string();
+    }
+
+    const std::filesystem::path& file_;
+    const tinygltf::Model& model_;
+    bool material_found_ = false;
+    bool any_uvs_ = false;
+};
+
+// Texture pixels are the renderer's business: keep the image's uri, decode nothing.
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+    return true;
+}
+
+// Whole file as bytes, with errno's reason when it cannot be read (as the scene loader does).
+std::string read_bytes(const std::filesystem::path& file) {
+    errno = 0;
+    const std::unique_ptr<std::FILE, int (*)(std::FILE*)> stream(std::fopen(file.c_str(), "rb"), &std::fclose);
+    const auto fail_open = [&] {
+        throw UserError("cannot open glTF file '" + file.string() + "': " + std::strerror(errno));
+    };
+    if (!stream) fail_open();
+    std::string bytes;
+    char buffer[1 << 16];
+    std::size_t count = 0;
+    while ((count = std::fread(buffer, 1, sizeof buffer, stream.get())) > 0) bytes.append(buffer, count);
+    if (std::ferror(stream.get())) fail_open();
+    return bytes;
+}
+
+}  // namespace
+
+Mesh load_gltf_mesh(const std::filesystem::path& file) {
+    const std::string bytes = read_bytes(file);
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(&skip_image, nullptr);
+    tinygltf::Model model;
+    std::string error, warning;
+    const std::string base_dir = file.parent_path().string();
+    const auto length = static_cast<unsigned int>(bytes.size());
+    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+    const bool loaded = bytes.starts_with("glTF")  // the .glb magic
+                            ? loader.LoadBinaryFromMemory(&model, &error, &warning, data, length, base_dir)
+                            : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), length, base_dir);
+    GltfReader reader(file, model);
+    if (!loaded) {
+        // tinygltf's messages may span lines; a UserError is one line.
+        const std::string reason = error.empty() ? "tinygltf refused it" : error.substr(0, error.find('\n'));
+        reader.fail("malformed glTF: " + reason);
+    }
+    Mesh mesh;
+    if (model.scenes.empty()) {
+        for (std::size_t m = 0; m < model.meshes.size(); ++m) reader.add_mesh(mesh, int(m), glm::dmat4(1.0));
+    } else {
+        const std::size_t scene = model.defaultScene >= 0 ? std::size_t(model.defaultScene) : 0;
+        if (scene >= model.scenes.size()) reader.fail("no scene " + std::to_string(scene));
+        for (const int node : model.scenes[scene].nodes) reader.add_node(mesh, node, glm::dmat4(1.0), 0);
+    }
+    if (mesh.indices.empty()) reader.fail("contains no triangles");
+    update_bounds(mesh);
+    return mesh;
+}
+
+}  // namespace vkw

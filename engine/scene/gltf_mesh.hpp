@@ -1,0 +1,23 @@
+// Loading a glTF 2.0 file (.gltf with embedded or external buffers, or .glb) into one Mesh.
+// The only place tinygltf is included (it is a heavy header): the scene loader and everything
+// else see a plain Mesh.
+#pragma once
+
+#include <filesystem>
+
+#include "engine/scene/mesh.hpp"
+
+namespace vkw {
+
+// Every mesh instanced by the nodes of the default scene (the first scene when none is named,
+// every mesh when the file has no scenes), with node transforms applied, merged into one Mesh
+// in the file's coordinates. Triangle lists, strips and fans are accepted (strips and fans become
+// lists); POINTS and LINES modes are refused. Missing normals are computed flat, as the glTF
+// specification asks. base_color and base_color_texture come from the material of the first
+// primitive that has one (one material per receiver). Texture images are not decoded here.
+//
+// Throws vkw::UserError naming the file for a file that cannot be read, malformed glTF,
+// unsupported content and out-of-bounds data: "glTF file '<path>': <what>".
+Mesh load_gltf_mesh(const std::filesystem::path& file);
+
+}  // namespace vkw

@@ -1,0 +1,106 @@
+// One element of "receivers": a built-in shape (builtin_meshes.hpp) or a glTF mesh
+// (gltf_mesh.hpp) with its transform and albedo, turned into a world-space Mesh. The type
+// decides the shape's fields: those of another type are unknown fields.
+#include <array>
+
+#include "engine/core/errors.hpp"
+#include "engine/scene/angles.hpp"
+#include "engine/scene/builtin_meshes.hpp"
+#include "engine/scene/gltf_mesh.hpp"
+#include "engine/scene/scene_json.hpp"
+
+namespace vkw {
+namespace {
+
+constexpr std::array<Named<ReceiverType>, 5> kTypes = {{
+    {"plane", ReceiverType::Plane},
+    {"box", ReceiverType::Box},
+    {"sphere", ReceiverType::Sphere},
+    {"terrain", ReceiverType::Terrain},
+    {"gltf", ReceiverType::Gltf},
+}};
+
+// gltf "texture": use the material's baseColorTexture, or ignore it (albedo alone).
+constexpr std::array<Named<bool>, 2> kTextureUse = {{{"material", true}, {"none", false}}};
+
+// Every shape field of every type, declared when the type itself is missing.
+constexpr std::array<std::string_view, 8> kShapeFields = {"half_size", "radius", "size", "resolution",
+                                                          "height", "seed", "file", "texture"};
+
+Mesh read_gltf(FieldReader& fields, const std::filesystem::path& base_dir, std::optional<glm::dvec3>& albedo) {
+    const auto file = fields.optional_string("file");
+    const bool use_texture = fields.choice("texture", kTextureUse, true);
+    fields.finish();
+    if (!file) fields.fail("file", "missing required field", "a glTF 2.0 file (.gltf or .glb), relative to the scene");
+    Mesh mesh;
+    try {
+        mesh = load_gltf_mesh(base_dir / *file);
+    } catch (const UserError& error) {
+        fields.fail("file", error.what());
+    }
+    if (!use_texture) mesh.base_color_texture.clear();
+    const glm::dvec3 base_color(mesh.base_color);
+    if (glm::any(glm::lessThan(base_color, glm::dvec3(0.0))) ||
+        glm::any(glm::greaterThan(base_color, glm::dvec3(1.0)))) {
+        fields.fail("file", "the material's baseColorFactor " + format_vec3(base_color) + " is not a valid albedo",
+                    "each component in [0, 1]");
+    }
+    if (!albedo) albedo = base_color;
+    return mesh;
+}
+
+Mesh read_shape(FieldReader& fields, ReceiverType type, const std::filesystem::path& base_dir,
+                std::optional<glm::dvec3>& albedo) {
+    switch (type) {
+        case ReceiverType::Plane:
+            return make_plane_mesh(fields.vec2("half_size", Range::above(0.0, "m")));
+        case ReceiverType::Box:
+            return make_box_mesh(fields.vec3("half_size", Range::above(0.0, "m")));
+        case ReceiverType::Sphere:
+            return make_sphere_mesh(fields.number("radius", Range::above(0.0, "m")));
+        case ReceiverType::Terrain: {
+            const TerrainShape defaults;
+            TerrainShape shape;
+            shape.size = fields.number("size", Range::above(0.0, "m"));
+            shape.resolution = static_cast<uint32_t>(
+                fields.integer("resolution", Range::closed(2.0, 2048.0, "cells per side"), defaults.resolution));
+            shape.height = fields.number("height", Range::at_least(0.0, "m"));
+            shape.seed = static_cast<uint64_t>(
+                fields.integer("seed", Range::closed(0.0, kMaxExactInteger), static_cast<int64_t>(defaults.seed)));
+            fields.finish();  // no mesh from placeholders of missing fields
+            return make_terrain_mesh(shape);
+        }
+        case ReceiverType::Gltf:
+            return read_gltf(fields, base_dir, albedo);
+    }
+    return {};
+}
+
+}  // namespace
+
+Receiver read_receiver(FieldReader& fields, const std::filesystem::path& base_dir) {
+    Receiver receiver;
+    receiver.name = fields.string("name", fields.path_of(""));
+    const auto type = fields.required_choice("type", kTypes);
+    std::optional<glm::dvec3> albedo = fields.optional_vec3("albedo", Range::closed(0.0, 1.0));
+    const glm::dvec3 translation = fields.vec3("translation", Range::any("m"), glm::dvec3(0.0));
+    const glm::dvec3 rotation = fields.vec3("rotation_deg", Range::closed(-360.0, 360.0, "degrees"), glm::dvec3(0.0));
+    const glm::dvec3 scale = fields.vec3("scale", Range::above(0.0), glm::dvec3(1.0));
+    if (!type) {
+        for (const std::string_view key : kShapeFields) fields.declare({key});
+        fields.finish();  // reports a misspelt type, or the missing one
+    }
+    receiver.type = *type;
+    receiver.mesh = read_shape(fields, receiver.type, base_dir, albedo);
+    fields.finish();
+    receiver.albedo = albedo.value_or(receiver.albedo);
+
+    glm::dmat4 object_to_world(euler_xyz_deg(rotation));
+    for (int axis = 0; axis < 3; ++axis) object_to_world[axis] *= scale[axis];
+    object_to_world[3] = glm::dvec4(translation, 1.0);
+    receiver.object_to_world = object_to_world;
+    transform_mesh(receiver.mesh, object_to_world);
+    return receiver;
+}
+
+}  // namespace vkw

@@ -1,0 +1,171 @@
+// The CPU reference renderer against the closed forms of PHYSICS.md for flat water:
+// radiance seen from above (section 3) at view elevations 5, 20, 45 and 90 degrees,
+// the floor's sun irradiance under the water for several sun angles (its caustic
+// layer), Snell's window radius seen from below (section 7), determinism, and a clear
+// refusal of what it does not compute yet.
+#include "engine/core/errors.hpp"
+#include "engine/scene/scene_loader.hpp"
+#include "tools/reference/flat_water_transport.hpp"
+#include "tools/reference/optics.hpp"
+#include "tools/reference/reference_renderer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace vkw::ref {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kIor = 1.333;
+constexpr double kDepth = 1.5;
+
+// Flat water over a grey floor 1.5 m down, constant sky, coastal-like medium with
+// g = 0.9 so that every term of the model contributes.
+Scene calm_scene(double sun_elevation_deg, const std::string& camera = R"("position": [0, 2, 0], "target": [0, 0, -1])") {
+    const std::string text = R"({
+      "camera": {)" + camera + R"(, "fov_y_deg": 60},
+      "sun": {"elevation_deg": )" + std::to_string(sun_elevation_deg) + R"(, "azimuth_deg": 90, "irradiance": [3, 2, 1]},
+      "sky": {"radiance": [0.3, 0.45, 0.7]},
+      "floor": {"height": -1.5, "albedo": [0.6, 0.5, 0.4], "half_extent": 50},
+      "water": {"level": 0, "ior": 1.333, "half_extent": 50},
+      "medium": {"sigma_a": [0.45, 0.06, 0.02], "sigma_s": [0.17, 0.2, 0.234], "g": 0.9}
+    })";
+    return parse_scene(text, "calm_test.json");
+}
+
+double fresnel_t(double cos_i) { return 1.0 - fresnel_reflectance(cos_i, 1.0, kIor); }
+
+// PHYSICS.md section 3, written out here from its pieces: the floor's irradiance
+// E_floor = E_s cos(theta_s) T(theta_s) exp(-sigma_t d / cos(theta_t)) plus skylight,
+// then the view path of section 6 and the surface.
+glm::dvec3 closed_form_from_above(const Scene& scene, const glm::dvec3& view) {
+    const glm::dvec3 s = scene.sun.direction;
+    const double cos_s = -s.y;
+    const double sin_t_sun = std::sqrt(1 - cos_s * cos_s) / kIor, cos_t_sun = std::sqrt(1 - sin_t_sun * sin_t_sun);
+    const glm::dvec3 t_sun{-s.x / std::sqrt(1 - cos_s * cos_s) * sin_t_sun, -cos_t_sun,
+                           -s.z / std::sqrt(1 - cos_s * cos_s) * sin_t_sun};  // refracted sun, same azimuth
+    const double cos_v = -view.y;
+    const double sin_w = std::sqrt(1 - cos_v * cos_v) / kIor, cos_w = std::sqrt(1 - sin_w * sin_w);
+    const glm::dvec3 sigma_t = scene.medium.sigma_t();
+    const glm::dvec3 refracted_view{view.x / std::sqrt(1 - cos_v * cos_v + 1e-300) * sin_w, -cos_w,
+                                    view.z / std::sqrt(1 - cos_v * cos_v + 1e-300) * sin_w};
+    glm::dvec3 radiance;
+    for (int c = 0; c < 3; ++c) {
+        const double e_floor =
+            scene.sun.irradiance[c] * cos_s * fresnel_t(cos_s) * std::exp(-sigma_t[c] * kDepth / cos_t_sun);
+        const double e_sky = kPi * scene.sky.radiance[c] * hemispherical_transmittance(kIor) * std::exp(-sigma_t[c] * kDepth);
+        const double l_behind = scene.floor.albedo[c] * (e_floor + e_sky) / kPi;
+        InScatterInput in{scene.medium.sigma_s[c], sigma_t[c], scene.medium.g, 0.0, kDepth / cos_w,
+                          refracted_view, t_sun, scene.sun.irradiance[c] * cos_s * fresnel_t(cos_s) / cos_t_sun, l_behind};
+        const double l_water = water_path_radiance(in);
+        const double reflectance = 1.0 - fresnel_t(cos_v);
+        radiance[c] = reflectance * scene.sky.radiance[c] + fresnel_t(cos_v) / (kIor * kIor) * l_water;
+    }
+    return radiance;
+}
+
+TEST(reference_flat_water, RadianceFromAboveMatchesSection3) {
+    const Scene scene = calm_scene(60.0);
+    const FlatWaterTransport transport(scene);
+    for (double elevation : {5.0, 20.0, 45.0, 90.0}) {
+        const double e = elevation * kPi / 180.0;
+        // Look along -z (sun toward +x): no sun glint in the reflected direction.
+        const glm::dvec3 view = elevation == 90.0 ? glm::dvec3(0, -1, 0) : glm::dvec3(0, -std::sin(e), -std::cos(e));
+        const PixelRadiance pixel = transport.trace_camera_ray({{0, 2, 0}, view});
+        const glm::dvec3 expected = closed_form_from_above(scene, view);
+        for (int c = 0; c < 3; ++c) {
+            // Both sides are double precision; T_hemi comes from a numerical integral
+            // exact to ~1e-9, which bounds the relative difference.
+            EXPECT_NEAR(pixel.radiance[c], expected[c], 1e-8 * expected[c]) << elevation << " deg, channel " << c;
+        }
+    }
+}
+
+TEST(reference_flat_water, FloorSunIrradianceMatchesSection3) {
+    for (double sun_elevation : {90.0, 60.0, 30.0, 5.0}) {
+        const Scene scene = calm_scene(sun_elevation);
+        const FlatWaterTransport transport(scene);
+        const double cos_s = std::sin(sun_elevation * kPi / 180.0);
+        const double sin_t = std::sqrt(1 - cos_s * cos_s) / kIor, cos_t = std::sqrt(1 - sin_t * sin_t);
+        const glm::dvec3 e = transport.sun_irradiance_under_water({0.3, -kDepth, -2.0}, {0, 1, 0});
+        for (int c = 0; c < 3; ++c) {
+            const double expected = scene.sun.irradiance[c] * cos_s * fresnel_t(cos_s) *
+                                    std::exp(-scene.medium.sigma_t()[c] * kDepth / cos_t);
+            EXPECT_NEAR(e[c], expected, 1e-12 * expected) << "sun " << sun_elevation << " channel " << c;
+        }
+    }
+}
+
+TEST(reference_flat_water, CausticLayerIsTheUniformFloorIrradianceInEveryPixel) {
+    // Under flat water the floor's sun irradiance is the same everywhere (section 3), so
+    // every pixel of the caustic layer must hold it: a pixel that misses it (a floor hit
+    // misclassified as above the water, a self-shadowed point) shows at once.
+    const Scene scene = calm_scene(60.0, R"("position": [0, 2, 0], "target": [0, 0, -1])");
+    const uint32_t width = 64, height = 48;
+    const ImageRGBA32F image = render_reference(scene, {width, height, 0, {}});
+    ASSERT_EQ(image.layers.size(), 1u);
+    ASSERT_EQ(image.layers[0].name, "caustic");
+    const FlatWaterTransport transport(scene);
+    const glm::dvec3 expected = transport.sun_irradiance_under_water({0, -kDepth, 0}, {0, 1, 0});
+    for (size_t pixel = 0; pixel < size_t{width} * height; ++pixel) {
+        for (int c = 0; c < 3; ++c) {
+            // Stored as fp32: half an ulp, 2^-24 relative.
+            ASSERT_NEAR(image.layers[0].rgb[3 * pixel + c], expected[c], std::ldexp(expected[c], -24))
+                << "pixel " << pixel % width << "," << pixel / width << " channel " << c;
+        }
+    }
+}
+
+TEST(reference_flat_water, SnellsWindowRadiusIsFocalLengthTimesTanCritical) {
+    // PHYSICS.md section 7: viewer 2 m down looking straight up, fov 120 degrees, albedo 0,
+    // constant sky, sigma_s = 0, no sun: only the transmitted sky is left.
+    const std::string text = R"({
+      "camera": {"position": [0, -2, 0], "target": [0, 0, 0], "fov_y_deg": 120},
+      "sun": {"elevation_deg": 60, "irradiance": [0, 0, 0]},
+      "sky": {"radiance": [1, 1, 1]},
+      "floor": {"height": -10, "albedo": [0, 0, 0], "half_extent": 100},
+      "water": {"level": 0, "ior": 1.333, "half_extent": 100},
+      "medium": {"sigma_a": [0.01, 0.01, 0.01], "sigma_s": [0, 0, 0], "g": 0}
+    })";
+    const Scene scene = parse_scene(text, "snell_test.json");
+    const uint32_t size = 301;
+    const ImageRGBA32F image = render_reference(scene, {size, size, 0, {}});
+    const int centre = size / 2;
+    const double centre_value = image.pixel(centre, centre)[0];
+    ASSERT_GT(centre_value, 0.0);
+    int radius_px = -1;
+    for (int x = centre; x < int(size); ++x) {
+        if (image.pixel(x, centre)[0] < 1e-3 * centre_value) {
+            radius_px = x - centre;
+            break;
+        }
+    }
+    const double focal_px = (size / 2.0) / std::tan(60.0 * kPi / 180.0);
+    const double expected = focal_px * std::tan(std::asin(1.0 / kIor));
+    EXPECT_NEAR(radius_px, expected, 1.0);  // PHYSICS.md: within one pixel
+}
+
+TEST(reference_flat_water, OutputIsIdenticalForAnyThreadCount) {
+    const Scene scene = calm_scene(45.0);
+    const ImageRGBA32F one = render_reference(scene, {40, 30, 1, {}});
+    const ImageRGBA32F two = render_reference(scene, {40, 30, 2, {}});
+    EXPECT_EQ(one.rgba, two.rgba);
+    EXPECT_EQ(one.layers[0].rgb, two.layers[0].rgb);
+}
+
+TEST(reference_flat_water, RefusesWavyWaterWithAClearMessage) {
+    Scene scene = calm_scene(45.0);
+    scene.water->waves.model = WaveModel::Sum;
+    try {
+        render_reference(scene, {4, 4, 1, {}});
+        FAIL() << "a wavy scene was accepted";
+    } catch (const UserError& error) {
+        EXPECT_NE(std::string(error.what()).find("water.waves.model"), std::string::npos) << error.what();
+    }
+}
+
+}  // namespace
+}  // namespace vkw::ref

@@ -1,0 +1,108 @@
+// Two promises of the frame graph on the device: the finite check names the pass,
+// the resource and the texel of the first NaN/Inf a pass writes; and a culled pass
+// never creates its pipeline (pipeline creation is the costly part on lavapipe).
+#include "engine/core/errors.hpp"
+#include "engine/framegraph/executor.hpp"
+#include "engine/framegraph/pass_context.hpp"
+#include "passes/readback.hpp"
+#include "tests/support/gpu_test.hpp"
+
+#include <string>
+
+namespace vkw::test {
+namespace {
+
+constexpr uint32_t kSize = 16;
+constexpr VkDeviceSize kBytes = VkDeviceSize{kSize} * kSize * 16;
+
+struct PoisonParams {
+    int32_t x, y;
+    uint32_t channel;
+    uint32_t use_infinity;
+};
+
+fg::ImageHandle add_poison_pass(fg::FrameGraph& graph, const std::string& name, PoisonParams params) {
+    struct Data {
+        fg::ImageHandle image;
+    };
+    return graph
+        .add_pass<Data>(
+            name, fg::PassKind::Compute,
+            [&](fg::PassBuilder& builder, Data& d) {
+                d.image = builder.write_storage(builder.create_image(name + " image", {VK_FORMAT_R32G32B32A32_SFLOAT}));
+            },
+            [params](const Data& d, fg::PassContext& context) {
+                ComputePipelineDesc desc;
+                desc.shader = "tests/poison.comp";
+                desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
+                desc.layout.push_constant_bytes = sizeof(PoisonParams);
+                const Pipeline& pipeline = context.pipeline("poison", desc);
+                context.bind(pipeline, {context.storage_image(0, d.image)});
+                context.push_constants(pipeline, params);
+                vkCmdDispatch(context.cmd(), kSize / 8, kSize / 8, 1);
+            })
+        .image;
+}
+
+using FrameGraphChecks = GpuTest;
+
+TEST_F(FrameGraphChecks, FiniteCheckNamesPassResourceAndTexel) {
+    for (const uint32_t infinity : {0u, 1u}) {
+        Buffer readback(context(), {kBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "readback");
+        fg::PipelineStore pipelines;
+        fg::FrameGraph graph;
+        // A clean pass first, then the poisoned one: the report must name the second.
+        const fg::ImageHandle clean = add_poison_pass(graph, "clean", {-1, -1, 0, 0});
+        graph.request_output(clean);
+        const fg::ImageHandle bad = add_poison_pass(graph, "poison", {5, 3, 2, infinity});
+        passes::add_readback_pass(graph, bad, readback.handle(), kBytes);
+        graph.compile(kSize, kSize);
+        fg::FrameExecutor executor(context(), graph, pipelines, {.check_finite = true, .timing = fg::TimingMode::None});
+        try {
+            executor.execute();
+            FAIL() << "the finite check let a non-finite value through";
+        } catch (const InternalError& error) {
+            const std::string message = error.what();
+            EXPECT_NE(message.find("pass 'poison'"), std::string::npos) << message;
+            EXPECT_NE(message.find("'poison image'"), std::string::npos) << message;
+            EXPECT_NE(message.find("texel (5, 3), channel 2"), std::string::npos) << message;
+            EXPECT_NE(message.find(infinity ? "Inf" : "NaN"), std::string::npos) << message;
+        }
+    }
+}
+
+TEST_F(FrameGraphChecks, CulledPassCreatesNoPipeline) {
+    Buffer readback(context(), {kBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "readback");
+    fg::PipelineStore pipelines;
+    fg::FrameNeeds needs;
+    needs.decide(fg::Effect::VolumeCaustics, false, "test: not needed");
+    fg::FrameGraph graph(needs);
+    const fg::ImageHandle used = add_poison_pass(graph, "used", {-1, -1, 0, 0});
+    add_poison_pass(graph, "unread", {-1, -1, 0, 0});  // nothing reads it
+    struct Data {
+        fg::ImageHandle image;
+    };
+    graph.add_pass<Data>(
+        "godrays", fg::PassKind::Compute,
+        [](fg::PassBuilder& builder, Data& d) {
+            builder.serves(fg::Effect::VolumeCaustics);
+            builder.side_effect();  // even a side effect does not keep an unneeded effect's pass
+            d.image = builder.write_storage(builder.create_image("godray image", {VK_FORMAT_R32G32B32A32_SFLOAT}));
+        },
+        [](const Data&, fg::PassContext& context) {
+            context.pipeline("never", ComputePipelineDesc{"tests/poison.comp", {}});
+        });
+    passes::add_readback_pass(graph, used, readback.handle(), kBytes);
+    graph.compile(kSize, kSize);
+    fg::FrameExecutor executor(context(), graph, pipelines, {.check_finite = true, .timing = fg::TimingMode::None});
+    executor.execute();
+    EXPECT_EQ(pipelines.size(), 1u);
+    EXPECT_TRUE(pipelines.contains("used/poison"));
+    EXPECT_FALSE(pipelines.contains("unread/poison"));
+    EXPECT_FALSE(pipelines.contains("godrays/never"));
+    ASSERT_EQ(graph.compiled().culled.size(), 2u);
+    EXPECT_EQ(graph.compiled().culled[1].reason, "effect 'godrays' not needed: test: not needed");
+}
+
+}  // namespace
+}  // namespace vkw::test

@@ -1,0 +1,132 @@
+// load_gltf_mesh on glTF files the test writes itself: counts, bounds, flat normals, strips,
+// node transforms, materials, and the refusals (POINTS, LINES, missing file, malformed file,
+// out-of-range index), then a glTF receiver resolved relative to its scene file.
+#include <gtest/gtest.h>
+
+#include "engine/scene/gltf_mesh.hpp"
+#include "engine/scene/scene_loader.hpp"
+#include "gltf_test_files.hpp"
+#include "scene_test_support.hpp"
+
+namespace vkw {
+namespace {
+
+using test::GltfSpec;
+
+std::filesystem::path write_gltf(const std::string& test_name, const GltfSpec& spec) {
+    return test::write_text(test::scratch_dir(test_name) / "mesh.gltf", test::gltf_text(spec));
+}
+
+std::string load_error(const std::filesystem::path& file) {
+    return test::user_error_of([&] { load_gltf_mesh(file); });
+}
+
+TEST(scene_gltf, IndexedMeshKeepsCountsAndBounds) {
+    GltfSpec spec = test::pyramid();
+    for (int v = 0; v < 5; ++v) spec.normals.insert(spec.normals.end(), {0.0f, 2.0f, 0.0f});  // normalised by the loader
+    const Mesh mesh = load_gltf_mesh(write_gltf("indexed", spec));
+    EXPECT_EQ(mesh.positions.size(), 5u);
+    EXPECT_EQ(mesh.normals.size(), 5u);
+    EXPECT_TRUE(mesh.uvs.empty());
+    EXPECT_EQ(mesh.indices, std::vector<uint32_t>(spec.indices.begin(), spec.indices.end()));
+    EXPECT_EQ(mesh.bounds_min, glm::dvec3(-1.0, 0.0, -1.0));
+    EXPECT_EQ(mesh.bounds_max, glm::dvec3(1.0, 2.0, 1.0));
+    EXPECT_EQ(mesh.normals[3], glm::vec3(0.0f, 1.0f, 0.0f));
+    EXPECT_EQ(mesh.base_color, glm::dvec4(1.0));  // no material: glTF's default white
+    EXPECT_EQ(mesh.base_color_texture, "");
+}
+
+TEST(scene_gltf, MissingNormalsAreComputedFlatAndOutward) {
+    const Mesh mesh = load_gltf_mesh(write_gltf("flat", test::pyramid()));
+    ASSERT_EQ(mesh.positions.size(), 18u);  // 3 per triangle
+    ASSERT_EQ(mesh.indices.size(), 18u);
+    const glm::dvec3 centre(0.0, 0.5, 0.0);
+    for (std::size_t t = 0; t < 6; ++t) {
+        const glm::dvec3 a(mesh.positions[mesh.indices[3 * t]]), b(mesh.positions[mesh.indices[3 * t + 1]]),
+            c(mesh.positions[mesh.indices[3 * t + 2]]);
+        const glm::dvec3 n(mesh.normals[mesh.indices[3 * t]]);
+        EXPECT_NEAR(glm::length(n), 1.0, 1e-6);
+        EXPECT_GT(glm::dot(n, (a + b + c) / 3.0 - centre), 0.0) << "triangle " << t;
+        EXPECT_NEAR(glm::dot(n, glm::normalize(glm::cross(b - a, c - a))), 1.0, 1e-6) << "triangle " << t;
+    }
+    EXPECT_EQ(mesh.bounds_max, glm::dvec3(1.0, 2.0, 1.0));
+}
+
+TEST(scene_gltf, StripsAndFansBecomeCounterClockwiseLists) {
+    GltfSpec strip;  // a unit square in y = 0, as a strip of two triangles, facing +y
+    strip.positions = {0, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0, 1};
+    strip.mode = 5;
+    const Mesh from_strip = load_gltf_mesh(write_gltf("strip", strip));
+    GltfSpec fan = strip;
+    fan.positions = {0, 0, 0, 0, 0, 1, 1, 0, 1, 1, 0, 0};
+    fan.mode = 6;
+    const Mesh from_fan = load_gltf_mesh(write_gltf("fan", fan));
+    for (const Mesh* mesh : {&from_strip, &from_fan}) {
+        ASSERT_EQ(mesh->indices.size(), 6u);
+        for (const glm::vec3& n : mesh->normals) EXPECT_EQ(n, glm::vec3(0.0f, 1.0f, 0.0f));
+    }
+}
+
+TEST(scene_gltf, NodeTransformAndMaterialAreApplied) {
+    GltfSpec spec = test::pyramid();
+    spec.node_extra = R"("translation": [10, 0, 0], "scale": [2, 2, 2], )";
+    spec.material = R"({ "pbrMetallicRoughness": { "baseColorFactor": [0.25, 0.5, 0.75, 1], "baseColorTexture": { "index": 0 } } })";
+    spec.top_extra = R"( "textures": [{ "source": 0 }], "images": [{ "uri": "stone.png" }],)";
+    const std::filesystem::path file = write_gltf("transform", spec);
+    const Mesh mesh = load_gltf_mesh(file);
+    EXPECT_EQ(mesh.bounds_min, glm::dvec3(8.0, 0.0, -2.0));
+    EXPECT_EQ(mesh.bounds_max, glm::dvec3(12.0, 4.0, 2.0));
+    EXPECT_EQ(mesh.base_color, glm::dvec4(0.25, 0.5, 0.75, 1.0));
+    EXPECT_EQ(mesh.base_color_texture, (file.parent_path() / "stone.png").string());
+}
+
+TEST(scene_gltf, PointsAndLinesAreRefusedNamingFileMeshAndMode) {
+    GltfSpec spec = test::pyramid();
+    spec.mode = 0;
+    const std::filesystem::path points = write_gltf("points", spec);
+    EXPECT_EQ(load_error(points), "glTF file '" + points.string() +
+                                      "': mesh 'Test' (meshes[0]), primitive 0: mode POINTS (0) is not supported "
+                                      "(accepted: TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN)");
+    spec.mode = 1;
+    EXPECT_NE(load_error(write_gltf("lines", spec)).find("mode LINES (1) is not supported"), std::string::npos);
+}
+
+TEST(scene_gltf, MissingAndMalformedFilesAreRefusedNamingThePath) {
+    const std::filesystem::path missing = test::scratch_dir("missing") / "nothing.gltf";
+    EXPECT_EQ(load_error(missing), "cannot open glTF file '" + missing.string() + "': No such file or directory");
+    const std::filesystem::path malformed = test::write_text(test::scratch_dir("malformed") / "bad.gltf", "{ not json");
+    const std::string message = load_error(malformed);
+    EXPECT_TRUE(message.starts_with("glTF file '" + malformed.string() + "': malformed glTF")) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+TEST(scene_gltf, OutOfRangeIndexIsRefused) {
+    GltfSpec spec = test::pyramid();
+    spec.indices[4] = 9;
+    EXPECT_NE(load_error(write_gltf("bad_index", spec)).find("primitive 0: index 9 >= vertex count 5"), std::string::npos);
+}
+
+TEST(scene_gltf, ReceiverFileIsRelativeToTheSceneFile) {
+    const std::filesystem::path dir = test::scratch_dir("receiver");
+    std::filesystem::create_directories(dir / "assets");
+    test::write_text(dir / "assets/pyramid.gltf", test::gltf_text(test::pyramid()));
+    const std::string scene_text = R"({ "camera": { "position": [0, 1, 3], "target": [0, 0, 0] },
+        "sun": { "elevation_deg": 45 }, "sky": { "radiance": [1, 1, 1] },
+        "receivers": [{ "type": "gltf", "file": "assets/pyramid.gltf", "translation": [0, -1, 0], "albedo": [0.2, 0.3, 0.4] },
+                      { "type": "gltf", "file": "assets/none.gltf" }] })";
+    const std::filesystem::path scene_file = test::write_text(dir / "scene.json", scene_text);
+    const std::string message = test::user_error_of([&] { load_scene(scene_file); });
+    EXPECT_EQ(message, scene_file.string() + ": receivers[1].file: cannot open glTF file '" +
+                           (dir / "assets/none.gltf").string() + "': No such file or directory");
+
+    const Scene scene = load_scene(scene_file, {"receivers[1]=null"});
+    ASSERT_EQ(scene.receivers.size(), 1u);
+    const Receiver& receiver = scene.receivers[0];
+    EXPECT_EQ(receiver.name, "receivers[0]");
+    EXPECT_EQ(receiver.albedo, glm::dvec3(0.2, 0.3, 0.4));  // given: overrides the material's white
+    EXPECT_EQ(receiver.mesh.bounds_min, glm::dvec3(-1.0, -1.0, -1.0));
+    EXPECT_EQ(receiver.mesh.bounds_max, glm::dvec3(1.0, 1.0, 1.0));
+}
+
+}  // namespace
+}  // namespace vkw

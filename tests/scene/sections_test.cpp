@@ -1,0 +1,96 @@
+// The smaller sections: the sky's gradient model, the camera's direction form, effect
+// settings named as the frame graph names its effects, and overrides into arrays.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "engine/framegraph/frame_needs.hpp"
+#include "engine/scene/scene_loader.hpp"
+#include "scene_test_support.hpp"
+
+namespace vkw {
+namespace {
+
+Scene with(const std::vector<std::string>& overrides) { return parse_scene(test::kMinimalScene, "min.json", overrides); }
+
+TEST(scene_sky, GradientFormulaAndItsAverage) {
+    const Sky sky = with({"sky.radiance=null", "sky.model=gradient", "sky.zenith=[0.1,0.2,0.4]", "sky.horizon=[0.5,0.6,0.7]",
+                          "sky.exponent=2"})
+                        .sky;
+    EXPECT_EQ(sky.model, SkyModel::Gradient);
+    EXPECT_EQ(sky.ground, sky.horizon);  // default: the horizon continued downward
+    EXPECT_EQ(sky_radiance(sky, {0.0, 1.0, 0.0}), sky.zenith);
+    EXPECT_EQ(sky_radiance(sky, {1.0, 0.0, 0.0}), sky.horizon);
+    EXPECT_EQ(sky_radiance(sky, {0.0, -1.0, 0.0}), sky.ground);
+    // dir.y = 0.5, exponent 2: weight 0.25 on the zenith.
+    const glm::dvec3 mid = sky_radiance(sky, {std::sqrt(0.75), 0.5, 0.0});
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(mid[c], 0.75 * sky.horizon[c] + 0.25 * sky.zenith[c], 1e-15);
+    // Closed-form average against a midpoint quadrature of 2 * integral of L(mu) mu dmu.
+    glm::dvec3 quadrature(0.0);
+    const int steps = 100000;
+    for (int i = 0; i < steps; ++i) {
+        const double mu = (i + 0.5) / steps;
+        quadrature += 2.0 * sky_radiance(sky, {std::sqrt(1.0 - mu * mu), mu, 0.0}) * mu / double(steps);
+    }
+    const glm::dvec3 average = sky_average_radiance(sky);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(average[c], quadrature[c], 1e-9);
+    // A constant sky's average is its radiance.
+    EXPECT_EQ(sky_average_radiance(with({}).sky), glm::dvec3(0.3, 0.4, 0.5));
+}
+
+TEST(scene_sky, GradientFieldsBelongToTheGradientModel) {
+    const std::string message = test::user_error_of([] { with({"sky.zenith=[1,1,1]"}); });
+    EXPECT_NE(message.find("sky.zenith: unknown field"), std::string::npos) << message;
+    EXPECT_NE(message.find("(accepted: model, radiance)"), std::string::npos) << message;
+}
+
+TEST(scene_camera, DirectionFormLooksAlongTheNormalisedVector) {
+    const Camera camera = with({"camera.target=null", "camera.direction=[0,-3,-4]"}).camera;
+    const glm::dvec3 expected = camera.position + glm::dvec3(0.0, -0.6, -0.8);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(camera.target[c], expected[c], 1e-15);
+    EXPECT_NE(test::user_error_of([] { with({"camera.target=null", "camera.direction=[0,0,0]"}); })
+                  .find("camera.direction: [0, 0, 0] has no direction (accepted: a non-zero vector)"),
+              std::string::npos);
+}
+
+TEST(scene_effects, NamedExactlyAsTheFrameGraphNamesThem) {
+    for (std::size_t i = 0; i < kEffectCount; ++i) {
+        const auto effect = static_cast<fg::Effect>(i);
+        const std::string name = fg::effect_name(effect);
+        SCOPED_TRACE(name);
+        const Scene scene = with({"effects." + name + ".mode=off"});
+        for (std::size_t j = 0; j < kEffectCount; ++j) {
+            EXPECT_EQ(scene.effects.settings[j].mode, j == i ? EffectMode::Off : EffectMode::Auto);
+        }
+        EXPECT_EQ(with({"effects." + name + ".mode=on"}).effects[effect].mode, EffectMode::On);
+        EXPECT_EQ(with({"effects." + name + "={}"}).effects[effect].mode, EffectMode::Auto);
+    }
+}
+
+TEST(scene_overrides, ArrayElementsByIndex) {
+    const std::string text = R"({ "camera": { "position": [0, 1, 3], "target": [0, 0, 0] },
+        "sun": { "elevation_deg": 45 }, "sky": { "radiance": [1, 1, 1] },
+        "receivers": [{ "type": "sphere", "radius": 1 }, { "type": "sphere", "radius": 2 }] })";
+    const Scene scene = parse_scene(text, "r.json", {"receivers[1].radius=0.5", "sky.radiance[2]=3"});
+    EXPECT_NEAR(scene.receivers[1].mesh.bounds_max.y, 0.5, 1e-7);
+    EXPECT_EQ(scene.sky.radiance, glm::dvec3(1.0, 1.0, 3.0));
+    EXPECT_EQ(parse_scene(text, "r.json", {"receivers[0]=null"}).receivers.size(), 1u);
+
+    const std::string past_end = test::user_error_of([&] { parse_scene(text, "r.json", {"receivers[2].radius=1"}); });
+    EXPECT_NE(past_end.find("r.json: receivers[2]: override 'receivers[2].radius=1' indexes past the end of an array "
+                            "of 2 elements (accepted: an index below 2)"),
+              std::string::npos)
+        << past_end;
+    const std::string not_array = test::user_error_of([&] { parse_scene(text, "r.json", {"camera[0]=1"}); });
+    EXPECT_NE(not_array.find("camera: override 'camera[0]=1' indexes a value that is not an array"), std::string::npos)
+        << not_array;
+    const std::string bad_syntax = test::user_error_of([&] { parse_scene(text, "r.json", {"receivers[x].radius=1"}); });
+    EXPECT_NE(bad_syntax.find("malformed [index]"), std::string::npos) << bad_syntax;
+    // An error inside an overridden element names the override.
+    const std::string range = test::user_error_of([&] { parse_scene(text, "r.json", {"receivers[0].radius=0"}); });
+    EXPECT_EQ(range, "r.json: receivers[0].radius: 0 is out of range (accepted: value > 0 m) "
+                     "[from override 'receivers[0].radius=0']");
+}
+
+}  // namespace
+}  // namespace vkw

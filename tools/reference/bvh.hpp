@@ -1,0 +1,55 @@
+// A bounding volume hierarchy over the triangles of every receiver, in double
+// precision, for the reference renderer's exact ray queries (closest hit and
+// any-hit for shadows).
+#pragma once
+
+#include "engine/scene/mesh.hpp"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace vkw::ref {
+
+struct Ray {
+    glm::dvec3 origin;
+    glm::dvec3 direction;  // unit
+};
+
+struct TriangleHit {
+    double distance;
+    uint32_t receiver;     // index of the mesh it belongs to
+    glm::dvec3 normal;     // interpolated shading normal, unit, facing the ray
+};
+
+class TriangleBvh {
+public:
+    // meshes[i] is receiver i; meshes are in world space.
+    explicit TriangleBvh(const std::vector<const Mesh*>& meshes);
+
+    std::optional<TriangleHit> closest_hit(const Ray& ray, double max_distance) const;
+    bool any_hit(const Ray& ray, double max_distance) const;
+    size_t triangle_count() const { return triangles_.size(); }
+
+private:
+    struct Triangle {
+        glm::dvec3 a, b, c;     // positions
+        glm::dvec3 na, nb, nc;  // vertex normals
+        uint32_t receiver;
+    };
+    struct Node {
+        glm::dvec3 lo, hi;
+        uint32_t first, count;  // leaf: triangles [first, first + count); inner: count == 0
+        uint32_t left, right;
+    };
+    uint32_t build(uint32_t first, uint32_t count);
+    template <class OnHit>
+    void traverse(const Ray& ray, double& max_distance, OnHit&& on_hit) const;
+
+    std::vector<Triangle> triangles_;
+    std::vector<Node> nodes_;
+};
+
+}  // namespace vkw::ref

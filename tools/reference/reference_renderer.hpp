@@ -1,0 +1,30 @@
+// The CPU reference renderer: one ray through each pixel's centre (the real-time
+// renderer also evaluates at pixel centres), traced exactly through the model in
+// double precision, on every core, deterministic (no random numbers yet: the flat-water
+// transport is closed form). The image carries the layer `caustic`: the sun's
+// irradiance on the receiver each pixel sees under the water, 0 elsewhere.
+#pragma once
+
+#include "engine/image/image.hpp"
+#include "engine/scene/scene.hpp"
+#include "tools/reference/bvh.hpp"
+
+#include <cstdint>
+#include <functional>
+
+namespace vkw::ref {
+
+struct ReferenceOptions {
+    uint32_t width = 400;
+    uint32_t height = 300;
+    unsigned threads = 0;                        // 0: every hardware thread
+    std::function<void(double)> progress;        // called with the finished fraction
+};
+
+// The primary ray through pixel (x, y)'s centre, row 0 at the top: the same camera
+// convention as the real-time renderer (engine/render/frame_constants.cpp).
+Ray camera_ray(const Camera& camera, uint32_t width, uint32_t height, double x, double y);
+
+ImageRGBA32F render_reference(const Scene& scene, const ReferenceOptions& options);
+
+}  // namespace vkw::ref

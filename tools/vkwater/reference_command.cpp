@@ -1,0 +1,72 @@
+// vkwater reference SCENE --out ref.exr: the CPU reference renderer of the model
+// (PHYSICS.md section 1), for measuring the real-time renderer's error.
+#include "engine/core/errors.hpp"
+#include "engine/image/exr_io.hpp"
+#include "engine/image/file_paths.hpp"
+#include "engine/scene/scene_loader.hpp"
+#include "tools/reference/reference_renderer.hpp"
+#include "tools/vkwater/commands.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+namespace vkw::cli {
+namespace {
+
+struct ReferenceArgs {
+    std::string scene;
+    std::string out;
+    uint32_t width = 400;
+    uint32_t height = 300;
+    unsigned threads = 0;
+    std::vector<std::string> overrides;
+};
+
+int run_reference(const ReferenceArgs& args) {
+    const Scene scene = load_scene(args.scene, args.overrides);
+    require_writable_file_path(args.out);
+    ref::ReferenceOptions options;
+    options.width = args.width;
+    options.height = args.height;
+    options.threads = args.threads;
+    // A progress bar only on a terminal: logs and CI output stay clean.
+    if (::isatty(STDERR_FILENO)) {
+        options.progress = [](double fraction) {
+            const int filled = static_cast<int>(fraction * 40);
+            std::fprintf(stderr, "\r[%-40.*s] %3d%%", filled, "########################################",
+                         static_cast<int>(fraction * 100));
+            if (fraction >= 1.0) std::fprintf(stderr, "\n");
+        };
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const ImageRGBA32F image = ref::render_reference(scene, options);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    write_exr(args.out, image);
+    std::printf("wrote %s (%ux%u, reference, layers RGBA + caustic) in %.2f s\n", args.out.c_str(), args.width,
+                args.height, seconds);
+    return kExitOk;
+}
+
+}  // namespace
+
+Run add_reference_command(CLI::App& app) {
+    auto args = std::make_shared<ReferenceArgs>();
+    CLI::App* command = app.add_subcommand("reference", "Render a scene with the CPU reference renderer (ground truth)");
+    command->add_option("scene", args->scene, "Scene file (JSON)")->required();
+    command->add_option("--out,-o", args->out, "Output OpenEXR file (RGBA and the caustic layer)")->required();
+    command->add_option("--width", args->width, "Image width in pixels")
+        ->check(CLI::Range(1u, 16384u))
+        ->capture_default_str();
+    command->add_option("--height", args->height, "Image height in pixels")
+        ->check(CLI::Range(1u, 16384u))
+        ->capture_default_str();
+    command->add_option("--threads", args->threads, "Worker threads (0: every hardware thread)")
+        ->capture_default_str();
+    command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
+    return [args] { return run_reference(*args); };
+}
+
+}  // namespace vkw::cli
