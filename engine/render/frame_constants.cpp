@@ -16,6 +16,12 @@ FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t
     constants.sun_direction = glm::vec4(glm::vec3(scene.sun.direction), sun_up ? 1.0f : 0.0f);
     constants.sun_irradiance = glm::vec4(glm::vec3(scene.sun.irradiance), 0.0f);
     constants.sky_radiance = glm::vec4(glm::vec3(scene.sky.radiance), 0.0f);
+    constants.sky_zenith = glm::vec4(glm::vec3(scene.sky.zenith), 0.0f);
+    constants.sky_horizon = glm::vec4(glm::vec3(scene.sky.horizon), 0.0f);
+    constants.sky_ground = glm::vec4(glm::vec3(scene.sky.ground), 0.0f);
+    constants.sky_params = glm::vec4(scene.sky.model == SkyModel::Gradient ? 1.0f : 0.0f,
+                                     static_cast<float>(scene.sky.exponent), 0.0f, 0.0f);
+    constants.sky_average = glm::vec4(glm::vec3(sky_average_radiance(scene.sky)), 0.0f);
     constants.sun_disk = glm::vec4(static_cast<float>(std::cos(glm::radians(kSunDiskAngularRadiusDeg))),
                                    static_cast<float>(kSunDiskSolidAngle), 0.0f, 0.0f);
     constants.floor_plane = glm::vec4(static_cast<float>(scene.floor.height),

@@ -22,6 +22,11 @@ struct alignas(16) FrameConstants {
     glm::vec4 sun_direction;   // w: 1 if above the horizon
     glm::vec4 sun_irradiance;
     glm::vec4 sky_radiance;
+    glm::vec4 sky_zenith;
+    glm::vec4 sky_horizon;
+    glm::vec4 sky_ground;
+    glm::vec4 sky_params;      // x: model (0 constant, 1 gradient), y: exponent
+    glm::vec4 sky_average;
     glm::vec4 sun_disk;        // x: cos(angular radius), y: solid angle
     glm::vec4 floor_plane;     // x: height, y: half extent
     glm::vec4 floor_albedo;

@@ -9,7 +9,12 @@ layout(set = 0, binding = 0, std140) uniform FrameConstants {
     vec4 camera_position;     // xyz, metres
     vec4 sun_direction;       // xyz: unit direction the sunlight travels (downward); w: 1 if above the horizon
     vec4 sun_irradiance;      // rgb: W m^-2 on a plane normal to the beam
-    vec4 sky_radiance;        // rgb: constant sky radiance, W m^-2 sr^-1
+    vec4 sky_radiance;        // rgb: constant sky radiance, W m^-2 sr^-1 (sky model 0)
+    vec4 sky_zenith;          // rgb: gradient sky straight up (sky model 1)
+    vec4 sky_horizon;         // rgb: gradient sky at the horizon
+    vec4 sky_ground;          // rgb: every direction below the horizon
+    vec4 sky_params;          // x: model (0 constant, 1 gradient), y: gradient exponent
+    vec4 sky_average;         // rgb: L_sky_avg (PHYSICS.md section 1), computed on the CPU
     vec4 sun_disk;            // x: cos of the disk's angular radius, y: its solid angle (sr)
     vec4 floor_plane;         // x: height y of the floor, y: half extent
     vec4 floor_albedo;        // rgb

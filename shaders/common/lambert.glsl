@@ -10,7 +10,7 @@ const float PI = 3.14159265358979323846;
 vec3 receiver_irradiance_above_water(vec3 normal) {
     bool sun_up = frame.sun_direction.w > 0.5;
     float cos_sun = sun_up ? max(0.0, dot(normal, -frame.sun_direction.xyz)) : 0.0;
-    return frame.sun_irradiance.rgb * cos_sun + PI * frame.sky_radiance.rgb;
+    return frame.sun_irradiance.rgb * cos_sun + PI * frame.sky_average.rgb;
 }
 
 vec3 lambert_radiance(vec3 albedo, vec3 irradiance) {
