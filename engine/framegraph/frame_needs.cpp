@@ -2,19 +2,6 @@
 
 namespace vkw::fg {
 
-const char* effect_name(Effect effect) {
-    switch (effect) {
-        case Effect::Water: return "water";
-        case Effect::UnderwaterView: return "underwater_view";
-        case Effect::Reflection: return "reflection";
-        case Effect::Refraction: return "refraction";
-        case Effect::SurfaceCaustics: return "caustics";
-        case Effect::VolumeCaustics: return "godrays";
-        case Effect::CausticBlur: return "caustic_blur";
-    }
-    return "?";
-}
-
 bool FrameNeeds::needs(Effect effect) const {
     const EffectDecision* decision = find(effect);
     return decision == nullptr || decision->needed;

@@ -4,6 +4,7 @@
 // frame does not need, and records that decision as the reason.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -20,7 +21,26 @@ enum class Effect : uint8_t {
     CausticBlur,      // blur of the caustic target
 };
 
-const char* effect_name(Effect effect);
+// Every effect, in declaration order, and its name in scene files (effects.<name>) and
+// reports. constexpr in this header so that the scene loader can use them without
+// linking the frame graph.
+inline constexpr std::array<Effect, 7> kAllEffects = {Effect::Water,           Effect::UnderwaterView,
+                                                      Effect::Reflection,      Effect::Refraction,
+                                                      Effect::SurfaceCaustics, Effect::VolumeCaustics,
+                                                      Effect::CausticBlur};
+
+constexpr const char* effect_name(Effect effect) {
+    switch (effect) {
+        case Effect::Water: return "water";
+        case Effect::UnderwaterView: return "underwater_view";
+        case Effect::Reflection: return "reflection";
+        case Effect::Refraction: return "refraction";
+        case Effect::SurfaceCaustics: return "caustics";
+        case Effect::VolumeCaustics: return "godrays";
+        case Effect::CausticBlur: return "caustic_blur";
+    }
+    return "?";
+}
 
 struct EffectDecision {
     Effect effect;

@@ -1,5 +1,5 @@
 // The "effects" section of the scene schema: one optional object per frame-graph effect, named
-// as vkw::fg::effect_name() names it (tests/scene check the two agree), each with a mode.
+// as vkw::fg::effect_name() names it, each with a mode.
 #include <array>
 
 #include "engine/scene/scene_json.hpp"
@@ -7,15 +7,13 @@
 namespace vkw {
 namespace {
 
-constexpr std::array<Named<fg::Effect>, kEffectCount> kEffects = {{
-    {"water", fg::Effect::Water},
-    {"underwater_view", fg::Effect::UnderwaterView},
-    {"reflection", fg::Effect::Reflection},
-    {"refraction", fg::Effect::Refraction},
-    {"caustics", fg::Effect::SurfaceCaustics},
-    {"godrays", fg::Effect::VolumeCaustics},
-    {"caustic_blur", fg::Effect::CausticBlur},
-}};
+// The effect names as the reader's choice table, built from the frame graph's own list.
+constexpr std::array<Named<fg::Effect>, kEffectCount> effect_names() {
+    std::array<Named<fg::Effect>, kEffectCount> names{};
+    for (size_t i = 0; i < kEffectCount; ++i) names[i] = {fg::effect_name(fg::kAllEffects[i]), fg::kAllEffects[i]};
+    return names;
+}
+constexpr std::array<Named<fg::Effect>, kEffectCount> kEffects = effect_names();
 
 constexpr std::array<Named<EffectMode>, 3> kModes = {{
     {"auto", EffectMode::Auto},

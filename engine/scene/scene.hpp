@@ -100,7 +100,7 @@ struct EffectSettings {
 };
 
 // One entry per fg::Effect, indexed by the enum (CausticBlur is its last value).
-inline constexpr std::size_t kEffectCount = static_cast<std::size_t>(fg::Effect::CausticBlur) + 1;
+inline constexpr std::size_t kEffectCount = fg::kAllEffects.size();
 
 struct EffectsSettings {
     std::array<EffectSettings, kEffectCount> settings{};

@@ -25,9 +25,6 @@ constexpr std::array<std::string_view, 10> kModelFields = {
     "components", "allow_folding", "resolution", "patch_size", "wind_speed", "wind_direction_deg",
     "spectrum",   "fetch",         "amplitude_scale", "choppiness"};
 
-// Rounding slack when summing steepness values that add up to exactly 1 on paper.
-constexpr double kSteepnessSlack = 1e-12;
-
 WaveComponent read_component(FieldReader& fields) {
     const WaveComponent defaults;
     WaveComponent wave;
@@ -50,9 +47,8 @@ void read_sum(FieldReader& fields, WaveSettings& waves) {
         const std::string what = fields.has("components") ? "is empty" : "missing required field";
         fields.fail("components", what, "an array of at least one wave component");
     }
-    double steepness = 0.0;
-    for (const WaveComponent& wave : waves.components) steepness += wave.steepness;
-    if (steepness > 1.0 + kSteepnessSlack && !waves.allow_folding) {
+    const double steepness = steepness_sum(waves.components);
+    if (steepness_folds(steepness) && !waves.allow_folding) {
         fields.fail("components",
                     "the Gerstner steepness values sum to " + format_number(steepness) + ", so the surface folds",
                     "sum of steepness <= 1, or allow_folding: true");

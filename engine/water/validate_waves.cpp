@@ -12,10 +12,6 @@ namespace vkw {
 
 namespace {
 
-// Slack on the steepness sum, so that components entered as exact fractions of 1
-// (ten waves of 0.1 sum to 0.9999999999999999 or 1.0000000000000002) are accepted.
-constexpr double kSteepnessSumSlack = 1e-12;
-
 // Shortest text that reads back as the same double.
 std::string number(double value) {
     char buffer[64];
@@ -55,7 +51,7 @@ void validate_components(const WaveSettings& settings) {
         require(w.steepness >= 0.0, wave_field(i, "steepness"), w.steepness,
                 "value >= 0 (0: sine; > 0: Gerstner)");
         steepness_sum += w.steepness;
-        if (!settings.allow_folding && steepness_sum > 1.0 + kSteepnessSumSlack) {
+        if (!settings.allow_folding && steepness_folds(steepness_sum)) {
             throw UserError(wave_field(i, "steepness") + " = " + number(w.steepness) +
                             ": the steepness of water.waves.components[0.." + std::to_string(i) +
                             "] sums to " + number(steepness_sum) +

@@ -56,4 +56,18 @@ struct WaveSettings {
     bool allow_folding = false;             // lets Gerstner steepness sum exceed 1
 };
 
+// Gerstner waves fold (points overtake each other) when their steepness values sum to
+// more than 1. The slack accepts components entered as exact fractions of 1 (ten waves
+// of 0.1 sum to 1.0000000000000002). The one rule, used by the scene loader and by
+// validate_waves.
+inline constexpr double kSteepnessSumSlack = 1e-12;
+
+inline double steepness_sum(const std::vector<WaveComponent>& components) {
+    double sum = 0.0;
+    for (const WaveComponent& wave : components) sum += wave.steepness;
+    return sum;
+}
+
+inline bool steepness_folds(double sum) { return sum > 1.0 + kSteepnessSumSlack; }
+
 }  // namespace vkw
