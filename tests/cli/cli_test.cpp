@@ -118,6 +118,18 @@ TEST(cli, UnknownDeviceNameListsTheAvailableOnes) {
                          1, "available:");
 }
 
+TEST(cli, CompareAnImageWithItselfGivesZeroErrors) {
+    const fs::path image = scratch("compare.exr");
+    ASSERT_EQ(run_vkwater("reference " + std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json --width 32 --height 24 --out " +
+                          image.string()).exit_code, 0);
+    const CommandRun run = run_vkwater("compare " + image.string() + " " + image.string());
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    for (const char* line : {"relMSE 0\n", "FLIP 0\n", "bias 0\n", "L*u*v* 0\n"}) {
+        EXPECT_NE(run.output.find(line), std::string::npos) << line << " missing in:\n" << run.output;
+    }
+    expect_clean_failure(run_vkwater("compare " + image.string() + " /nonexistent.exr"), 1, "/nonexistent.exr");
+}
+
 TEST(cli, PassesPrintsDecisionsOrderAndMemory) {
     const CommandRun run = run_vkwater("passes " + kPool + " --barriers --dot " + scratch("graph.dot").string());
     EXPECT_EQ(run.exit_code, 0) << run.output;

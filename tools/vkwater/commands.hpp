@@ -23,5 +23,6 @@ void add_device_options(CLI::App& command, DeviceOptions& options);
 Run add_render_command(CLI::App& app);
 Run add_passes_command(CLI::App& app);
 Run add_reference_command(CLI::App& app);
+Run add_compare_command(CLI::App& app);
 
 }  // namespace vkw::cli

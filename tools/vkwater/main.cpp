@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     add(vkw::cli::add_render_command);
     add(vkw::cli::add_passes_command);
     add(vkw::cli::add_reference_command);
+    add(vkw::cli::add_compare_command);
 
     try {
         app.parse(argc, argv);
