@@ -44,7 +44,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options) 
                         " is out of range (accepted: 1 to " + std::to_string(max_size) + " on '" +
                         context_.device_name() + "')");
     }
-    fg::FrameNeeds needs = decide_frame_needs(scene);
+    fg::FrameNeeds needs = decide_frame_needs(scene, double(options.width) / double(options.height));
     const std::string configuration = std::to_string(options.width) + "x" + std::to_string(options.height) + " " +
                                       needs.key() + " " + std::to_string(int(options.recording)) + " " +
                                       std::to_string(int(options.check_finite)) + " " +

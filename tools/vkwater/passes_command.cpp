@@ -27,7 +27,7 @@ struct PassesArgs {
 
 int run_passes(const PassesArgs& args) {
     const Scene scene = load_scene(args.scene, args.overrides);
-    fg::FrameGraph graph(decide_frame_needs(scene));
+    fg::FrameGraph graph(decide_frame_needs(scene, double(args.width) / double(args.height)));
     const FrameConstants constants = make_frame_constants(scene, args.width, args.height);
     build_frame_graph(graph, &constants, args.width, args.height, VK_NULL_HANDLE);
     graph.compile(args.width, args.height);

@@ -1,0 +1,80 @@
+// The scene's needs (engine/render/frame_needs.cpp), one test per rule, without a
+// GPU: the water is needed when its box is in view, the underwater path when the
+// near plane can reach into the water; effects.<name>.mode forces either way and is
+// marked forced; every decision carries its reason.
+#include "engine/render/frame_needs.hpp"
+#include "engine/scene/scene_loader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace vkw {
+namespace {
+
+Scene scene_with(const std::string& camera, const std::vector<std::string>& overrides = {}) {
+    return parse_scene(R"({
+      "camera": {)" + camera + R"(, "fov_y_deg": 60, "near": 0.05},
+      "sun": {"elevation_deg": 60},
+      "sky": {"radiance": [1, 1, 1]},
+      "floor": {"height": -2, "half_extent": 10},
+      "water": {"level": 0, "half_extent": 10,
+                "waves": {"model": "sum", "components": [{"amplitude": 0.1, "wavelength": 2}]}}
+    })", "needs_test.json", overrides);
+}
+
+const fg::EffectDecision& decision(const fg::FrameNeeds& needs, fg::Effect effect) {
+    const fg::EffectDecision* found = needs.find(effect);
+    EXPECT_NE(found, nullptr);
+    return *found;
+}
+
+TEST(frame_needs, WaterNeededOnlyWhenItsBoxIsInView) {
+    const auto looking_at = decide_frame_needs(scene_with(R"("position": [0, 2, 5], "target": [0, 0, 0])"), 4.0 / 3.0);
+    EXPECT_TRUE(decision(looking_at, fg::Effect::Water).needed);
+    const auto looking_away =
+        decide_frame_needs(scene_with(R"("position": [0, 2, 50], "target": [0, 2, 100])"), 4.0 / 3.0);
+    EXPECT_FALSE(decision(looking_away, fg::Effect::Water).needed);
+    EXPECT_NE(decision(looking_away, fg::Effect::Water).reason.find("outside the view"), std::string::npos);
+}
+
+TEST(frame_needs, UnderwaterViewFollowsTheNearPlaneAgainstTheCrests) {
+    // Crests reach 0.1 m: a camera at 1 m does not need the underwater path, one at 0.1 m,
+    // on the plane, or below does (the near plane is 0.05 m away).
+    for (const auto& [height, needed] : std::vector<std::pair<double, bool>>{
+             {1.0, false}, {0.2, false}, {0.1, true}, {0.0, true}, {-1e-6, true}, {-1.0, true}}) {
+        const std::string camera = "\"position\": [0, " + std::to_string(height) + ", 0], \"target\": [0, " +
+                                   std::to_string(height) + ", -1]";
+        const auto needs = decide_frame_needs(scene_with(camera), 4.0 / 3.0);
+        EXPECT_EQ(decision(needs, fg::Effect::UnderwaterView).needed, needed) << "camera at y = " << height;
+        EXPECT_FALSE(decision(needs, fg::Effect::UnderwaterView).reason.empty());
+    }
+}
+
+TEST(frame_needs, ModesForceTheDecisionAndSaySo) {
+    const std::string camera = R"("position": [0, 2, 5], "target": [0, 0, 0])";
+    const auto off = decide_frame_needs(scene_with(camera, {"effects.water.mode=off"}), 1.0);
+    EXPECT_FALSE(decision(off, fg::Effect::Water).needed);
+    EXPECT_TRUE(decision(off, fg::Effect::Water).forced);
+    const auto on = decide_frame_needs(scene_with(camera, {"effects.underwater_view.mode=on"}), 1.0);
+    EXPECT_TRUE(decision(on, fg::Effect::UnderwaterView).needed);
+    EXPECT_TRUE(decision(on, fg::Effect::UnderwaterView).forced);
+    EXPECT_NE(decision(on, fg::Effect::UnderwaterView).reason.find("mode = on"), std::string::npos);
+    const auto automatic = decide_frame_needs(scene_with(camera), 1.0);
+    EXPECT_FALSE(decision(automatic, fg::Effect::Water).forced);
+}
+
+TEST(frame_needs, NoWaterNoWaterEffects) {
+    const auto needs = decide_frame_needs(scene_with(R"("position": [0, 2, 5], "target": [0, 0, 0])", {"water=null"}), 1.0);
+    EXPECT_FALSE(decision(needs, fg::Effect::Water).needed);
+    EXPECT_FALSE(decision(needs, fg::Effect::UnderwaterView).needed);
+}
+
+TEST(frame_needs, WaterBoundsHoldTheCrestsAndTheBottom) {
+    const WaterBounds bounds = water_bounds(scene_with(R"("position": [0, 2, 5], "target": [0, 0, 0])"));
+    EXPECT_DOUBLE_EQ(bounds.hi.y, 0.1);
+    EXPECT_DOUBLE_EQ(bounds.lo.y, -2.0);
+}
+
+}  // namespace
+}  // namespace vkw
