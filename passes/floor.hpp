@@ -1,5 +1,6 @@
 // The floor plane as a Lambertian receiver, drawn over the sky with a depth buffer
-// (reversed-Z). Reads and republishes keys::kHdrColor; publishes keys::kSceneDepth.
+// (reversed-Z), lit above or below the water (shaders/receivers/floor.frag). Reads the
+// scene optics; reads and republishes keys::kHdrColor; publishes keys::kSceneDepth.
 #pragma once
 
 #include "engine/framegraph/frame_graph.hpp"

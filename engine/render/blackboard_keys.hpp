@@ -9,5 +9,6 @@ namespace vkw::keys {
 inline constexpr fg::BlackboardKey<fg::BufferHandle> kFrameConstants{"frame constants"};
 inline constexpr fg::BlackboardKey<fg::ImageHandle> kHdrColor{"HDR colour"};
 inline constexpr fg::BlackboardKey<fg::ImageHandle> kSceneDepth{"scene depth"};
+inline constexpr fg::BlackboardKey<fg::BufferHandle> kSceneOptics{"scene optics"};
 
 }  // namespace vkw::keys

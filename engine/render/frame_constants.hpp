@@ -31,6 +31,10 @@ struct alignas(16) FrameConstants {
     glm::vec4 floor_plane;     // x: height, y: half extent
     glm::vec4 floor_albedo;
     glm::vec4 viewport;        // xy: width, height in pixels
+    glm::vec4 water;           // x: level, y: ior, z: half extent, w: has water
+    glm::vec4 medium_sigma_t;
+    glm::vec4 medium_sigma_s;  // w: g
+    glm::vec4 camera_medium;   // x: camera in the water
 };
 static_assert(sizeof(FrameConstants) % 16 == 0, "std140 blocks are a multiple of 16 bytes");
 

@@ -7,7 +7,11 @@
 #include "passes/floor.hpp"
 #include "passes/frame_constants_upload.hpp"
 #include "passes/readback.hpp"
+#include "passes/scene_optics.hpp"
 #include "passes/sky.hpp"
+#include "passes/water_shading.hpp"
+#include "passes/water_surface.hpp"
+#include "passes/water_surface_spectrum.hpp"
 
 #include <cstring>
 
@@ -17,11 +21,18 @@ namespace {
 VkDeviceSize hdr_bytes(uint32_t width, uint32_t height) { return VkDeviceSize{width} * height * 4 * sizeof(float); }
 }  // namespace
 
-void build_frame_graph(fg::FrameGraph& graph, const FrameConstants* constants, uint32_t width, uint32_t height,
-                       VkBuffer readback) {
+void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
+                       uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean) {
     passes::add_frame_constants_upload(graph, constants);
+    passes::add_scene_optics_pass(graph);
     passes::add_sky_pass(graph);
     passes::add_floor_pass(graph);
+    if (scene.water && graph.needs().needs(fg::Effect::Water)) {
+        const Water& water = *scene.water;
+        passes::WaterSurfaceInputs inputs{water.level, water.half_extent, water.grid_resolution, water.time,
+                                          water.waves, ocean};
+        passes::add_water_shading_pass(graph, passes::add_water_surface_pass(graph, inputs), water.grid_resolution);
+    }
     passes::add_readback_pass(graph, graph.blackboard().get(keys::kHdrColor), readback, hdr_bytes(width, height));
 }
 
@@ -32,6 +43,39 @@ struct Renderer::CompiledFrame {
     std::unique_ptr<fg::FrameGraph> graph;
     std::unique_ptr<fg::FrameExecutor> executor;
 };
+
+// The water settings that shape the graph (its passes and their push constants); time
+// and amplitudes of a wave sum are per-frame data the passes capture at declaration,
+// so they are part of it too until those passes read them at record time.
+std::string Renderer::water_configuration(const Scene& scene) {
+    if (!scene.water) return "no water";
+    const Water& water = *scene.water;
+    std::string key = std::to_string(water.grid_resolution) + " " + std::to_string(int(water.waves.model)) + " " +
+                      std::to_string(water.time) + " " + std::to_string(water.level) + " " +
+                      std::to_string(water.half_extent) + " " + std::to_string(water.waves.components.size());
+    for (const WaveComponent& wave : water.waves.components) {
+        key += " " + std::to_string(wave.amplitude) + "," + std::to_string(wave.wavelength) + "," +
+               std::to_string(wave.direction_deg) + "," + std::to_string(wave.phase_deg) + "," +
+               std::to_string(wave.steepness) + "," + std::to_string(wave.speed);
+    }
+    return key;
+}
+
+const passes::OceanSpectrumBuffer* Renderer::ocean_spectrum(const Scene& scene) {
+    if (!scene.water || scene.water->waves.model != WaveModel::FftOcean) return nullptr;
+    const FftOceanSettings& o = scene.water->waves.ocean;
+    const std::string key = std::to_string(o.resolution) + " " + std::to_string(o.patch_size) + " " +
+                            std::to_string(o.wind_speed) + " " + std::to_string(o.wind_direction_deg) + " " +
+                            std::to_string(int(o.spectrum)) + " " + std::to_string(o.fetch) + " " +
+                            std::to_string(o.amplitude_scale) + " " + std::to_string(scene.water->waves.seed);
+    if (!ocean_ || key != ocean_key_) {
+        frame_.reset();  // the compiled frame imported the old buffer
+        ocean_ = std::make_unique<passes::OceanSpectrumBuffer>(
+            context_, std::make_shared<const FftOceanSpectrum>(make_ocean_spectrum(o, scene.water->waves.seed)));
+        ocean_key_ = key;
+    }
+    return ocean_.get();
+}
 
 Renderer::Renderer(Context& context) : context_(context), constants_(std::make_unique<FrameConstants>()) {}
 
@@ -45,11 +89,14 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options) 
                         context_.device_name() + "')");
     }
     fg::FrameNeeds needs = decide_frame_needs(scene, double(options.width) / double(options.height));
-    const std::string configuration = std::to_string(options.width) + "x" + std::to_string(options.height) + " " +
+    // Everything the graph's shape depends on; the rest reaches it through the constants.
+    const std::string configuration = water_configuration(scene) + " " + std::to_string(options.width) + "x" +
+                                      std::to_string(options.height) + " " +
                                       needs.key() + " " + std::to_string(int(options.recording)) + " " +
                                       std::to_string(int(options.check_finite)) + " " +
                                       std::to_string(int(options.timing));
     *constants_ = make_frame_constants(scene, options.width, options.height);
+    const passes::OceanSpectrumBuffer* ocean = ocean_spectrum(scene);
 
     if (!frame_ || frame_->configuration != configuration) {
         frame_.reset();  // release the old graph's resources before making new ones
@@ -59,7 +106,8 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options) 
                                  "HDR readback");
         frame->graph = std::make_unique<fg::FrameGraph>(std::move(needs));
         frame->graph->set_default_recording(options.recording);
-        build_frame_graph(*frame->graph, constants_.get(), options.width, options.height, frame->readback.handle());
+        build_frame_graph(*frame->graph, scene, constants_.get(), options.width, options.height,
+                          frame->readback.handle(), ocean);
         frame->graph->compile(options.width, options.height);
         ++compile_count_;
         frame->executor = std::make_unique<fg::FrameExecutor>(context_, *frame->graph, pipelines_,

@@ -34,10 +34,15 @@ struct RenderResult {
     fg::FrameReport timing;
 };
 
+namespace passes {
+class OceanSpectrumBuffer;
+}
+
 // Declares every pass of a frame into `graph`. `constants` is read at record time.
-// The readback target is `readback` (VK_NULL_HANDLE when the graph is only printed).
-void build_frame_graph(fg::FrameGraph& graph, const FrameConstants* constants, uint32_t width, uint32_t height,
-                       VkBuffer readback);
+// The readback target is `readback` (VK_NULL_HANDLE when the graph is only printed);
+// `ocean` is the device copy of an FFT ocean's spectrum (nullptr for other waves).
+void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
+                       uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean);
 
 class Renderer {
 public:
@@ -52,10 +57,14 @@ public:
 
 private:
     struct CompiledFrame;
+    static std::string water_configuration(const Scene& scene);
+    const passes::OceanSpectrumBuffer* ocean_spectrum(const Scene& scene);
     Context& context_;
     fg::PipelineStore pipelines_;
     std::unique_ptr<FrameConstants> constants_;  // stable address, read when the frame records
     std::unique_ptr<CompiledFrame> frame_;
+    std::unique_ptr<passes::OceanSpectrumBuffer> ocean_;  // the FFT ocean's h0 on the device
+    std::string ocean_key_;                               // the settings it was made for
     size_t compile_count_ = 0;
 };
 

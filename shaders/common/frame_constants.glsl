@@ -19,6 +19,10 @@ layout(set = 0, binding = 0, std140) uniform FrameConstants {
     vec4 floor_plane;         // x: height y of the floor, y: half extent
     vec4 floor_albedo;        // rgb
     vec4 viewport;            // xy: output size in pixels
+    vec4 water;               // x: mean level y, y: index of refraction, z: half extent, w: 1 if the scene has water
+    vec4 medium_sigma_t;      // rgb: extinction, 1/m
+    vec4 medium_sigma_s;      // rgb: scattering, 1/m; w: Henyey-Greenstein g
+    vec4 camera_medium;       // x: 1 if the camera is in the water (flat-level test until the stencil split lands)
 } frame;
 
 #endif

@@ -7,6 +7,9 @@
 #include "engine/render/frame_needs.hpp"
 #include "engine/render/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
+#include "engine/vk/context.hpp"
+#include "engine/water/fft_ocean.hpp"
+#include "passes/water_surface_spectrum.hpp"
 #include "tools/vkwater/commands.hpp"
 
 #include <cstdio>
@@ -29,7 +32,17 @@ int run_passes(const PassesArgs& args) {
     const Scene scene = load_scene(args.scene, args.overrides);
     fg::FrameGraph graph(decide_frame_needs(scene, double(args.width) / double(args.height)));
     const FrameConstants constants = make_frame_constants(scene, args.width, args.height);
-    build_frame_graph(graph, &constants, args.width, args.height, VK_NULL_HANDLE);
+    // An FFT ocean's passes import its spectrum buffer, which only a device can hold:
+    // for such scenes alone this command makes one.
+    std::unique_ptr<Context> context;
+    std::unique_ptr<passes::OceanSpectrumBuffer> ocean;
+    if (scene.water && scene.water->waves.model == WaveModel::FftOcean) {
+        context = std::make_unique<Context>(ContextOptions{});
+        ocean = std::make_unique<passes::OceanSpectrumBuffer>(
+            *context, std::make_shared<const FftOceanSpectrum>(
+                          make_ocean_spectrum(scene.water->waves.ocean, scene.water->waves.seed)));
+    }
+    build_frame_graph(graph, scene, &constants, args.width, args.height, VK_NULL_HANDLE, ocean.get());
     graph.compile(args.width, args.height);
     std::printf("%s", graph.describe().c_str());
     if (args.barriers) std::printf("barriers:\n%s", graph.dump_barriers().c_str());

@@ -1,0 +1,46 @@
+#include "passes/water_shading.hpp"
+
+#include "engine/framegraph/pass_context.hpp"
+#include "engine/render/blackboard_keys.hpp"
+
+namespace vkw::passes {
+
+void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uint32_t grid_resolution) {
+    struct Data {
+        fg::BufferHandle constants, optics, surface;
+        fg::ImageHandle hdr, depth;
+    };
+    constexpr VkPipelineStageFlags2 kVertexAndFragment =
+        VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+    const auto& data = graph.add_pass<Data>(
+        "water", fg::PassKind::Graphics,
+        [&](fg::PassBuilder& builder, Data& d) {
+            builder.serves(fg::Effect::Water);
+            d.constants = builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants), kVertexAndFragment);
+            d.optics = builder.read_storage(graph.blackboard().get(keys::kSceneOptics));
+            d.surface = builder.read_storage(surface, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT);
+            d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
+            d.depth = builder.depth_stencil_attachment(graph.blackboard().get(keys::kSceneDepth), fg::LoadOp::Load);
+        },
+        [grid_resolution](const Data& d, fg::PassContext& context) {
+            GraphicsPipelineDesc desc;
+            desc.vertex_shader = "water_shading/water_surface.vert";
+            desc.fragment_shader = "water_shading/water_surface.frag";
+            constexpr VkShaderStageFlags both = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, both},
+                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT},
+                                    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT}};
+            desc.layout.push_constant_bytes = sizeof(uint32_t);
+            desc.depth_test = true;
+            desc.depth_write = true;
+            const Pipeline& pipeline = context.pipeline("water", desc);
+            context.bind(pipeline, {context.uniform_buffer(0, d.constants), context.storage_buffer(1, d.optics),
+                                    context.storage_buffer(2, d.surface)});
+            context.push_constants(pipeline, grid_resolution);
+            vkCmdDraw(context.cmd(), 6 * grid_resolution * grid_resolution, 1, 0, 0);
+        });
+    graph.blackboard().put(keys::kHdrColor, data.hdr);
+    graph.blackboard().put(keys::kSceneDepth, data.depth);
+}
+
+}  // namespace vkw::passes

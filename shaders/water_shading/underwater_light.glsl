@@ -1,0 +1,44 @@
+// Light under the water for Lambertian receivers (PHYSICS.md sections 1 and 3), and the
+// floor as the receiver that refracted view rays meet. The sun term is the flat-surface
+// stand-in for the caustic irradiance (the caustics issue replaces it, never adds to it).
+#ifndef VKWATER_UNDERWATER_LIGHT_GLSL
+#define VKWATER_UNDERWATER_LIGHT_GLSL
+
+#include "common/frame_constants.glsl"
+#include "common/lambert.glsl"
+#include "water_shading/scene_optics.glsl"
+
+bool point_under_water(vec3 p) {
+    return frame.water.w > 0.5 && p.y < frame.water.x && abs(p.x) <= frame.water.z && abs(p.z) <= frame.water.z;
+}
+
+// Sun through the flat surface, E_perp max(0, -t.N) exp(-sigma_t depth / cos_t), plus
+// skylight pi L_sky_avg T_hemi exp(-sigma_t depth) (the vertical path of the model).
+vec3 receiver_irradiance_under_water(vec3 p, vec3 normal, SceneOptics optics) {
+    float depth = max(0.0, frame.water.x - p.y);
+    vec3 sigma_t = frame.medium_sigma_t.rgb;
+    float cos_receiver = max(0.0, -dot(optics.refracted_sun.xyz, normal));
+    vec3 sun = optics.e_perp0.rgb * cos_receiver * exp(-sigma_t * (depth / optics.refracted_sun.w));
+    vec3 sky = PI * frame.sky_average.rgb * optics.transmission.x * exp(-sigma_t * depth);
+    return sun + sky;
+}
+
+vec3 receiver_irradiance(vec3 p, vec3 normal, SceneOptics optics) {
+    return point_under_water(p) ? receiver_irradiance_under_water(p, normal, optics)
+                                : receiver_irradiance_above_water(normal);
+}
+
+// Where a ray from p in direction d (in the water) meets the floor plane, and the
+// floor's radiance there; false when it does not meet the floor within its extent.
+bool floor_along(vec3 p, vec3 d, SceneOptics optics, out float distance_to_floor, out vec3 radiance) {
+    radiance = vec3(0.0);
+    distance_to_floor = 0.0;
+    if (d.y > -1e-6) return false;
+    distance_to_floor = (p.y - frame.floor_plane.x) / -d.y;
+    vec3 hit = p + distance_to_floor * d;
+    if (abs(hit.x) > frame.floor_plane.y || abs(hit.z) > frame.floor_plane.y) return false;
+    radiance = lambert_radiance(frame.floor_albedo.rgb, receiver_irradiance(hit, vec3(0.0, 1.0, 0.0), optics));
+    return true;
+}
+
+#endif

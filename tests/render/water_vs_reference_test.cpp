@@ -1,0 +1,66 @@
+// The real-time renderer against the CPU reference renderer (tools/reference), rendered
+// side by side at 64x48, for the scenes where the real-time shading has no
+// approximation left (flat water: the analytic lookups are exact): the error must be
+// fp32 rounding alone. Plus the water rule's culled image against its forced-on image.
+#include "engine/render/renderer.hpp"
+#include "engine/scene/scene_loader.hpp"
+#include "tests/support/gpu_test.hpp"
+#include "tools/metrics/metrics.hpp"
+#include "tools/reference/reference_renderer.hpp"
+
+#include <filesystem>
+
+namespace vkw::test {
+namespace {
+
+constexpr uint32_t kWidth = 64;
+constexpr uint32_t kHeight = 48;
+
+Scene builtin(const char* name, const std::vector<std::string>& overrides = {}) {
+    return load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes" / name, overrides);
+}
+
+class WaterAgainstReference : public GpuTest, public ::testing::WithParamInterface<const char*> {};
+
+TEST_P(WaterAgainstReference, FlatWaterMatchesToFp32Rounding) {
+    const Scene scene = builtin(GetParam());
+    Renderer renderer(context());
+    const RenderResult real_time = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
+    const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
+    const double rel_mse = metrics::rel_mse(metrics::rgb_view(real_time.image), metrics::rgb_view(reference),
+                                            metrics::counted_pixels(kWidth, kHeight, nullptr));
+    const double bias = metrics::mean_bias(metrics::rgb_view(real_time.image), metrics::rgb_view(reference),
+                                           metrics::counted_pixels(kWidth, kHeight, nullptr));
+    // The shader chain (frame constants rounded to fp32, Fresnel, refraction, exp and the
+    // in-scatter series) costs at most a few hundred fp32 roundings, i.e. a relative
+    // error per value below 1e-5 (its derivation: tests/optics bound each piece near 1e-6):
+    // relMSE <= (1e-5)^2 = 1e-10, and |bias| <= 1e-5.
+    EXPECT_LT(rel_mse, 1e-10) << GetParam();
+    EXPECT_LT(std::abs(bias), 1e-5) << GetParam();
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, WaterAgainstReference, ::testing::Values("calm.json", "underwater.json"),
+                         [](const auto& param_info) {
+                             return std::string(param_info.param).substr(0, std::string(param_info.param).find('.'));
+                         });
+
+using WaterRule = GpuTest;
+
+TEST_F(WaterRule, CulledWaterImageEqualsForcedOnImage) {
+    // Looking away from the water: the rule culls the water passes; forcing them on must
+    // not change a pixel (nothing they draw is in view), so the images are equal exactly.
+    const std::vector<std::string> away = {"camera.position=[0, 2, 30]",
+                                           "camera.target=[0, 2, 60]"};
+    std::vector<std::string> forced = away;
+    forced.push_back("effects.water.mode=on");
+    Renderer renderer(context());
+    const RenderResult culled = renderer.render(builtin("pool.json", away), {kWidth, kHeight, true, fg::TimingMode::None});
+    const size_t pipelines_culled = renderer.pipelines().size();
+    const RenderResult forced_on =
+        renderer.render(builtin("pool.json", forced), {kWidth, kHeight, true, fg::TimingMode::None});
+    EXPECT_GT(renderer.pipelines().size(), pipelines_culled) << "forcing the water on created no water pipeline";
+    EXPECT_EQ(culled.image.rgba, forced_on.image.rgba);
+}
+
+}  // namespace
+}  // namespace vkw::test
