@@ -13,6 +13,7 @@
 #include "passes/water_surface.hpp"
 #include "passes/water_surface_spectrum.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 namespace vkw {
@@ -87,6 +88,23 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options) 
         throw UserError("--width/--height: " + std::to_string(options.width) + "x" + std::to_string(options.height) +
                         " is out of range (accepted: 1 to " + std::to_string(max_size) + " on '" +
                         context_.device_name() + "')");
+    }
+    if (scene.water) {
+        // The surface grid must fit the device: a quarter of its largest heap at most, so
+        // the frame's other targets fit beside it.
+        VkPhysicalDeviceMemoryProperties memory;
+        vkGetPhysicalDeviceMemoryProperties(context_.physical_device(), &memory);
+        VkDeviceSize largest_heap = 0;
+        for (uint32_t i = 0; i < memory.memoryHeapCount; ++i) largest_heap = std::max(largest_heap, memory.memoryHeaps[i].size);
+        uint32_t largest_grid = 1;
+        while (passes::water_surface_bytes(largest_grid * 2) <= largest_heap / 4) largest_grid *= 2;
+        if (passes::water_surface_bytes(scene.water->grid_resolution) > largest_heap / 4) {
+            throw UserError(scene.source.string() + ": water.grid_resolution: " +
+                            std::to_string(scene.water->grid_resolution) + " needs " +
+                            std::to_string(passes::water_surface_bytes(scene.water->grid_resolution) >> 20) +
+                            " MiB of surface vertices (accepted on '" + context_.device_name() + "': up to about " +
+                            std::to_string(largest_grid) + ")");
+        }
     }
     fg::FrameNeeds needs = decide_frame_needs(scene, double(options.width) / double(options.height));
     // Everything the graph's shape depends on; the rest reaches it through the constants.

@@ -105,6 +105,12 @@ TEST(cli, ImageSizeOutOfRange) {
                          "accepted: 1 to");
 }
 
+TEST(cli, WaterGridBeyondTheDeviceIsAUserError) {
+    expect_clean_failure(run_vkwater("render " + kPool + " --out " + scratch("x.exr").string() +
+                                     " --set water.grid_resolution=4096"),
+                         1, "water.grid_resolution: 4096 needs");
+}
+
 TEST(cli, NoVulkanDeviceIsExitTwo) {
     // Point the loader at a driver manifest that does not exist: no device at all.
     expect_clean_failure(run_vkwater("render " + kPool + " --out " + scratch("x.exr").string(),

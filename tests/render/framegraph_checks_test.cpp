@@ -106,3 +106,34 @@ TEST_F(FrameGraphChecks, CulledPassCreatesNoPipeline) {
 
 }  // namespace
 }  // namespace vkw::test
+
+namespace vkw::test {
+namespace {
+
+TEST_F(FrameGraphChecks, EveryTimingMethodReportsEachLivingPassOnce) {
+    // Timestamps are the method for real GPUs; lavapipe has them too (they leave out its
+    // raster work, which is why it defaults to fences), so the path runs here, validated.
+    for (const fg::TimingMode mode : {fg::TimingMode::Timestamps, fg::TimingMode::Fences, fg::TimingMode::None}) {
+        Buffer readback(context(), {kBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "readback");
+        fg::PipelineStore pipelines;
+        fg::FrameGraph graph;
+        passes::add_readback_pass(graph, add_poison_pass(graph, "fill", {-1, -1, 0, 0}), readback.handle(), kBytes);
+        graph.compile(kSize, kSize);
+        fg::FrameExecutor executor(context(), graph, pipelines, {.timing = mode});
+        const fg::FrameReport report = executor.execute();
+        EXPECT_EQ(report.method, mode);
+        EXPECT_FALSE(report.method_name().empty());
+        if (mode == fg::TimingMode::None) {
+            EXPECT_TRUE(report.passes.empty());
+        } else {
+            ASSERT_EQ(report.passes.size(), 2u);
+            EXPECT_EQ(report.passes[0].pass, "fill");
+            EXPECT_EQ(report.passes[1].pass, "readback");
+            for (const fg::PassTime& pass : report.passes) EXPECT_GE(pass.ms, 0.0) << pass.pass;
+        }
+        EXPECT_GT(report.total_ms, 0.0);
+    }
+}
+
+}  // namespace
+}  // namespace vkw::test
