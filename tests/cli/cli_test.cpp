@@ -136,6 +136,20 @@ TEST(cli, CompareAnImageWithItselfGivesZeroErrors) {
     expect_clean_failure(run_vkwater("compare " + image.string() + " /nonexistent.exr"), 1, "/nonexistent.exr");
 }
 
+TEST(cli, RenderWithReferencePrintsTimeAndErrorLines) {
+    const std::string calm = std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json";
+    const fs::path reference = scratch("calm_ref.exr");
+    ASSERT_EQ(run_vkwater("reference " + calm + " --width 32 --height 24 --out " + reference.string()).exit_code, 0);
+    const CommandRun run = run_vkwater("render " + calm + " --width 32 --height 24 --validation --out " +
+                                       scratch("calm_rt.exr").string() + " --reference " + reference.string());
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    EXPECT_NE(run.output.find("\ntime: "), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("\nerror against " + reference.string() + ": relMSE "), std::string::npos) << run.output;
+    expect_clean_failure(run_vkwater("render " + calm + " --out " + scratch("x.exr").string() +
+                                     " --reference /nonexistent/ref.exr"),
+                         1, "/nonexistent/ref.exr");
+}
+
 TEST(cli, PassesPrintsDecisionsOrderAndMemory) {
     const CommandRun run = run_vkwater("passes " + kPool + " --barriers --dot " + scratch("graph.dot").string());
     EXPECT_EQ(run.exit_code, 0) << run.output;

@@ -7,6 +7,7 @@
 #include "engine/render/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
+#include "tools/metrics/metrics.hpp"
 #include "tools/vkwater/commands.hpp"
 
 #include <chrono>
@@ -28,6 +29,7 @@ struct RenderArgs {
     uint32_t repeat = 1;
     std::string recording = "dynamic";
     std::vector<std::string> overrides;
+    std::string reference;
     DeviceOptions device;
 };
 
@@ -39,6 +41,7 @@ int run_render(const RenderArgs& args) {
     require_writable_file_path(out);
     const std::filesystem::path png_path = std::filesystem::path(out).replace_extension(".png");
     if (args.png) require_writable_file_path(png_path);
+    if (!args.reference.empty()) require_readable_file_path(args.reference);
 
     ContextOptions context_options;
     context_options.validation = args.device.validation;
@@ -78,6 +81,14 @@ int run_render(const RenderArgs& args) {
         write_png_preview(png_path, result.image, static_cast<float>(scene.camera.exposure));
         std::printf("wrote %s (preview: ACES filmic, sRGB)\n", png_path.c_str());
     }
+    if (!args.reference.empty()) {
+        // The project's two numbers for every image: its time and its error, one line each.
+        const ImageRGBA32F reference = read_exr(args.reference);
+        const metrics::Metrics error = metrics::compare_images(result.image, reference);
+        std::printf("time: %.2f ms per frame (%s)\n", result.timing.total_ms, result.timing.method_name().c_str());
+        std::printf("error against %s: relMSE %.6g, FLIP %.6g, bias %.6g, L*u*v* %.6g\n", args.reference.c_str(),
+                    error.rel_mse, error.flip_mean, error.bias, error.luv_mean);
+    }
     const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::printf("total %.1f ms (whole command)\n", total);
     const size_t validation_failures = validation_log->failure_count();
@@ -110,6 +121,9 @@ Run add_render_command(CLI::App& app) {
         ->check(CLI::IsMember({"dynamic", "renderpass"}))
         ->capture_default_str();
     command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
+    command->add_option("--reference", args->reference,
+                        "Also print the frame's error against this reference EXR (vkwater reference), next to "
+                        "its time");
     add_device_options(*command, args->device);
     return [args] { return run_render(*args); };
 }
