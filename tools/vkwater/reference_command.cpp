@@ -5,11 +5,15 @@
 #include "engine/image/file_paths.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tools/reference/reference_renderer.hpp"
+#include "tools/reference/scene_hash.hpp"
 #include "tools/vkwater/commands.hpp"
 
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <cstdio>
 #include <memory>
 
@@ -23,7 +27,38 @@ struct ReferenceArgs {
     uint32_t height = 300;
     unsigned threads = 0;
     std::vector<std::string> overrides;
+    std::string manifest;
 };
+
+// The remaining error of the reference itself, as relMSE: the flat-water transport is
+// closed form in double precision, and its one numerical integral (T_hemi) is exact to
+// ~1e-9 relative, so relMSE ~ (1e-9)^2.
+constexpr double kFlatWaterEstimatedRelMse = 1e-18;
+
+// Adds or replaces this reference's entry in the manifest (tests/references/manifest.json):
+// the scene file's hash, the settings, the seed, the estimated error and the time taken.
+void record_in_manifest(const ReferenceArgs& args, double seconds) {
+    nlohmann::ordered_json manifest = nlohmann::ordered_json::object();
+    if (std::filesystem::exists(args.manifest)) {
+        std::ifstream in(args.manifest);
+        manifest = nlohmann::ordered_json::parse(in, nullptr, /*allow_exceptions=*/false);
+        if (manifest.is_discarded()) throw UserError(args.manifest + ": not valid JSON");
+    }
+    const std::filesystem::path scene = args.scene;
+    const std::filesystem::path base = std::filesystem::path(args.manifest).parent_path();
+    manifest[scene.filename().string()] = {
+        {"scene", std::filesystem::relative(scene, base).generic_string()},
+        {"scene_hash", ref::scene_file_hash(scene)},
+        {"reference", std::filesystem::relative(args.out, base).generic_string()},
+        {"width", args.width},
+        {"height", args.height},
+        {"overrides", args.overrides},
+        {"seed", 0},
+        {"samples_per_pixel", 1},
+        {"estimated_rel_mse", kFlatWaterEstimatedRelMse},
+        {"seconds", seconds}};
+    std::ofstream(args.manifest) << manifest.dump(2) << "\n";
+}
 
 int run_reference(const ReferenceArgs& args) {
     const Scene scene = load_scene(args.scene, args.overrides);
@@ -47,6 +82,10 @@ int run_reference(const ReferenceArgs& args) {
     write_exr(args.out, image);
     std::printf("wrote %s (%ux%u, reference, layers RGBA + caustic) in %.2f s\n", args.out.c_str(), args.width,
                 args.height, seconds);
+    if (!args.manifest.empty()) {
+        record_in_manifest(args, seconds);
+        std::printf("recorded in %s\n", args.manifest.c_str());
+    }
     return kExitOk;
 }
 
@@ -66,6 +105,8 @@ Run add_reference_command(CLI::App& app) {
     command->add_option("--threads", args->threads, "Worker threads (0: every hardware thread)")
         ->capture_default_str();
     command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
+    command->add_option("--manifest", args->manifest,
+                        "Record this reference (scene hash, settings, estimated error, time) in a JSON manifest");
     return [args] { return run_reference(*args); };
 }
 
