@@ -7,7 +7,7 @@
 #include "engine/vk/resources.hpp"
 #include "engine/water/surface.hpp"
 #include "passes/water_surface.hpp"
-#include "tests/water_gpu/buffer_readback.hpp"
+#include "passes/readback.hpp"
 
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>
@@ -37,7 +37,7 @@ inline std::vector<GpuVertex> read_water_surface(Context& context, const passes:
     {
         fg::PipelineStore pipelines;
         fg::FrameGraph graph;
-        add_buffer_readback(graph, passes::add_water_surface_pass(graph, inputs), readback.handle(), bytes);
+        passes::add_readback_pass(graph, passes::add_water_surface_pass(graph, inputs), readback.handle(), bytes);
         graph.compile(1, 1);
         fg::FrameExecutor executor(context, graph, pipelines, {.check_finite = true, .timing = fg::TimingMode::None});
         executor.execute();
