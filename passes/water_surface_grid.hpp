@@ -1,8 +1,10 @@
 // What the water-surface grid kernels share on the C++ side (shaders/water/water_vertex.glsl
-// on the GLSL side): the head of their push constants, the vertex buffer, and the dispatch
-// over the (R + 1)^2 vertices in bands of rows that each fit one storage-buffer binding.
+// on the GLSL side): the head of their push constants, the vertex buffer, the dispatch over
+// the (R + 1)^2 vertices in bands of rows that each fit one storage-buffer binding, and the
+// compute pass that declares and records all that.
 #pragma once
 
+#include "engine/framegraph/frame_graph.hpp"
 #include "engine/framegraph/pass_context.hpp"
 #include "passes/water_surface.hpp"
 
@@ -58,6 +60,47 @@ void dispatch_water_grid(fg::PassContext& context, const Pipeline& pipeline, con
         push.grid.band_rows = band.rows;
         dispatch_water_band(context, pipeline, input, vertices, band, &push, sizeof(Push));
     }
+}
+
+// A grid kernel's pass: its name, the kernel's shader and pipeline key, and how it reads its
+// input at binding 0 (VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER or VK_DESCRIPTOR_TYPE_STORAGE_BUFFER).
+struct WaterGridKernel {
+    const char* pass;
+    const char* shader;
+    const char* pipeline;
+    VkDescriptorType input;
+};
+
+// Adds the compute pass that runs `kernel` over the grid: it reads `input` at binding 0,
+// writes a new vertex buffer (create_water_vertices) band by band (dispatch_water_grid) with
+// `push`, and returns that buffer.
+template <class Push>
+fg::BufferHandle add_water_grid_pass(fg::FrameGraph& graph, const WaterGridKernel& kernel, fg::BufferHandle input,
+                                     const Push& push) {
+    const bool uniform = kernel.input == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    struct Data {
+        fg::BufferHandle input;
+        fg::BufferHandle vertices;
+    };
+    const auto& data = graph.add_pass<Data>(
+        kernel.pass, fg::PassKind::Compute,
+        [&](fg::PassBuilder& builder, Data& d) {
+            const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+            d.input = uniform ? builder.uniform_buffer(input, stage) : builder.read_storage(input, stage);
+            d.vertices = create_water_vertices(builder, push.grid.resolution);
+        },
+        [kernel, uniform, push](const Data& d, fg::PassContext& context) {
+            ComputePipelineDesc desc;
+            desc.shader = kernel.shader;
+            desc.layout.bindings = {{0, kernel.input, 1, VK_SHADER_STAGE_COMPUTE_BIT},
+                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
+            desc.layout.push_constant_bytes = sizeof(Push);
+            const Pipeline& pipeline = context.pipeline(kernel.pipeline, desc);
+            const fg::DescriptorBinding in =
+                uniform ? context.uniform_buffer(0, d.input) : context.storage_buffer(0, d.input);
+            dispatch_water_grid(context, pipeline, in, d.vertices, push);
+        });
+    return data.vertices;
 }
 
 }  // namespace vkw::passes

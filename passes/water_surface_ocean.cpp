@@ -73,26 +73,9 @@ fg::BufferHandle add_ocean_passes(fg::FrameGraph& graph, const WaterSurfaceInput
     const fg::BufferHandle fields = add_inverse_fft_passes(graph, spectra, spectrum.n, kOceanGridCount);
     const GridPush push{water_grid_push(inputs), spectrum.n,
                         static_cast<float>(spectrum.n / spectrum.patch_size)};
-    struct Data {
-        fg::BufferHandle fields;
-        fg::BufferHandle vertices;
-    };
-    const auto& data = graph.add_pass<Data>(
-        "water surface (ocean grid)", fg::PassKind::Compute,
-        [&](fg::PassBuilder& builder, Data& d) {
-            d.fields = builder.read_storage(fields, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
-            d.vertices = create_water_vertices(builder, inputs.grid_resolution);
-        },
-        [push](const Data& d, fg::PassContext& context) {
-            ComputePipelineDesc desc;
-            desc.shader = "water/ocean_grid.comp";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
-            desc.layout.push_constant_bytes = sizeof(GridPush);
-            const Pipeline& pipeline = context.pipeline("ocean grid", desc);
-            dispatch_water_grid(context, pipeline, context.storage_buffer(0, d.fields), d.vertices, push);
-        });
-    return data.vertices;
+    return add_water_grid_pass(
+        graph, {"water surface (ocean grid)", "water/ocean_grid.comp", "ocean grid", VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+        fields, push);
 }
 
 }  // namespace vkw::passes

@@ -1,9 +1,10 @@
 // Sum of sine and Gerstner waves on the GPU (water_surface_sum.hpp). The per-wave constants
-// are those of engine/water/wave_sum_surface.cpp's constructor, computed here in double
-// from the same WaveComponent fields and rounded once to fp32.
+// are engine/water/wave_terms.hpp's, the CPU surface's own, computed in double and rounded
+// once to fp32.
 #include "passes/water_surface_sum.hpp"
 
 #include "engine/framegraph/pass_context.hpp"
+#include "engine/water/wave_terms.hpp"
 #include "passes/water_surface_grid.hpp"
 
 #include <cmath>
@@ -30,22 +31,17 @@ struct SumPush {
     uint32_t wave_count;
 };
 
-double radians(double degrees) { return degrees * (std::numbers::pi / 180.0); }
-
-// k d, -w t + p, A and s / k^2 as WaveSumSurface computes them. The phase is reduced to
-// [-pi, pi] in double (sin and cos do not notice), so that fp32 holds it to 2^-24 rad however
-// large w t has grown, instead of to ulp(w t).
+// wave_terms() rounded to fp32. The phase is reduced to [-pi, pi] in double first (sin and cos
+// do not notice), so that fp32 holds it to 2^-24 rad however large w t has grown, instead of to
+// ulp(w t).
 GpuWave gpu_wave(const WaveComponent& c, double time) {
-    const double k = 2.0 * std::numbers::pi / c.wavelength;
-    const double omega = c.speed < 0.0 ? std::sqrt(kGravity * k) : c.speed * k;
-    const double a = radians(c.direction_deg);
-    const double phase = std::remainder(radians(c.phase_deg) - omega * time, 2.0 * std::numbers::pi);
+    const WaveTerms terms = wave_terms(c, time);
     GpuWave w{};
-    w.k_vector[0] = static_cast<float>(k * std::cos(a));
-    w.k_vector[1] = static_cast<float>(k * std::sin(a));
-    w.phase_at_origin = static_cast<float>(phase);
-    w.amplitude = static_cast<float>(c.amplitude);
-    w.displacement_scale = static_cast<float>(c.steepness / (k * k));
+    w.k_vector[0] = static_cast<float>(terms.k_vector.x);
+    w.k_vector[1] = static_cast<float>(terms.k_vector.y);
+    w.phase_at_origin = static_cast<float>(std::remainder(terms.phase_at_origin, 2.0 * std::numbers::pi));
+    w.amplitude = static_cast<float>(terms.amplitude);
+    w.displacement_scale = static_cast<float>(terms.displacement_scale);
     return w;
 }
 
@@ -71,27 +67,10 @@ fg::BufferHandle add_wave_sum_passes(fg::FrameGraph& graph, const WaterSurfaceIn
             vkCmdUpdateBuffer(context.cmd(), context.buffer(d.waves), 0, table.size() * sizeof(GpuWave), table.data());
         });
 
-    struct SumData {
-        fg::BufferHandle waves;
-        fg::BufferHandle vertices;
-    };
     const SumPush push{water_grid_push(inputs), static_cast<uint32_t>(waves.size())};
-    const auto& sum = graph.add_pass<SumData>(
-        "water surface (wave sum)", fg::PassKind::Compute,
-        [&](fg::PassBuilder& builder, SumData& d) {
-            d.waves = builder.uniform_buffer(upload.waves, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
-            d.vertices = create_water_vertices(builder, inputs.grid_resolution);
-        },
-        [push](const SumData& d, fg::PassContext& context) {
-            ComputePipelineDesc desc;
-            desc.shader = "water/wave_sum.comp";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
-            desc.layout.push_constant_bytes = sizeof(SumPush);
-            const Pipeline& pipeline = context.pipeline("wave sum", desc);
-            dispatch_water_grid(context, pipeline, context.uniform_buffer(0, d.waves), d.vertices, push);
-        });
-    return sum.vertices;
+    return add_water_grid_pass(
+        graph, {"water surface (wave sum)", "water/wave_sum.comp", "wave sum", VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+        upload.waves, push);
 }
 
 }  // namespace vkw::passes

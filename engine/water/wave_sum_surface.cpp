@@ -2,17 +2,10 @@
 #include "engine/water/wave_sum_surface.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include "engine/water/validate_waves.hpp"
 
 namespace vkw {
-
-namespace {
-
-double radians(double degrees) { return degrees * (std::numbers::pi / 180.0); }
-
-}  // namespace
 
 WaveSumSurface::WaveSumSurface(const WaveSettings& settings, double level, double time)
     : level_(level) {
@@ -21,15 +14,7 @@ WaveSumSurface::WaveSumSurface(const WaveSettings& settings, double level, doubl
     validate_waves(as_sum);
     waves_.reserve(settings.components.size());
     for (const WaveComponent& c : settings.components) {
-        const double k = 2.0 * std::numbers::pi / c.wavelength;
-        const double omega = c.speed < 0.0 ? std::sqrt(kGravity * k) : c.speed * k;
-        const double a = radians(c.direction_deg);
-        Wave w;
-        w.k_vector = k * glm::dvec2(std::cos(a), std::sin(a));
-        w.phase_at_origin = radians(c.phase_deg) - omega * time;
-        w.amplitude = c.amplitude;
-        w.displacement_scale = c.steepness / (k * k);
-        waves_.push_back(w);
+        waves_.push_back(wave_terms(c, time));
         amplitude_sum_ += c.amplitude;
         heightfield_ = heightfield_ && c.steepness == 0.0;
     }
@@ -39,7 +24,7 @@ SurfacePoint WaveSumSurface::at_parameter(double x0, double z0) const {
     glm::dvec3 position(x0, level_, z0);
     glm::dvec3 dP_du(1.0, 0.0, 0.0);
     glm::dvec3 dP_dv(0.0, 0.0, 1.0);
-    for (const Wave& w : waves_) {
+    for (const WaveTerms& w : waves_) {
         const double theta = glm::dot(w.k_vector, glm::dvec2(x0, z0)) + w.phase_at_origin;
         const double s = std::sin(theta);
         const double c = std::cos(theta);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "engine/water/surface.hpp"
+#include "engine/water/wave_terms.hpp"
 
 namespace vkw {
 
@@ -29,13 +30,7 @@ public:
     double max_amplitude() const override { return amplitude_sum_; }
 
 private:
-    struct Wave {
-        glm::dvec2 k_vector;        // k d, rad/m
-        double phase_at_origin;     // -w t + p, radians
-        double amplitude;           // A, m
-        double displacement_scale;  // s / k^2, so that D = displacement_scale k_vector cos(theta)
-    };
-    std::vector<Wave> waves_;
+    std::vector<WaveTerms> waves_;
     double level_;
     double amplitude_sum_ = 0.0;
     bool heightfield_ = true;

@@ -86,15 +86,22 @@ void add_clear_then_load(fg::FrameGraph& graph, VkBuffer readback) {
     passes::add_readback_pass(graph, load.target, readback, kReadbackBytes);
 }
 
-TEST_F(FrameGraphHazard, DerivedBarriersKeepRenderPassRecordingHazardFree) {
-    Buffer readback(context(), {kReadbackBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "test readback");
+// Runs add_clear_then_load in VkRenderPass recording, without the graph's barrier before
+// "accumulate"'s load when `drop_barrier`. Returns once the executor is gone (idle device).
+void run_clear_then_load(Context& context, VkBuffer readback, bool drop_barrier) {
     fg::PipelineStore pipelines;
     fg::FrameGraph graph;
     graph.set_default_recording(fg::RecordingKind::RenderPassObject);
-    add_clear_then_load(graph, readback.handle());
+    add_clear_then_load(graph, readback);
     graph.compile(kWidth, kHeight);
-    fg::FrameExecutor executor(context(), graph, pipelines, {.check_finite = true, .timing = fg::TimingMode::None});
+    fg::FrameExecutor executor(context, graph, pipelines, {.check_finite = true, .timing = fg::TimingMode::None});
+    if (drop_barrier) executor.drop_barrier_for_test("accumulate", "target");
     executor.execute();
+}
+
+TEST_F(FrameGraphHazard, DerivedBarriersKeepRenderPassRecordingHazardFree) {
+    Buffer readback(context(), {kReadbackBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "test readback");
+    run_clear_then_load(context(), readback.handle(), /*drop_barrier=*/false);
     const std::vector<float> pixels = read_floats(readback);
     EXPECT_EQ(pixels[0], 0.25f);  // the clear value, exactly representable
     EXPECT_EQ(pixels[2], 0.75f);
@@ -102,16 +109,7 @@ TEST_F(FrameGraphHazard, DerivedBarriersKeepRenderPassRecordingHazardFree) {
 
 TEST_F(FrameGraphHazard, RemovedBarrierIsReportedBySynchronizationValidation) {
     Buffer readback(context(), {kReadbackBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "test readback");
-    {
-        fg::PipelineStore pipelines;
-        fg::FrameGraph graph;
-        graph.set_default_recording(fg::RecordingKind::RenderPassObject);
-        add_clear_then_load(graph, readback.handle());
-        graph.compile(kWidth, kHeight);
-        fg::FrameExecutor executor(context(), graph, pipelines, {.check_finite = true, .timing = fg::TimingMode::None});
-        executor.drop_barrier_for_test("accumulate", "target");
-        executor.execute();
-    }
+    run_clear_then_load(context(), readback.handle(), /*drop_barrier=*/true);
     readback = Buffer();
     const std::vector<std::string> messages = finish_and_collect_validation();
     const bool hazard = std::any_of(messages.begin(), messages.end(), [](const std::string& m) {
