@@ -5,7 +5,7 @@
 // refusal of what it does not compute yet.
 #include "engine/core/errors.hpp"
 #include "engine/scene/scene_loader.hpp"
-#include "tools/reference/flat_water_transport.hpp"
+#include "tools/reference/water_transport.hpp"
 #include "tools/reference/optics.hpp"
 #include "tools/reference/reference_renderer.hpp"
 
@@ -69,7 +69,7 @@ glm::dvec3 closed_form_from_above(const Scene& scene, const glm::dvec3& view) {
 
 TEST(reference_flat_water, RadianceFromAboveMatchesSection3) {
     const Scene scene = calm_scene(60.0);
-    const FlatWaterTransport transport(scene);
+    const WaterTransport transport(scene);
     for (double elevation : {5.0, 20.0, 45.0, 90.0}) {
         const double e = elevation * kPi / 180.0;
         // Look along -z (sun toward +x): no sun glint in the reflected direction.
@@ -87,7 +87,7 @@ TEST(reference_flat_water, RadianceFromAboveMatchesSection3) {
 TEST(reference_flat_water, FloorSunIrradianceMatchesSection3) {
     for (double sun_elevation : {90.0, 60.0, 30.0, 5.0}) {
         const Scene scene = calm_scene(sun_elevation);
-        const FlatWaterTransport transport(scene);
+        const WaterTransport transport(scene);
         const double cos_s = std::sin(sun_elevation * kPi / 180.0);
         const double sin_t = std::sqrt(1 - cos_s * cos_s) / kIor, cos_t = std::sqrt(1 - sin_t * sin_t);
         const glm::dvec3 e = transport.sun_irradiance_under_water({0.3, -kDepth, -2.0}, {0, 1, 0});
@@ -108,7 +108,7 @@ TEST(reference_flat_water, CausticLayerIsTheUniformFloorIrradianceInEveryPixel) 
     const ImageRGBA32F image = render_reference(scene, {width, height, 0, {}});
     ASSERT_EQ(image.layers.size(), 1u);
     ASSERT_EQ(image.layers[0].name, "caustic");
-    const FlatWaterTransport transport(scene);
+    const WaterTransport transport(scene);
     const glm::dvec3 expected = transport.sun_irradiance_under_water({0, -kDepth, 0}, {0, 1, 0});
     for (size_t pixel = 0; pixel < size_t{width} * height; ++pixel) {
         for (int c = 0; c < 3; ++c) {
@@ -156,12 +156,12 @@ TEST(reference_flat_water, OutputIsIdenticalForAnyThreadCount) {
     EXPECT_EQ(one.layers[0].rgb, two.layers[0].rgb);
 }
 
-TEST(reference_flat_water, RefusesWavyWaterWithAClearMessage) {
-    Scene scene = calm_scene(45.0);
-    scene.water->waves.model = WaveModel::Sum;
+TEST(reference_flat_water, RefusesWhatItDoesNotComputeYetWithAClearMessage) {
+    Scene ocean = calm_scene(45.0);
+    ocean.water->waves.model = WaveModel::FftOcean;
     try {
-        render_reference(scene, {4, 4, 1, {}});
-        FAIL() << "a wavy scene was accepted";
+        render_reference(ocean, {4, 4, 1, {}});
+        FAIL() << "an FFT ocean was accepted";
     } catch (const UserError& error) {
         EXPECT_NE(std::string(error.what()).find("water.waves.model"), std::string::npos) << error.what();
     }

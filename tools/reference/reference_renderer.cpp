@@ -1,6 +1,6 @@
 #include "tools/reference/reference_renderer.hpp"
 
-#include "tools/reference/flat_water_transport.hpp"
+#include "tools/reference/water_transport.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -19,8 +19,12 @@ Ray camera_ray(const Camera& camera, uint32_t width, uint32_t height, double x, 
     return {camera.position, glm::normalize(point - camera.position)};
 }
 
-ImageRGBA32F render_reference(const Scene& scene, const ReferenceOptions& options) {
-    const FlatWaterTransport transport(scene);
+ImageRGBA32F render_reference(const Scene& scene, const ReferenceOptions& options, ReferenceReport* report) {
+    const WaterTransport transport(scene);
+    if (report) {
+        report->caustic_refinement_change = transport.caustic_refinement_change();
+        report->flat_beam_in_scatter = scene.water && scene.water->waves.model != WaveModel::Flat;
+    }
     ImageRGBA32F image;
     image.width = static_cast<int>(options.width);
     image.height = static_cast<int>(options.height);

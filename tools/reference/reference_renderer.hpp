@@ -25,6 +25,12 @@ struct ReferenceOptions {
 // convention as the real-time renderer (engine/render/frame_constants.cpp).
 Ray camera_ray(const Camera& camera, uint32_t width, uint32_t height, double x, double y);
 
-ImageRGBA32F render_reference(const Scene& scene, const ReferenceOptions& options);
+// What the reference knows of its own error.
+struct ReferenceReport {
+    double caustic_refinement_change = 0.0;  // relative RMS change of the floor caustics on refinement
+    bool flat_beam_in_scatter = false;       // wavy water: in-scatter follows the flat surface's beam
+};
+
+ImageRGBA32F render_reference(const Scene& scene, const ReferenceOptions& options, ReferenceReport* report = nullptr);
 
 }  // namespace vkw::ref

@@ -1,4 +1,4 @@
-#include "tools/reference/flat_water_transport.hpp"
+#include "tools/reference/water_transport.hpp"
 
 #include "engine/core/errors.hpp"
 #include "engine/scene/builtin_meshes.hpp"
@@ -24,11 +24,14 @@ glm::dvec3 exp3(const glm::dvec3& x) { return {std::exp(x.x), std::exp(x.y), std
 
 }  // namespace
 
-FlatWaterTransport::FlatWaterTransport(const Scene& scene) : scene_(scene) {
-    if (scene.water && scene.water->waves.model != WaveModel::Flat) {
+WaterTransport::~WaterTransport() = default;
+
+WaterTransport::WaterTransport(const Scene& scene, const Quality& quality) : scene_(scene) {
+    const bool wavy = scene.water && scene.water->waves.model != WaveModel::Flat;
+    if (wavy && scene.water->waves.model == WaveModel::FftOcean) {
         throw UserError(scene.source.string() +
-                        ": water.waves.model: the reference renderer computes flat water only so far; wavy "
-                        "surfaces need its caustic beam mapping, not built yet (accepted now: \"flat\")");
+                        ": water.waves.model: the reference renderer does not compute the FFT ocean yet (its exact "
+                        "evaluation is too slow; accepted now: \"flat\" or \"sum\")");
     }
     // The floor joins the receivers as one more mesh.
     Mesh floor = make_plane_mesh({scene.floor.half_extent, scene.floor.half_extent});
@@ -57,33 +60,108 @@ FlatWaterTransport::FlatWaterTransport(const Scene& scene) : scene_(scene) {
         const double transmittance = 1.0 - fresnel_reflectance(cos_s, 1.0, ior_);
         e_perp0_ = scene.sun.irradiance * (cos_s * transmittance / cos_t);
     }
+    if (wavy) {
+        surface_ = make_surface(scene.water->waves, level_, scene.water->time);
+        max_amplitude_ = surface_->max_amplitude();
+        shortest_wavelength_ = std::numeric_limits<double>::infinity();
+        for (const WaveComponent& wave : scene.water->waves.components) {
+            if (wave.amplitude > 0.0) shortest_wavelength_ = std::min(shortest_wavelength_, wave.wavelength);
+        }
+        for (const Receiver& receiver : scene.receivers) {
+            if (receiver.mesh.bounds_min.y < level_ + max_amplitude_) {
+                throw UserError(scene.source.string() + ": receivers: '" + receiver.name +
+                                "' reaches under the wavy water; the reference renderer computes caustics on the "
+                                "floor only so far (accepted now: receivers above the highest crest)");
+            }
+        }
+        const auto cells = static_cast<uint32_t>(
+            std::ceil(2.0 * half_extent_ / shortest_wavelength_ * quality.cells_per_wavelength));
+        RefinedFloorCaustics caustics = refine_floor_caustics(scene, *surface_, quality.floor_texels, cells);
+        floor_caustics_ = std::move(caustics.map);
+        caustic_refinement_change_ = caustics.relative_rms_change;
+    }
     sky_average_ = sky_average_radiance(scene.sky);
     hemispherical_transmittance_ = hemispherical_transmittance(ior_);
     sun_disk_cos_ = std::cos(kSunDiskAngularRadiusDeg * std::numbers::pi / 180.0);
 }
 
-bool FlatWaterTransport::in_water(const glm::dvec3& p) const {
+double WaterTransport::surface_height(double x, double z) const {
+    return surface_ ? surface_->height_at(x, z) : level_;
+}
+
+std::optional<WaterTransport::WaterHit> WaterTransport::water_surface_hit(const Ray& ray) const {
+    if (!has_water_) return std::nullopt;
+    auto inside_extent = [&](const glm::dvec3& p) {
+        return std::abs(p.x) <= half_extent_ && std::abs(p.z) <= half_extent_;
+    };
+    if (!surface_) {
+        if (ray.direction.y == 0.0) return std::nullopt;
+        const double t = (level_ - ray.origin.y) / ray.direction.y;
+        if (t <= 0.0 || !inside_extent(ray.origin + t * ray.direction)) return std::nullopt;
+        return WaterHit{t, {0.0, 1.0, 0.0}};
+    }
+    // The part of the ray inside the slab between the lowest trough and the highest crest.
+    const double low = level_ - max_amplitude_, high = level_ + max_amplitude_;
+    double t0 = 0.0, t1 = 0.0;
+    if (ray.direction.y == 0.0) {
+        if (ray.origin.y < low || ray.origin.y > high) return std::nullopt;
+        t1 = 4.0 * half_extent_ + glm::length(ray.origin);  // long enough to leave the extent
+    } else {
+        const double a = (low - ray.origin.y) / ray.direction.y, b = (high - ray.origin.y) / ray.direction.y;
+        t0 = std::max(0.0, std::min(a, b));
+        t1 = std::max(a, b);
+        if (t1 <= 0.0) return std::nullopt;
+    }
+    // f > 0 above the surface; the crossing is the first sign change along the ray.
+    auto f = [&](double t) {
+        const glm::dvec3 p = ray.origin + t * ray.direction;
+        return p.y - surface_->height_at(p.x, p.z);
+    };
+    const double horizontal = std::hypot(ray.direction.x, ray.direction.z);
+    const double step = std::min((t1 - t0) / 4.0, shortest_wavelength_ / 64.0 / std::max(horizontal, 1e-12));
+    const double start_sign = f(t0) > 0.0 ? 1.0 : -1.0;
+    double previous = t0;
+    for (double t = t0 + step; previous < t1; t += step) {
+        const double here = std::min(t, t1);
+        if (f(here) * start_sign <= 0.0) {
+            double lo = previous, hi = here;
+            for (int i = 0; i < 200 && hi - lo > 1e-12; ++i) {
+                const double mid = 0.5 * (lo + hi);
+                (f(mid) * start_sign > 0.0 ? lo : hi) = mid;
+            }
+            const glm::dvec3 p = ray.origin + hi * ray.direction;
+            if (!inside_extent(p)) return std::nullopt;
+            const glm::dvec2 parameter = surface_->parameter_at(p.x, p.z);
+            return WaterHit{hi, surface_->at_parameter(parameter.x, parameter.y).normal};
+        }
+        previous = here;
+    }
+    return std::nullopt;
+}
+
+bool WaterTransport::in_water(const glm::dvec3& p) const {
     // Height exactly at the level counts as above (the same tie-break as the stencil
     // split). The bottom is usually the floor itself, and a floor hit can round a hair
     // below it: points within kBottomTolerance of the bottom are in the water.
     constexpr double kBottomTolerance = 1e-6;
-    return has_water_ && p.y < level_ && p.y >= bottom_ - kBottomTolerance && std::abs(p.x) <= half_extent_ &&
-           std::abs(p.z) <= half_extent_;
+    return has_water_ && std::abs(p.x) <= half_extent_ && std::abs(p.z) <= half_extent_ &&
+           p.y >= bottom_ - kBottomTolerance && p.y < surface_height(p.x, p.z);
 }
 
-std::optional<FlatWaterTransport::SurfaceHit> FlatWaterTransport::closest_receiver(const Ray& ray,
+std::optional<WaterTransport::SurfaceHit> WaterTransport::closest_receiver(const Ray& ray,
                                                                                     double max_distance) const {
     const auto hit = bvh_->closest_hit(ray, max_distance);
     if (!hit) return std::nullopt;
     return SurfaceHit{hit->distance, albedo_[hit->receiver], hit->normal};
 }
 
-bool FlatWaterTransport::sun_blocked_in_air(const glm::dvec3& point) const {
+bool WaterTransport::sun_blocked_in_air(const glm::dvec3& point) const {
     return bvh_->any_hit({point, -scene_.sun.direction}, kInfinity);
 }
 
-glm::dvec3 FlatWaterTransport::sun_irradiance_under_water(const glm::dvec3& point, const glm::dvec3& normal) const {
+glm::dvec3 WaterTransport::sun_irradiance_under_water(const glm::dvec3& point, const glm::dvec3& normal) const {
     if (!sun_up_) return glm::dvec3(0.0);
+    if (floor_caustics_) return floor_caustics_->irradiance(point.x, point.z);  // only the floor is under wavy water
     const double cos_receiver = std::max(0.0, -glm::dot(refracted_sun_, normal));
     if (cos_receiver == 0.0) return glm::dvec3(0.0);
     // Shadowed along the refracted beam by objects under the water, then along the
@@ -96,7 +174,7 @@ glm::dvec3 FlatWaterTransport::sun_irradiance_under_water(const glm::dvec3& poin
     return e_perp0_ * cos_receiver * exp3(-scene_.medium.sigma_t() * path);
 }
 
-glm::dvec3 FlatWaterTransport::receiver_radiance(const glm::dvec3& point, const SurfaceHit& hit,
+glm::dvec3 WaterTransport::receiver_radiance(const glm::dvec3& point, const SurfaceHit& hit,
                                                  glm::dvec3* caustic) const {
     glm::dvec3 irradiance;
     if (in_water(point)) {
@@ -116,7 +194,7 @@ glm::dvec3 FlatWaterTransport::receiver_radiance(const glm::dvec3& point, const 
     return hit.albedo * irradiance / std::numbers::pi;
 }
 
-glm::dvec3 FlatWaterTransport::radiance_in_air(const Ray& ray) const {
+glm::dvec3 WaterTransport::radiance_in_air(const Ray& ray) const {
     if (const auto hit = closest_receiver(ray, kInfinity)) {
         return receiver_radiance(ray.origin + hit->distance * ray.direction, *hit, nullptr);
     }
@@ -127,7 +205,7 @@ glm::dvec3 FlatWaterTransport::radiance_in_air(const Ray& ray) const {
     return radiance;
 }
 
-glm::dvec3 FlatWaterTransport::in_water_segment(double z0, double length, const glm::dvec3& direction,
+glm::dvec3 WaterTransport::in_water_segment(double z0, double length, const glm::dvec3& direction,
                                                 const glm::dvec3& behind) const {
     glm::dvec3 radiance;
     const glm::dvec3 sigma_t = scene_.medium.sigma_t();
@@ -139,26 +217,24 @@ glm::dvec3 FlatWaterTransport::in_water_segment(double z0, double length, const 
     return radiance;
 }
 
-glm::dvec3 FlatWaterTransport::radiance_in_water_to_receiver(const Ray& ray, glm::dvec3* caustic) const {
+glm::dvec3 WaterTransport::radiance_in_water_to_receiver(const Ray& ray, glm::dvec3* caustic) const {
     const auto hit = closest_receiver(ray, kInfinity);
     // A ray that leaves the water body without meeting a receiver sees nothing (the
     // scenes close their water with a floor or walls).
     const double length = hit ? hit->distance : 0.0;
     const glm::dvec3 behind =
         hit ? receiver_radiance(ray.origin + hit->distance * ray.direction, *hit, caustic) : glm::dvec3(0.0);
-    return in_water_segment(level_ - ray.origin.y, length, ray.direction, behind);
+    // A segment that starts in a crest above the mean level uses depth 0: the in-scatter
+    // follows the flat surface's beam (the stated approximation for wavy water).
+    return in_water_segment(std::max(0.0, level_ - ray.origin.y), length, ray.direction, behind);
 }
 
-PixelRadiance FlatWaterTransport::trace_camera_ray(const Ray& ray) const {
+PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray) const {
     PixelRadiance pixel;
     const bool camera_in_water = in_water(ray.origin);
-    // Where the ray meets the water's surface, if it does within the water's extent.
-    double to_surface = kInfinity;
-    if (has_water_ && ray.direction.y != 0.0) {
-        const double t = (level_ - ray.origin.y) / ray.direction.y;
-        const glm::dvec3 p = ray.origin + t * ray.direction;
-        if (t > 0.0 && std::abs(p.x) <= half_extent_ && std::abs(p.z) <= half_extent_) to_surface = t;
-    }
+    const std::optional<WaterHit> water_hit = water_surface_hit(ray);
+    const double to_surface = water_hit ? water_hit->distance : kInfinity;
+    const glm::dvec3 surface_normal = water_hit ? water_hit->normal : glm::dvec3(0.0, 1.0, 0.0);
     const auto receiver = closest_receiver(ray, to_surface);
 
     if (!camera_in_water) {
@@ -173,19 +249,22 @@ PixelRadiance FlatWaterTransport::trace_camera_ray(const Ray& ray) const {
         }
         // The surface from above: reflect into the air, refract into the water.
         const glm::dvec3 p = ray.origin + to_surface * ray.direction;
-        const glm::dvec3 up{0.0, 1.0, 0.0};
-        const double cos_i = -ray.direction.y;
+        const glm::dvec3 up = surface_normal;
+        // A wave's back face seen from above: grazing incidence, all reflected.
+        const double cos_i = std::max(0.0, -glm::dot(ray.direction, up));
         const double reflectance = fresnel_reflectance(cos_i, 1.0, ior_);
         const glm::dvec3 reflected = glm::reflect(ray.direction, up);
         const glm::dvec3 l_reflected = radiance_in_air({p + kOffset * up, reflected});
-        const glm::dvec3 refracted = *refract(ray.direction, up, 1.0 / ior_);
-        const glm::dvec3 l_water = radiance_in_water_to_receiver({p - kOffset * up, refracted}, &pixel.caustic);
+        glm::dvec3 l_water(0.0);
+        if (const auto refracted = refract(ray.direction, up, 1.0 / ior_); refracted && cos_i > 0.0) {
+            l_water = radiance_in_water_to_receiver({p - kOffset * up, *refracted}, &pixel.caustic);
+        }
         pixel.radiance = reflectance * l_reflected + (1.0 - reflectance) / (ior_ * ior_) * l_water;
         return pixel;
     }
 
     // Camera in the water.
-    const double z0 = level_ - ray.origin.y;
+    const double z0 = std::max(0.0, level_ - ray.origin.y);
     if (receiver) {
         const glm::dvec3 behind =
             receiver_radiance(ray.origin + receiver->distance * ray.direction, *receiver, &pixel.caustic);
@@ -198,8 +277,8 @@ PixelRadiance FlatWaterTransport::trace_camera_ray(const Ray& ray) const {
     }
     // The surface from below: Snell's window, total internal reflection outside it.
     const glm::dvec3 p = ray.origin + to_surface * ray.direction;
-    const glm::dvec3 down{0.0, -1.0, 0.0};
-    const double cos_i = ray.direction.y;
+    const glm::dvec3 down = -surface_normal;
+    const double cos_i = std::max(0.0, glm::dot(ray.direction, surface_normal));
     const double reflectance = fresnel_reflectance(cos_i, ior_, 1.0);
     glm::dvec3 at_surface =
         reflectance * radiance_in_water_to_receiver({p + kOffset * down, glm::reflect(ray.direction, down)}, nullptr);

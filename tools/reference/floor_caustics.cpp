@@ -1,0 +1,173 @@
+#include "tools/reference/floor_caustics.hpp"
+
+#include "tools/reference/optics.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vkw::ref {
+namespace {
+
+using Polygon = std::vector<glm::dvec2>;
+
+// Sutherland-Hodgman: the part of `polygon` on the side of the axis-aligned line
+// coordinate[axis] (>= or <=) bound.
+Polygon clip(const Polygon& polygon, int axis, double bound, bool keep_greater) {
+    Polygon out;
+    const size_t n = polygon.size();
+    for (size_t i = 0; i < n; ++i) {
+        const glm::dvec2& a = polygon[i];
+        const glm::dvec2& b = polygon[(i + 1) % n];
+        const bool a_in = keep_greater ? a[axis] >= bound : a[axis] <= bound;
+        const bool b_in = keep_greater ? b[axis] >= bound : b[axis] <= bound;
+        if (a_in) out.push_back(a);
+        if (a_in != b_in) {
+            const double t = (bound - a[axis]) / (b[axis] - a[axis]);
+            out.push_back(a + t * (b - a));
+        }
+    }
+    return out;
+}
+
+double area(const Polygon& polygon) {
+    double twice = 0.0;
+    for (size_t i = 0; i < polygon.size(); ++i) {
+        const glm::dvec2& a = polygon[i];
+        const glm::dvec2& b = polygon[(i + 1) % polygon.size()];
+        twice += a.x * b.y - b.x * a.y;
+    }
+    return 0.5 * std::abs(twice);
+}
+
+}  // namespace
+
+FloorCausticMap::FloorCausticMap(const Scene& scene, const WaterSurface& surface, uint32_t texels_per_side,
+                                 uint32_t cells_per_side)
+    : texels_(texels_per_side),
+      half_extent_(scene.floor.half_extent),
+      texel_size_(2.0 * scene.floor.half_extent / texels_per_side),
+      irradiance_(size_t{texels_per_side} * texels_per_side, glm::dvec3(0.0)) {
+    const glm::dvec3 s = scene.sun.direction;
+    if (s.y >= 0.0) return;  // sun below the horizon: no caustics
+    const double ior = scene.water->ior;
+    const double floor_y = scene.floor.height;
+    const glm::dvec3 sigma_t = scene.medium.sigma_t();
+    const double extent = scene.water->half_extent;
+    const uint32_t m = cells_per_side;
+    // The surface's vertices and their refracted rays, one row at a time.
+    struct Vertex {
+        glm::dvec3 position;
+        glm::dvec2 floor_hit;
+        double path;
+        bool valid;
+    };
+    auto vertex = [&](uint32_t i, uint32_t j) {
+        const double x0 = extent * (2.0 * i - m) / m, z0 = extent * (2.0 * j - m) / m;
+        const SurfacePoint p = surface.at_parameter(x0, z0);
+        Vertex v{p.position, {}, 0.0, false};
+        const auto t = refract(s, p.normal, 1.0 / ior);
+        if (!t || t->y > -1e-9) return v;  // a ray that does not go down reaches no floor
+        v.path = (p.position.y - floor_y) / -t->y;
+        const glm::dvec3 hit = p.position + v.path * *t;
+        v.floor_hit = {hit.x, hit.z};
+        v.valid = true;
+        return v;
+    };
+    std::vector<Vertex> previous(m + 1), current(m + 1);
+    for (uint32_t i = 0; i <= m; ++i) previous[i] = vertex(i, 0);
+    for (uint32_t j = 1; j <= m; ++j) {
+        for (uint32_t i = 0; i <= m; ++i) current[i] = vertex(i, j);
+        for (uint32_t i = 0; i < m; ++i) {
+            const Vertex* quad[4] = {&previous[i], &previous[i + 1], &current[i + 1], &current[i]};
+            for (const auto& triangle : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
+                const Vertex& a = *quad[triangle[0]];
+                const Vertex& b = *quad[triangle[1]];
+                const Vertex& c = *quad[triangle[2]];
+                if (!a.valid || !b.valid || !c.valid) continue;
+                // The beam's flux through the surface triangle (PHYSICS.md section 4).
+                glm::dvec3 normal = glm::cross(c.position - a.position, b.position - a.position);
+                const double twice_area = glm::length(normal);
+                if (twice_area == 0.0) continue;
+                normal /= twice_area;
+                if (normal.y < 0.0) normal = -normal;
+                const double cos_i = -glm::dot(s, normal);
+                if (cos_i <= 0.0) continue;  // faces away from the sun
+                const double transmittance = 1.0 - fresnel_reflectance(cos_i, 1.0, ior);
+                const double path = (a.path + b.path + c.path) / 3.0;
+                const glm::dvec3 attenuation{std::exp(-sigma_t.x * path), std::exp(-sigma_t.y * path),
+                                             std::exp(-sigma_t.z * path)};
+                const glm::dvec3 flux = scene.sun.irradiance * (cos_i * 0.5 * twice_area * transmittance) * attenuation;
+                const glm::dvec2 footprint[3] = {a.floor_hit, b.floor_hit, c.floor_hit};
+                deposit(footprint, flux);
+            }
+        }
+        std::swap(previous, current);
+    }
+}
+
+void FloorCausticMap::deposit(const glm::dvec2 footprint[3], const glm::dvec3& flux) {
+    const Polygon triangle{footprint[0], footprint[1], footprint[2]};
+    const double footprint_area = area(triangle);
+    auto texel_of = [&](double coordinate) {
+        return static_cast<int64_t>(std::floor((coordinate + half_extent_) / texel_size_));
+    };
+    const glm::dvec2 lo = glm::min(glm::min(footprint[0], footprint[1]), footprint[2]);
+    const glm::dvec2 hi = glm::max(glm::max(footprint[0], footprint[1]), footprint[2]);
+    const int64_t x0 = std::max<int64_t>(0, texel_of(lo.x)), x1 = std::min<int64_t>(texels_ - 1, texel_of(hi.x));
+    const int64_t z0 = std::max<int64_t>(0, texel_of(lo.y)), z1 = std::min<int64_t>(texels_ - 1, texel_of(hi.y));
+    const double texel_area = texel_size_ * texel_size_;
+    if (footprint_area < 1e-30) {
+        // A footprint collapsed to a point or a segment (a focus): all its flux lands in
+        // the texel of its centroid.
+        const glm::dvec2 centre = (footprint[0] + footprint[1] + footprint[2]) / 3.0;
+        const int64_t x = texel_of(centre.x), z = texel_of(centre.y);
+        if (x >= 0 && z >= 0 && x < texels_ && z < texels_) irradiance_[size_t(z) * texels_ + size_t(x)] += flux / texel_area;
+        return;
+    }
+    for (int64_t z = z0; z <= z1; ++z) {
+        for (int64_t x = x0; x <= x1; ++x) {
+            const double left = -half_extent_ + x * texel_size_, bottom = -half_extent_ + z * texel_size_;
+            Polygon part = clip(triangle, 0, left, true);
+            part = clip(part, 0, left + texel_size_, false);
+            part = clip(part, 1, bottom, true);
+            part = clip(part, 1, bottom + texel_size_, false);
+            if (part.size() < 3) continue;
+            irradiance_[size_t(z) * texels_ + size_t(x)] += flux * (area(part) / footprint_area / texel_area);
+        }
+    }
+}
+
+glm::dvec3 FloorCausticMap::irradiance(double x, double z) const {
+    const int64_t i = static_cast<int64_t>(std::floor((x + half_extent_) / texel_size_));
+    const int64_t j = static_cast<int64_t>(std::floor((z + half_extent_) / texel_size_));
+    if (i < 0 || j < 0 || i >= texels_ || j >= texels_) return glm::dvec3(0.0);
+    return irradiance_[size_t(j) * texels_ + size_t(i)];
+}
+
+glm::dvec3 FloorCausticMap::total_flux() const {
+    glm::dvec3 sum(0.0);
+    for (const glm::dvec3& e : irradiance_) sum += e;
+    return sum * texel_size_ * texel_size_;
+}
+
+RefinedFloorCaustics refine_floor_caustics(const Scene& scene, const WaterSurface& surface, uint32_t texels_per_side,
+                                           uint32_t coarse_cells_per_side) {
+    const FloorCausticMap coarse(scene, surface, texels_per_side, coarse_cells_per_side);
+    RefinedFloorCaustics refined;
+    refined.map = std::make_unique<FloorCausticMap>(scene, surface, texels_per_side, 2 * coarse_cells_per_side);
+    double mean = 0.0;
+    for (const glm::dvec3& e : coarse.texels()) mean += e.x + e.y + e.z;
+    mean /= 3.0 * coarse.texels().size();
+    double squared = 0.0, reference = 0.0;
+    for (size_t k = 0; k < coarse.texels().size(); ++k) {
+        const glm::dvec3 a = refined.map->texels()[k], b = coarse.texels()[k];
+        if (b.x + b.y + b.z < 3e-3 * mean) continue;
+        const glm::dvec3 d = a - b;
+        squared += glm::dot(d, d);
+        reference += glm::dot(a, a);
+    }
+    refined.relative_rms_change = reference > 0.0 ? std::sqrt(squared / reference) : 0.0;
+    return refined;
+}
+
+}  // namespace vkw::ref
