@@ -10,5 +10,8 @@ inline constexpr fg::BlackboardKey<fg::BufferHandle> kFrameConstants{"frame cons
 inline constexpr fg::BlackboardKey<fg::ImageHandle> kHdrColor{"HDR colour"};
 inline constexpr fg::BlackboardKey<fg::ImageHandle> kSceneDepth{"scene depth"};
 inline constexpr fg::BlackboardKey<fg::BufferHandle> kSceneOptics{"scene optics"};
+// R8_UNORM, output size: 1 where the pixel's camera ray starts in the water (published only
+// while the stencil split runs; passes/water_volume_stencil.hpp).
+inline constexpr fg::BlackboardKey<fg::ImageHandle> kCameraMedium{"camera medium"};
 
 }  // namespace vkw::keys

@@ -28,6 +28,7 @@ FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t
     constants.floor_plane = glm::vec4(static_cast<float>(scene.floor.height),
                                       static_cast<float>(scene.floor.half_extent), 0.0f, 0.0f);
     constants.floor_albedo = glm::vec4(glm::vec3(scene.floor.albedo), 0.0f);
+    constants.camera_near = glm::vec4(static_cast<float>(scene.camera.near_plane), 0.0f, 0.0f, 0.0f);
     constants.viewport = glm::vec4(static_cast<float>(width), static_cast<float>(height), 0.0f, 0.0f);
     constants.medium_sigma_t = glm::vec4(glm::vec3(scene.medium.sigma_t()), 0.0f);
     constants.medium_sigma_s = glm::vec4(glm::vec3(scene.medium.sigma_s), static_cast<float>(scene.medium.g));
@@ -35,8 +36,9 @@ FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t
         const Water& water = *scene.water;
         constants.water = glm::vec4(static_cast<float>(water.level), static_cast<float>(water.ior),
                                     static_cast<float>(water.half_extent), 1.0f);
-        // Height exactly at the level counts as above the water. The stencil split of the
-        // shading issue replaces this per-frame test with a per-pixel one.
+        // Height exactly at the level counts as above the water. This per-frame test is the
+        // fallback for frames whose stencil split is culled (passes/water_volume_stencil.hpp
+        // classifies every pixel otherwise).
         const glm::dvec3 eye = scene.camera.position;
         const bool inside = eye.y < water.level && eye.y >= water_bottom(scene) &&
                             std::abs(eye.x) <= water.half_extent && std::abs(eye.z) <= water.half_extent;

@@ -34,7 +34,8 @@ struct alignas(16) FrameConstants {
     glm::vec4 water;           // x: level, y: ior, z: half extent, w: has water
     glm::vec4 medium_sigma_t;
     glm::vec4 medium_sigma_s;  // w: g
-    glm::vec4 camera_medium;   // x: camera in the water
+    glm::vec4 camera_medium;   // x: camera in the water (per frame; the stencil split refines it per pixel)
+    glm::vec4 camera_near;     // x: near-plane distance, m (the stencil split's clip depth)
 };
 static_assert(sizeof(FrameConstants) % 16 == 0, "std140 blocks are a multiple of 16 bytes");
 

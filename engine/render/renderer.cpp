@@ -12,9 +12,11 @@
 #include "passes/water_shading.hpp"
 #include "passes/water_surface.hpp"
 #include "passes/water_surface_spectrum.hpp"
+#include "passes/water_volume_stencil.hpp"
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 
 namespace vkw {
 
@@ -27,13 +29,21 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
     passes::add_frame_constants_upload(graph, constants);
     passes::add_scene_optics_pass(graph);
     passes::add_sky_pass(graph);
-    passes::add_floor_pass(graph);
+    // The surface grid comes first: the stencil split, which the floor reads, draws it.
+    std::optional<fg::BufferHandle> surface;
     if (scene.water && graph.needs().needs(fg::Effect::Water)) {
         const Water& water = *scene.water;
         passes::WaterSurfaceInputs inputs{water.level, water.half_extent, water.grid_resolution, water.time,
                                           water.waves, ocean};
-        passes::add_water_shading_pass(graph, passes::add_water_surface_pass(graph, inputs), water.grid_resolution);
+        surface = passes::add_water_surface_pass(graph, inputs);
+        // Without it (culled: no ray can start in the water) the shading falls back to the
+        // per-frame camera medium of the frame constants.
+        if (graph.needs().needs(fg::Effect::UnderwaterView)) {
+            passes::add_water_volume_stencil_passes(graph, *surface, water.grid_resolution, water_bottom(scene));
+        }
     }
+    passes::add_floor_pass(graph);
+    if (surface) passes::add_water_shading_pass(graph, *surface, scene.water->grid_resolution);
     passes::add_readback_pass(graph, graph.blackboard().get(keys::kHdrColor), readback, hdr_bytes(width, height));
 }
 

@@ -217,6 +217,7 @@ uint32_t format_texel_bytes(VkFormat format) {
         case VK_FORMAT_D32_SFLOAT:
         case VK_FORMAT_D24_UNORM_S8_UINT: return 4;
         case VK_FORMAT_R16_SFLOAT: return 2;
+        case VK_FORMAT_R8_UNORM: return 1;
         case VK_FORMAT_R32G32_SFLOAT:
         case VK_FORMAT_R16G16B16A16_SFLOAT:
         case VK_FORMAT_D32_SFLOAT_S8_UINT: return 8;
@@ -232,6 +233,7 @@ const char* format_name(VkFormat format) {
         case VK_FORMAT_R8G8B8A8_SRGB: return "RGBA8_SRGB";
         case VK_FORMAT_B8G8R8A8_SRGB: return "BGRA8_SRGB";
         case VK_FORMAT_R32_SFLOAT: return "R32F";
+        case VK_FORMAT_R8_UNORM: return "R8_UNORM";
         case VK_FORMAT_R32_UINT: return "R32_UINT";
         case VK_FORMAT_R32G32_SFLOAT: return "RG32F";
         case VK_FORMAT_R16G16_SFLOAT: return "RG16F";

@@ -22,7 +22,9 @@ layout(set = 0, binding = 0, std140) uniform FrameConstants {
     vec4 water;               // x: mean level y, y: index of refraction, z: half extent, w: 1 if the scene has water
     vec4 medium_sigma_t;      // rgb: extinction, 1/m
     vec4 medium_sigma_s;      // rgb: scattering, 1/m; w: Henyey-Greenstein g
-    vec4 camera_medium;       // x: 1 if the camera is in the water (flat-level test until the stencil split lands)
+    vec4 camera_medium;       // x: 1 if the camera is in the water (per frame, from the mean level; the fallback when
+                              //    the stencil split is culled, see water_shading/camera_medium.glsl)
+    vec4 camera_near;         // x: near-plane distance, m (the stencil split's clip depth)
 } frame;
 
 #endif

@@ -1,9 +1,10 @@
-#version 450
-#extension GL_GOOGLE_include_directive : require
 // The floor as a Lambertian receiver: lit by the sun and the sky above the water, by
 // the refracted sun (flat-surface stand-in) and the transmitted skylight below it.
-// Seen from a camera in the water, the view path attenuates and scatters.
+// Seen from a camera in the water, the view path attenuates and scatters. The body of
+// floor.frag and floor_per_pixel.frag, which differ only in where the camera's medium
+// comes from (water_shading/camera_medium.glsl).
 #include "common/medium.glsl"
+#include "water_shading/camera_medium.glsl"
 #include "water_shading/underwater_light.glsl"
 
 layout(set = 0, binding = 1, std430) readonly buffer Optics { SceneOptics optics; };
@@ -14,7 +15,7 @@ layout(location = 0) out vec4 out_radiance;
 void main() {
     vec3 p = in_world_position;
     vec3 radiance = lambert_radiance(frame.floor_albedo.rgb, receiver_irradiance(p, vec3(0.0, 1.0, 0.0), optics));
-    if (frame.camera_medium.x > 0.5) {
+    if (camera_in_water()) {
         vec3 eye = frame.camera_position.xyz;
         radiance = water_path_radiance(frame.medium_sigma_s.rgb, frame.medium_sigma_t.rgb, frame.medium_sigma_s.w,
                                        max(0.0, frame.water.x - eye.y), distance(eye, p), normalize(p - eye),

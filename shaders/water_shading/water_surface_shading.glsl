@@ -1,14 +1,14 @@
-#version 450
-#extension GL_GOOGLE_include_directive : require
 // The water surface with the simplest correct lookups (PHYSICS.md sections 1-3, 6, 7):
 // exact Fresnel and total internal reflection, the sky and the sun's disk in reflection,
 // refraction down to the floor plane, radiance scaled by n^2 across the surface, sigma_t
 // attenuation and single scattering along every path in the water. From above and, for
-// a camera in the water, from below (Snell's window).
+// a camera in the water, from below (Snell's window). The body of water_surface.frag and
+// water_surface_per_pixel.frag, which differ only in where the camera's medium comes from.
 #include "common/camera_ray.glsl"
 #include "common/fresnel.glsl"
 #include "common/medium.glsl"
 #include "common/sky.glsl"
+#include "water_shading/camera_medium.glsl"
 #include "water_shading/underwater_light.glsl"
 
 layout(set = 0, binding = 1, std430) readonly buffer Optics { SceneOptics optics; };
@@ -35,7 +35,7 @@ void main() {
     vec3 v = normalize(p - eye);
     float n = frame.water.y;
 
-    if (frame.camera_medium.x < 0.5) {
+    if (!camera_in_water()) {
         // From the air. A wave's back face seen from above keeps a grazing cosine of 0.
         Fresnel f = fresnel_exact(max(0.0, -dot(v, normal)), 1.0, n);
         vec3 reflected = sky_radiance(reflect(v, normal));

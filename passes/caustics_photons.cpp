@@ -1,0 +1,113 @@
+// add_caustic_photon_pass (caustics_photons.hpp).
+#include "passes/caustics_photons.hpp"
+
+#include "engine/framegraph/pass_context.hpp"
+#include "engine/vk/context.hpp"
+#include "passes/caustics_bands.hpp"
+#include "passes/water_surface.hpp"
+
+#include <cstring>
+
+namespace vkw::passes {
+namespace {
+
+constexpr uint32_t kGroupSide = 8;   // local_size of caustic_photons.comp
+constexpr uint32_t kMaxGroups = 65535;
+
+// Mirrors the push constants of shaders/caustics/caustic_photons.comp.
+struct CausticPhotonPush {
+    CausticLightSpacePush space;
+    float deposit_scale[4];
+    float sigma_t[4];
+    uint32_t resolution, sub, first_row, rows, band_first, band_rows, pad0, pad1;
+};
+static_assert(sizeof(CausticPhotonPush) == 128, "the push-constant size every device supports");
+
+CausticPhotonPush photon_push(const CausticInputs& in) {
+    const CausticMapFrame frame = fit_caustic_map(in);
+    CausticPhotonPush push{};
+    push.space = caustic_light_space_push(frame, in);
+    for (int c = 0; c < 3; ++c) {
+        push.deposit_scale[c] = frame.sun_up ? float(in.sun_irradiance[c] / frame.lsb[c]) : 0.0f;
+        push.sigma_t[c] = float(in.sigma_t[c]);
+    }
+    push.resolution = in.grid_resolution;
+    push.sub = in.sub_photons;
+    return push;
+}
+
+uint32_t groups(uint64_t invocations) { return static_cast<uint32_t>((invocations + kGroupSide - 1) / kGroupSide); }
+
+}  // namespace
+
+fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInputs& inputs) {
+    const CausticPhotonPush push = photon_push(inputs);  // checks the inputs
+    const VkDeviceSize bytes = caustic_flux_bytes(inputs.map_width, inputs.map_height);
+
+    struct Clear {
+        fg::BufferHandle flux;
+    };
+    const auto& clear = graph.add_pass<Clear>(
+        "caustic flux clear", fg::PassKind::Transfer,
+        [&](fg::PassBuilder& builder, Clear& d) {
+            d.flux = builder.copy_destination(builder.create_buffer("caustic flux", {bytes}));
+        },
+        [](const Clear& d, fg::PassContext& context) {
+            vkCmdFillBuffer(context.cmd(), context.buffer(d.flux), 0, VK_WHOLE_SIZE, 0);
+        });
+
+    struct Data {
+        fg::BufferHandle surface, flux;
+    };
+    const fg::BufferHandle cleared = clear.flux;
+    const auto& data = graph.add_pass<Data>(
+        "caustic photons", fg::PassKind::Compute,
+        [&](fg::PassBuilder& builder, Data& d) {
+            const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+            d.surface = builder.read_storage(inputs.surface, stage);
+            d.flux = builder.read_write_storage(cleared, stage);
+        },
+        [push](const Data& d, fg::PassContext& context) {
+            ComputePipelineDesc desc;
+            desc.shader = "caustics/caustic_photons.comp";
+            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
+                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
+                                    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
+            desc.layout.push_constant_bytes = sizeof(CausticPhotonPush);
+            const Pipeline& pipeline = context.pipeline("caustic photons", desc);
+            const VkPhysicalDeviceLimits& limits = context.context().properties().limits;
+            const uint32_t r = push.resolution, s = push.sub;
+            // Cell rows j .. j + rows read vertex rows j .. j + rows: one extra row per chunk.
+            const auto chunks = row_bands(r, VkDeviceSize{r + 1} * kWaterVertexBytes, 0, 1,
+                                          limits.maxStorageBufferRange, limits.minStorageBufferOffsetAlignment,
+                                          kMaxGroups * kGroupSide / s);
+            const uint32_t width = static_cast<uint32_t>(push.space.u_axis[3]);
+            const uint32_t height = static_cast<uint32_t>(push.space.v_axis[3]);
+            const auto bands = row_bands(height, VkDeviceSize{width} * kCausticTexelBytes, kCausticFluxHeaderBytes, 0,
+                                         limits.maxStorageBufferRange, limits.minStorageBufferOffsetAlignment, height);
+            fg::DescriptorBinding lost = context.storage_buffer(2, d.flux);
+            lost.buffer.offset = 0;
+            lost.buffer.range = kCausticFluxHeaderBytes;
+            for (const RowBand& chunk : chunks) {
+                fg::DescriptorBinding surface = context.storage_buffer(0, d.surface);
+                surface.buffer.offset = chunk.offset;
+                surface.buffer.range = chunk.bytes;
+                for (const RowBand& band : bands) {
+                    fg::DescriptorBinding flux = context.storage_buffer(1, d.flux);
+                    flux.buffer.offset = band.offset;
+                    flux.buffer.range = band.bytes;
+                    CausticPhotonPush p = push;
+                    p.first_row = chunk.first;
+                    p.rows = chunk.rows;
+                    p.band_first = band.first;
+                    p.band_rows = band.rows;
+                    context.bind(pipeline, {surface, flux, lost});
+                    context.push_constants(pipeline, p);
+                    vkCmdDispatch(context.cmd(), groups(uint64_t{r} * s), groups(uint64_t{chunk.rows} * s), 1);
+                }
+            }
+        });
+    return data.flux;
+}
+
+}  // namespace vkw::passes

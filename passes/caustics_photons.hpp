@@ -1,0 +1,29 @@
+// The photon grid of the surface caustics (issue 7 items 2-4, the floor plane as the receiver):
+// one compute pass that traces S x S photons per cell of the GPU water grid (S = 1: one photon per
+// cell, its intercepted area the cell's true vector area; shaders/caustics/caustic_photon.glsl),
+// refracts them with the exact Fresnel of common/fresnel.glsl, carries them to the floor plane,
+// and splats each photon's flux
+//   Phi = E_s max(0, -s.a) T(theta_i) exp(-sigma_t l)      (a: the sub-cell's vector area)
+// with a 2x2 bilinear kernel (weights sum to one exactly, in integers) into the light-space
+// caustic flux map of fit_caustic_map, accumulated with uint64 fixed-point atomics
+// (caustics_light_space.hpp gives the LSB and the headroom), so two runs are bit-identical.
+// Dropped photons: the cell faces away from the sun, the refracted ray points up
+// (t.y > -1e-6), the surface lies below the floor, or the sun is not above the horizon. No jitter.
+// Not yet (issue 7): general receivers through a light-space position map (Shah et al.'s
+// iteration), the camera-depth fallback, occluders, density-adaptive kernel size, blur.
+//
+// Chunked: cell rows are dispatched in chunks whose vertex rows fit one binding, map rows in bands
+// that fit one binding (caustics_bands.hpp); every dispatch stays within 65535 groups per side.
+#pragma once
+
+#include "engine/framegraph/frame_graph.hpp"
+#include "passes/caustics_light_space.hpp"
+
+namespace vkw::passes {
+
+// Adds the clear of the flux buffer (transfer) and the photon pass (compute) and returns the
+// flux buffer: caustic_flux_bytes(W, H) bytes, laid out as caustics_bands.hpp says, in units of
+// fit_caustic_map(inputs).lsb. Throws vkw::InternalError for inputs out of range.
+fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInputs& inputs);
+
+}  // namespace vkw::passes

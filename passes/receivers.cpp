@@ -1,0 +1,53 @@
+#include "passes/receivers.hpp"
+
+#include "engine/framegraph/pass_context.hpp"
+#include "engine/render/blackboard_keys.hpp"
+
+namespace vkw::passes {
+
+void add_receivers_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes) {
+    struct Data {
+        fg::BufferHandle constants, optics, vertices, indices;
+        fg::ImageHandle hdr, depth;
+    };
+    const auto& data = graph.add_pass<Data>(
+        "receivers", fg::PassKind::Graphics,
+        [&](fg::PassBuilder& builder, Data& d) {
+            d.constants = builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants),
+                                                 VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
+                                                     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            d.optics = builder.read_storage(graph.blackboard().get(keys::kSceneOptics));
+            d.vertices = builder.vertex_buffer(meshes.import_vertices(graph));
+            d.indices = builder.index_buffer(meshes.import_indices(graph));
+            d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
+            d.depth = builder.depth_stencil_attachment(graph.blackboard().get(keys::kSceneDepth), fg::LoadOp::Load);
+        },
+        [&meshes](const Data& d, fg::PassContext& context) {
+            GraphicsPipelineDesc desc;
+            desc.vertex_shader = "receivers/mesh.vert";
+            desc.fragment_shader = "receivers/mesh.frag";
+            constexpr VkShaderStageFlags both = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, both},
+                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}};
+            desc.layout.push_constant_bytes = sizeof(glm::vec4);
+            desc.vertex_bindings = {{0, 6 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX}};
+            desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
+                                      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 3 * sizeof(float)}};
+            desc.depth_test = true;
+            desc.depth_write = true;
+            const Pipeline& pipeline = context.pipeline("receivers", desc);
+            context.bind(pipeline, {context.uniform_buffer(0, d.constants), context.storage_buffer(1, d.optics)});
+            const VkBuffer vertex_buffer = context.buffer(d.vertices);
+            const VkDeviceSize offset = 0;
+            vkCmdBindVertexBuffers(context.cmd(), 0, 1, &vertex_buffer, &offset);
+            vkCmdBindIndexBuffer(context.cmd(), context.buffer(d.indices), 0, VK_INDEX_TYPE_UINT32);
+            for (const ReceiverDraw& draw : meshes.draws()) {
+                context.push_constants(pipeline, glm::vec4(draw.albedo, 0.0f));
+                vkCmdDrawIndexed(context.cmd(), draw.index_count, 1, draw.first_index, draw.vertex_offset, 0);
+            }
+        });
+    graph.blackboard().put(keys::kHdrColor, data.hdr);
+    graph.blackboard().put(keys::kSceneDepth, data.depth);
+}
+
+}  // namespace vkw::passes

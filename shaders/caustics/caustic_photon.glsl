@@ -1,0 +1,71 @@
+// One caustic photon (issue 7 item 2, PHYSICS.md sections 4 and 8): sub-cell (a, b) of cell
+// (i, j) of the GPU water grid (passes/water_surface.hpp), refracted with the exact Fresnel of
+// common/fresnel.glsl and carried to the floor plane. Shared by the fixed-point kernel and any
+// other splat variant, so that they trace identical photons.
+#ifndef VKWATER_CAUSTIC_PHOTON_GLSL
+#define VKWATER_CAUSTIC_PHOTON_GLSL
+
+#include "caustics/caustic_light_space.glsl"
+#include "common/fresnel.glsl"
+#include "water/water_vertex.glsl"
+
+// A refracted ray whose y component is above -kCausticUpEpsilon is dropped: it points up or runs
+// so flat that the division by t.y would send it arbitrarily far (PHYSICS.md section 8).
+const float kCausticUpEpsilon = 1e-6;
+
+struct CausticPhoton {
+    vec3 hit;     // where the refracted ray meets the floor plane
+    vec3 energy;  // per RGB: max(0, -s.a) T(theta_i) exp(-sigma_t l), a the sub-cell's vector area;
+                  // times E_s this is the photon's flux Phi (W)
+};
+
+// The four corners of one grid cell, as the GPU surface wrote them.
+struct CausticCell {
+    WaterVertex v00, v10, v01, v11;  // (i, j), (i + 1, j), (i, j + 1), (i + 1, j + 1)
+};
+
+// The bilinear patch through the cell's corners at (x, y) in [0, 1]^2. mix(a, b, 0) is exactly a,
+// so with one photon per cell the sub-cell's corners are the grid's vertices bit for bit.
+vec3 caustic_patch_point(CausticCell c, vec2 uv) {
+    return mix(mix(c.v00.position.xyz, c.v10.position.xyz, uv.x), mix(c.v01.position.xyz, c.v11.position.xyz, uv.x),
+               uv.y);
+}
+vec3 caustic_patch_normal(CausticCell c, vec2 uv) {
+    return mix(mix(c.v00.normal.xyz, c.v10.normal.xyz, uv.x), mix(c.v01.normal.xyz, c.v11.normal.xyz, uv.x), uv.y);
+}
+
+// Traces the photon of the sub-cell [uv0, uv1] of the patch. False when it carries nothing: the
+// sub-cell faces away from the sun (its projected area or the cosine at its centre is not
+// positive), the refracted ray points up, or the surface lies below the floor.
+// Intercepted area: the sub-cell's vector area a = (d2 x d1) / 2 from its diagonals, which is
+// exactly |dP/du x dP/dv| du dv (times the unit normal) at the centre of a bilinear patch; for a
+// heightfield -s.a = (cos theta_s - u_h . grad h) dA_h, PHYSICS.md section 4's intercepted area,
+// so no slope factor is applied again.
+// Optics (Fresnel, refraction): the interpolated vertex normals at the centre, which are the
+// surface model's analytic normals rather than the chord's.
+bool trace_caustic_photon(CausticCell cell, vec2 uv0, vec2 uv1, CausticLightSpace space, vec3 sigma_t,
+                          out CausticPhoton photon) {
+    photon = CausticPhoton(vec3(0.0), vec3(0.0));
+    const vec3 s = space.sun.xyz;
+    const float n = space.sun.w;
+    const vec3 c00 = caustic_patch_point(cell, uv0), c11 = caustic_patch_point(cell, uv1);
+    const vec3 c10 = caustic_patch_point(cell, vec2(uv1.x, uv0.y)), c01 = caustic_patch_point(cell, vec2(uv0.x, uv1.y));
+    // u runs along x and v along z: (c01 - c10) x (c11 - c00) points up (+y) on a flat cell.
+    const vec3 area = 0.5 * cross(c01 - c10, c11 - c00);
+    const float projected = -dot(s, area);
+    const vec2 centre = 0.5 * (uv0 + uv1);
+    const vec3 p = caustic_patch_point(cell, centre);
+    const vec3 normal = normalize(caustic_patch_normal(cell, centre));
+    const float cos_i = -dot(s, normal);
+    if (!(projected > 0.0) || !(cos_i > 0.0)) return false;
+    vec3 t;
+    if (!refract_direction(s, normal, 1.0 / n, t) || t.y > -kCausticUpEpsilon) return false;
+    const float l = (p.y - space.origin.w) / (-t.y);  // path length in the water
+    if (!(l >= 0.0)) return false;
+    const Fresnel fresnel = fresnel_exact(cos_i, 1.0, n);
+    photon.hit = p + l * t;
+    photon.energy = (projected * fresnel.T) * exp(-sigma_t * l);
+    return true;
+}
+
+#endif

@@ -1,0 +1,79 @@
+#version 460
+// Photon grid -> light-space caustic flux, accumulated deterministically in 64-bit fixed point
+// (passes/caustics_photons.hpp). One invocation per photon: sub-cell (a, b) of cell (i, j),
+// invocation (i S + a, j_local S + b). Each photon's flux, in units of the map's LSB, is rounded
+// once to an integer q and split over the 2x2 bilinear footprint by integer subtraction, so the
+// four taps sum to q exactly (a normalised kernel with no rounding drift) and integer addition
+// makes the result independent of the order the atomics land in.
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_shader_atomic_int64 : require
+
+#include "caustics/caustic_photon.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+// The vertex rows first_row .. first_row + rows of the grid (a chunk's binding).
+layout(set = 0, binding = 0, std430) readonly buffer Surface { WaterVertex vertices[]; };
+// The map rows band_first .. band_first + band_rows - 1, three uint64 per texel (R, G, B).
+layout(set = 0, binding = 1, std430) buffer Flux { uint64_t flux[]; };
+// Flux whose kernel tap fell outside the map, per channel (added by the band-0 dispatches only).
+layout(set = 0, binding = 2, std430) buffer Lost { uint64_t lost[]; };
+
+// Mirrors CausticPhotonPush in passes/caustics_photons.cpp (128 bytes, the guaranteed minimum).
+layout(push_constant) uniform Push {
+    CausticLightSpace space;
+    vec4 deposit_scale;  // rgb: E_s / LSB per channel (0 for a sun at or below the horizon)
+    vec4 sigma_t;        // rgb: extinction, 1/m
+    uint resolution;     // R cells per side
+    uint sub;            // S: S x S photons per cell
+    uint first_row;      // first cell row of this chunk
+    uint rows;           // cell rows in this chunk
+    uint band_first;     // first map row of this band
+    uint band_rows;      // map rows in this band
+    uint pad0, pad1;
+} pc;
+
+void deposit(ivec2 texel, uint channel, uint64_t q) {
+    if (q == 0ul) return;
+    if (texel.x < 0 || texel.y < 0 || texel.x >= int(pc.space.u_axis.w) || texel.y >= int(pc.space.v_axis.w)) {
+        if (pc.band_first == 0u) atomicAdd(lost[channel], q);
+        return;
+    }
+    const int row = texel.y - int(pc.band_first);
+    if (row < 0 || row >= int(pc.band_rows)) return;  // another band's dispatch adds it
+    atomicAdd(flux[(uint(row) * uint(pc.space.u_axis.w) + uint(texel.x)) * 3u + channel], q);
+}
+
+// round(q w) for w in [0, 1], never above q (float(q) is exact: q came from a float).
+uint64_t share(uint64_t q, float w) { return min(uint64_t(float(q) * w + 0.5), q); }
+
+void main() {
+    const uint S = pc.sub;
+    const uvec2 g = gl_GlobalInvocationID.xy;
+    if (g.x >= pc.resolution * S || g.y >= pc.rows * S) return;
+    const uvec2 cell = g / S;
+    const uint row = pc.resolution + 1u;
+    const uint k = cell.y * row + cell.x;
+    const CausticCell c = CausticCell(vertices[k], vertices[k + 1u], vertices[k + row], vertices[k + row + 1u]);
+    const vec2 uv0 = vec2(g % S) / float(S), uv1 = vec2(g % S + 1u) / float(S);
+    CausticPhoton photon;
+    if (!trace_caustic_photon(c, uv0, uv1, pc.space, pc.sigma_t.rgb, photon)) return;
+
+    const vec3 q = pc.deposit_scale.rgb * photon.energy;
+    const vec2 coord = caustic_texel_coord(photon.hit, pc.space) - 0.5;
+    // Far off the map (or not a number): every tap is outside, and int() of it is undefined.
+    const bool far = !all(lessThan(abs(coord), vec2(1e7)));
+    const vec2 base = far ? vec2(-2.0) : floor(coord);
+    const vec2 f = far ? vec2(0.0) : coord - base;
+    const ivec2 t0 = ivec2(base);
+    for (uint ch = 0u; ch < 3u; ++ch) {
+        const uint64_t total = uint64_t(q[ch] + 0.5);
+        const uint64_t x0 = share(total, 1.0 - f.x), x1 = total - x0;
+        const uint64_t x0y0 = share(x0, 1.0 - f.y), x1y0 = share(x1, 1.0 - f.y);
+        deposit(t0, ch, x0y0);
+        deposit(t0 + ivec2(0, 1), ch, x0 - x0y0);
+        deposit(t0 + ivec2(1, 0), ch, x1y0);
+        deposit(t0 + ivec2(1, 1), ch, x1 - x1y0);
+    }
+}

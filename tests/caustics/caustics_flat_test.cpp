@@ -1,0 +1,142 @@
+// Flat water (PHYSICS.md section 3): the floor irradiance read through caustic_lookup.glsl equals
+// E_s cos(theta_s) T exp(-sigma_t d / cos(theta_t)), and with n = 1 the map is uniform to its
+// rounding. The sun travels in the y-z plane, where the branchless basis gives u = +x exactly and
+// v in the y-z plane, and W - 2 = H - 2 = R: the photons' lattice in light space then has exactly
+// one texel of spacing along both axes, and a bilinear splat of such a lattice sums to the same
+// value in every texel for any phase (sum over k of tent(x - k) = 1), so uniformity is exact up
+// to rounding.
+#include "tests/caustics/caustics_support.hpp"
+#include "tests/support/gpu_test.hpp"
+
+#include <cstdio>
+
+namespace vkw::test {
+namespace {
+
+constexpr double kE = 8.0, kFloor = -2.0;
+constexpr uint32_t kR = 64;
+
+passes::WaterSurfaceInputs flat_surface() {
+    passes::WaterSurfaceInputs s;
+    s.level = 0.0;
+    s.half_extent = kE;
+    s.grid_resolution = kR;
+    return s;
+}
+
+passes::CausticInputs flat_caustics(double zenith_deg, double ior) {
+    passes::CausticInputs c;
+    c.sun_direction = sun_at(zenith_deg, {0.0, 0.0, 1.0});
+    c.sun_irradiance = {1.0, 2.0, 0.5};
+    c.ior = ior;
+    c.sigma_t = {0.3, 0.1, 0.05};
+    c.floor_height = kFloor;
+    c.map_width = c.map_height = kR + 2;
+    return c;
+}
+
+using caustics_flat = GpuTest;
+
+// (a) Elevations 90, 60 and 30 degrees (zenith 0, 30, 60), n = 1.333.
+TEST_F(caustics_flat, FloorIrradianceMatchesSection3) {
+    double worst = 0.0;
+    for (const double zenith : {0.0, 30.0, 60.0}) {
+        passes::CausticInputs in = flat_caustics(zenith, 1.333);
+        const double cos_s = -in.sun_direction.y, d = -kFloor;
+        double cos_t = 0.0;
+        const double t = fresnel_t(cos_s, in.ior, &cos_t);
+        const glm::dvec3 expected = in.sun_irradiance * cos_s * t * glm::exp(-in.sigma_t * (d / cos_t));
+        // The lit floor: the water's extent shifted along the refracted ray; probes 3 cells inside it,
+        // where every texel the lookup reads has all its photon neighbours.
+        const double shift = d * (in.sun_direction.z / in.ior) / cos_t;
+        const double h = 2.0 * kE / kR, inner = kE - 3.0 * h;
+        ProbeGrid probes;
+        probes.count_x = probes.count_z = 41;
+        probes.corner = {-inner, kFloor, shift - inner};
+        probes.step_x = {2.0 * inner / 40, 0.0, 0.0};
+        probes.step_z = {0.0, 0.0, 2.0 * inner / 40};
+        const CausticRun run = run_caustics(context(), flat_surface(), in, probes);
+        const passes::CausticMapFrame frame = passes::fit_caustic_map(in);
+
+        // Tolerance, relative, first order in u = 2^-24:
+        // - a photon's flux: the vector area (3 differences, 2 products and a sum: 6 u), -s.a
+        //   (s rounded, one product: 2 u), T (fresnel_exact's ~16 operations, each at most u, on
+        //   R <= 0.06: 16 u), the path length (refracted t.y ~8 u, the quotient: 10 u relative)
+        //   entering exp through the optical depth x = sigma_t l (10 u x), exp itself (2 u), the
+        //   three products (3 u) and the uint64 rounding of the total (u): (30 + 10 x) u;
+        // - a photon's light-space coordinate: the patch centre (|P| 3 u), P + l t (l's 18 u
+        //   times l, and |hit| u), the difference with the origin and the dot with the axis
+        //   (|P - o| 3 u, the axis's own rounding u): delta = u (4 |hit| + 18 l + 4 |P - o|) /
+        //   texel, in texels; a texel gathers at most 4 photons whose weights each move by at
+        //   most 2 delta: 8 delta;
+        // - the resolve and the lookup: float(uint64) (u), the factor (u), four bilinear weights
+        //   and their sum (4 u), |s.N| (u): 7 u;
+        // - the fixed point: at most 4 taps per texel, each rounded by at most 1 LSB, and
+        //   LSB <= 1e-9 of the flat texel flux: 4e-9.
+        const double l = d / cos_t;
+        const double x = std::max({in.sigma_t.x, in.sigma_t.y, in.sigma_t.z}) * l;
+        const double coord = 2.0 * kE + 2.0 * d + 2.0 * frame.texel.x;  // bound on |hit|, |P - o|
+        const double delta = kUnit * (8.0 * coord + 18.0 * l) / std::min(frame.texel.x, frame.texel.y);
+        const double tolerance = (30.0 + 10.0 * x) * kUnit + 8.0 * delta + 7.0 * kUnit + 4e-9;
+
+        EXPECT_EQ(run.lost(0) + run.lost(1) + run.lost(2), 0u);
+        double ratio = 0.0;
+        for (size_t k = 0; k < run.probes.size() / 4; ++k) {
+            for (int c = 0; c < 3; ++c) {
+                const double error = std::abs(run.probes[4 * k + c] / expected[c] - 1.0);
+                ratio = std::max(ratio, error / tolerance);
+                if (error > tolerance) {
+                    ADD_FAILURE() << "zenith " << zenith << " probe " << k << " channel " << c << ": "
+                                  << run.probes[4 * k + c] << " vs " << expected[c];
+                    break;
+                }
+            }
+        }
+        std::printf("zenith %4.1f: E expected %.6f %.6f %.6f, tolerance %.2e relative, worst error/tolerance %.4f\n",
+                    zenith, expected.x, expected.y, expected.z, tolerance, ratio);
+        worst = std::max(worst, ratio);
+    }
+    std::printf("worst error / tolerance over all suns: %.4f\n", worst);
+}
+
+// (b) n = 1, no jitter, vertical sun, one and four photons per cell, photon lattice aligned with
+// the texels: every interior texel equal.
+TEST_F(caustics_flat, RefractionFreeMapIsUniform) {
+    for (const uint32_t sub : {1u, 2u}) {
+        passes::CausticInputs in = flat_caustics(0.0, 1.0);
+        in.sigma_t = glm::dvec3(0.0);
+        in.sub_photons = sub;
+        const CausticRun run = run_caustics(context(), flat_surface(), in);
+        const passes::CausticMapFrame frame = passes::fit_caustic_map(in);
+        const uint32_t w = frame.width;
+        // Interior: texels 2 .. W - 3, away from the one-texel border and the partly covered edge.
+        for (int c = 0; c < 3; ++c) {
+            double lo = 1e300, hi = 0.0;
+            for (uint32_t y = 2; y + 2 < frame.height; ++y) {
+                for (uint32_t x = 2; x + 2 < w; ++x) {
+                    const double e = run.irradiance[4 * (size_t(y) * w + x) + c];
+                    lo = std::min(lo, e);
+                    hi = std::max(hi, e);
+                }
+            }
+            // Bound, relative: max(LSB x deposits per texel, 2^-24 max|coordinate| / texel size),
+            // both with their counts. A texel gathers at most (2 S - 1 + 1)^2 = 4 S^2 taps, each
+            // rounded by at most 1 LSB = 1e-9 of the flat texel flux. A photon's coordinate is off
+            // by at most 8 u max|coordinate| / texel texels (as in FloorIrradianceMatchesSection3),
+            // moving the taps of at most 4 S^2 photons of flux 1/S^2 each by twice that; the
+            // photons' own fluxes differ by the rounding of their area and products, 16 u.
+            const double lsb_term = 4.0 * sub * sub * 1e-9;
+            const double coord = 2.0 * kE + 2.0 * frame.texel.x;
+            const double coord_term = 8.0 * (8.0 * kUnit * coord / frame.texel.x) + 16.0 * kUnit;
+            const double bound = std::max(lsb_term, coord_term);
+            const double spread = (hi - lo) / hi;
+            std::printf("S = %u channel %d: E in [%.9g, %.9g] (E_s %.3g), spread %.3e, bound %.3e (ratio %.4f)\n",
+                        sub, c, lo, hi, in.sun_irradiance[c], spread, bound, spread / bound);
+            EXPECT_LE(spread, bound) << "S = " << sub << " channel " << c;
+            EXPECT_NEAR(hi / in.sun_irradiance[c], 1.0, bound);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace vkw::test

@@ -1,0 +1,200 @@
+// Shared parts of the caustic tests: the graph water surface -> photons -> resolve (-> probes
+// through shaders/caustics/caustic_lookup.glsl) -> readbacks, executed once, and the CPU ground
+// truth in double precision (PHYSICS.md sections 2-4), independent of the photon code.
+#pragma once
+
+#include "engine/framegraph/executor.hpp"
+#include "engine/framegraph/pass_context.hpp"
+#include "engine/vk/resources.hpp"
+#include "engine/water/surface.hpp"
+#include "passes/caustics_bands.hpp"
+#include "passes/caustics_photons.hpp"
+#include "passes/caustics_resolve.hpp"
+#include "passes/water_surface.hpp"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace vkw::test {
+
+inline constexpr double kUnit = 0x1.0p-24;  // fp32 unit roundoff
+
+// count_x x count_z receiver points corner + a step_x + b step_z, all with `normal`.
+struct ProbeGrid {
+    glm::dvec3 corner{0.0}, step_x{0.0}, step_z{0.0}, normal{0.0, 1.0, 0.0};
+    uint32_t count_x = 0, count_z = 0;
+};
+
+struct CausticRun {
+    std::vector<uint64_t> flux;     // the fixed-point buffer, header included
+    std::vector<float> irradiance;  // W x H x RGBA, the resolved map
+    std::vector<float> probes;      // count_x x count_z x RGBA: caustic_irradiance at the probes
+
+    uint64_t lost(int c) const { return flux[c]; }
+    uint64_t texel(size_t t, int c) const { return flux[passes::kCausticFluxHeaderBytes / 8 + 3 * t + c]; }
+};
+
+// passes::add_readback_pass names its pass "readback", and a graph's pass names are unique: the
+// tests read several results of one frame, so this copy pass takes a name.
+template <class Handle>
+void add_named_readback(fg::FrameGraph& graph, const std::string& name, Handle source, VkBuffer host,
+                        VkDeviceSize bytes) {
+    fg::ImportedBuffer imported{host, bytes};
+    imported.final_state = fg::access_state(fg::Use::HostRead, fg::PassKind::Transfer);
+    const fg::BufferHandle target = graph.import_buffer(name, imported);
+    struct Data {
+        Handle source;
+        fg::BufferHandle target;
+    };
+    const auto& data = graph.add_pass<Data>(
+        name, fg::PassKind::Transfer,
+        [&](fg::PassBuilder& builder, Data& d) {
+            d.source = builder.copy_source(source);
+            d.target = builder.copy_destination(target);
+        },
+        [bytes](const Data& d, fg::PassContext& context) {
+            if constexpr (std::is_same_v<Handle, fg::ImageHandle>) {
+                const VkExtent2D extent = context.extent(d.source);
+                VkBufferImageCopy region{};
+                region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+                region.imageExtent = {extent.width, extent.height, 1};
+                vkCmdCopyImageToBuffer(context.cmd(), context.image(d.source), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                       context.buffer(d.target), 1, &region);
+            } else {
+                const VkBufferCopy region{0, 0, bytes};
+                vkCmdCopyBuffer(context.cmd(), context.buffer(d.source), context.buffer(d.target), 1, &region);
+            }
+        });
+    graph.request_output(data.target);
+}
+
+inline void add_probe_pass(fg::FrameGraph& graph, const passes::CausticMap& map, const ProbeGrid& grid,
+                           VkBuffer host, VkDeviceSize bytes) {
+    struct Push {
+        float corner[4], step_x[4], step_z[4], normal[4];
+        uint32_t count_x, count_z;
+    };
+    auto v4 = [](const glm::dvec3& v, float* out) {
+        out[0] = float(v.x), out[1] = float(v.y), out[2] = float(v.z), out[3] = 0.0f;
+    };
+    Push push{};
+    v4(grid.corner, push.corner);
+    v4(grid.step_x, push.step_x);
+    v4(grid.step_z, push.step_z);
+    v4(grid.normal, push.normal);
+    push.count_x = grid.count_x;
+    push.count_z = grid.count_z;
+    struct Data {
+        fg::ImageHandle map;
+        fg::BufferHandle frame, out;
+    };
+    const auto& data = graph.add_pass<Data>(
+        "caustic probes", fg::PassKind::Compute,
+        [&](fg::PassBuilder& builder, Data& d) {
+            const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+            d.frame = builder.uniform_buffer(map.frame, stage);
+            d.map = builder.sample(map.irradiance, stage);
+            d.out = builder.write_storage(builder.create_buffer("caustic probes", {bytes}), stage);
+        },
+        [push](const Data& d, fg::PassContext& context) {
+            ComputePipelineDesc desc;
+            desc.shader = "caustics/caustic_probe.comp";
+            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
+                                    {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
+                                    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
+            desc.layout.push_constant_bytes = sizeof(Push);
+            const Pipeline& pipeline = context.pipeline("caustic probes", desc);
+            context.bind(pipeline, {context.uniform_buffer(0, d.frame), context.sampled(1, d.map),
+                                    context.storage_buffer(2, d.out)});
+            context.push_constants(pipeline, push);
+            vkCmdDispatch(context.cmd(), (push.count_x * push.count_z + 63) / 64, 1, 1);
+        });
+    add_named_readback(graph, "probe readback", data.out, host, bytes);
+}
+
+// Water surface -> photons -> resolve (-> probes) -> readbacks, one submission with validation.
+inline CausticRun run_caustics(Context& context, const passes::WaterSurfaceInputs& surface,
+                               passes::CausticInputs caustics, const ProbeGrid& probes = {}) {
+    const VkDeviceSize flux_bytes = passes::caustic_flux_bytes(caustics.map_width, caustics.map_height);
+    const VkDeviceSize image_bytes = VkDeviceSize{caustics.map_width} * caustics.map_height * 16;
+    const VkDeviceSize probe_bytes = std::max<VkDeviceSize>(16, VkDeviceSize{probes.count_x} * probes.count_z * 16);
+    Buffer flux_host(context, {flux_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "caustic flux readback");
+    Buffer image_host(context, {image_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "caustic map readback");
+    Buffer probe_host(context, {probe_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "caustic probe readback");
+    {
+        fg::PipelineStore pipelines;
+        fg::FrameGraph graph;
+        caustics.surface = passes::add_water_surface_pass(graph, surface);
+        caustics.grid_resolution = surface.grid_resolution;
+        caustics.water_level = surface.level;
+        caustics.half_extent = surface.half_extent;
+        const fg::BufferHandle flux = passes::add_caustic_photon_pass(graph, caustics);
+        const passes::CausticMap map = passes::add_caustic_resolve_pass(graph, flux, caustics);
+        add_named_readback(graph, "flux readback", flux, flux_host.handle(), flux_bytes);
+        add_named_readback(graph, "map readback", map.irradiance, image_host.handle(), image_bytes);
+        if (probes.count_x * probes.count_z > 0) add_probe_pass(graph, map, probes, probe_host.handle(), probe_bytes);
+        graph.compile(1, 1);
+        fg::FrameExecutor executor(context, graph, pipelines, {.check_finite = true, .timing = fg::TimingMode::None});
+        executor.execute();
+    }
+    CausticRun run;
+    run.flux.resize(flux_bytes / 8);
+    std::memcpy(run.flux.data(), flux_host.mapped(), flux_bytes);
+    run.irradiance.resize(image_bytes / 4);
+    std::memcpy(run.irradiance.data(), image_host.mapped(), image_bytes);
+    run.probes.resize(VkDeviceSize{probes.count_x} * probes.count_z * 4);
+    std::memcpy(run.probes.data(), probe_host.mapped(), run.probes.size() * 4);
+    return run;
+}
+
+// PHYSICS.md section 2 in double, air to water: T and cos theta_t.
+inline double fresnel_t(double cos_i, double n, double* cos_t_out = nullptr) {
+    const double cos_t = std::sqrt(std::max(0.0, 1.0 - (1.0 - cos_i * cos_i) / (n * n)));
+    const double rs = (cos_i - n * cos_t) / (cos_i + n * cos_t);
+    const double rp = (n * cos_i - cos_t) / (n * cos_i + cos_t);
+    if (cos_t_out) *cos_t_out = cos_t;
+    return 1.0 - 0.5 * (rs * rs + rp * rp);
+}
+
+// The sun travelling down at zenith angle `zenith_deg`, its horizontal part along `azimuth`.
+inline glm::dvec3 sun_at(double zenith_deg, const glm::dvec3& azimuth) {
+    const double a = zenith_deg * 3.14159265358979323846 / 180.0;
+    return glm::normalize(glm::dvec3(0.0, -std::cos(a), 0.0) + std::sin(a) * azimuth);
+}
+
+// PHYSICS.md section 4 over the grid's whole parameter square [-E, E]^2 of a surface that varies
+// only along x0 (a sine along x): per RGB, E_s * integral of max(0, -s.N) |dP/du x dP/dv|
+// T(theta_i) exp(-sigma_t l) dx0 dz0, midpoint rule with `samples` points along x0 in double.
+// With `intercepted_only` the integrand stops at the intercepted flux (T = 1, no extinction).
+inline glm::dvec3 section4_flux(const WaterSurface& surface, const passes::CausticInputs& in, int samples,
+                                bool intercepted_only = false) {
+    const double e = in.half_extent, dx = 2.0 * e / samples;
+    glm::dvec3 sum(0.0);
+    for (int k = 0; k < samples; ++k) {
+        const SurfacePoint p = surface.at_parameter(-e + (k + 0.5) * dx, 0.0);
+        const glm::dvec3 area = glm::cross(p.dP_dv, p.dP_du);  // up for the grid's orientation
+        const double projected = -glm::dot(in.sun_direction, area);
+        const double cos_i = -glm::dot(in.sun_direction, p.normal);
+        if (!(projected > 0.0) || !(cos_i > 0.0)) continue;
+        if (intercepted_only) {
+            sum += in.sun_irradiance * projected;
+            continue;
+        }
+        double cos_t = 0.0;
+        const double t_factor = fresnel_t(cos_i, in.ior, &cos_t);
+        const double eta = 1.0 / in.ior;
+        const glm::dvec3 t = eta * in.sun_direction + (eta * cos_i - cos_t) * p.normal;
+        if (t.y > -1e-6) continue;
+        const double l = (p.position.y - in.floor_height) / -t.y;
+        sum += in.sun_irradiance * projected * t_factor * glm::exp(-in.sigma_t * l);
+    }
+    return sum * dx * (2.0 * e);
+}
+
+}  // namespace vkw::test
