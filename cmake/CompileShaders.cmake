@@ -24,3 +24,41 @@ function(vkwater_compile_shaders)
   endforeach()
   add_custom_target(${ARG_TARGET} ALL DEPENDS ${outputs})
 endfunction()
+
+# vkwater_compile_shader_variants(TARGET name SOURCE file VARIANTS variant=DEF1,DEF2 ...)
+# Compiles one GLSL source once per variant with those macros defined, into
+# build/shaders/<path>.<variant>.spv; the engine loads it as "<path>.<variant>". The
+# permutations of a shader (per-pixel camera medium, caustics) then live in one file.
+function(vkwater_compile_shader_variants)
+  cmake_parse_arguments(ARG "" "TARGET;SOURCE" "VARIANTS" ${ARGN})
+  get_filename_component(abs ${ARG_SOURCE} ABSOLUTE)
+  file(RELATIVE_PATH rel ${CMAKE_SOURCE_DIR}/shaders ${abs})
+  set(outputs)
+  foreach(variant IN LISTS ARG_VARIANTS)
+    string(REPLACE "=" ";" parts "${variant}")
+    list(GET parts 0 name)
+    set(defines)
+    list(LENGTH parts count)
+    if(count GREATER 1)
+      list(GET parts 1 macros)
+      string(REPLACE "," ";" macros "${macros}")
+      foreach(macro IN LISTS macros)
+        list(APPEND defines -D${macro})
+      endforeach()
+    endif()
+    set(out ${VKWATER_SHADER_OUTPUT_DIR}/${rel}.${name}.spv)
+    get_filename_component(out_dir ${out} DIRECTORY)
+    add_custom_command(
+      OUTPUT ${out}
+      COMMAND ${CMAKE_COMMAND} -E make_directory ${out_dir}
+      COMMAND Vulkan::glslangValidator --quiet --target-env vulkan1.3 ${defines}
+              -I${CMAKE_SOURCE_DIR}/shaders
+              --depfile ${out}.d -o ${out} ${abs}
+      MAIN_DEPENDENCY ${abs}
+      DEPFILE ${out}.d
+      COMMENT "GLSL ${rel} (${name})"
+      VERBATIM)
+    list(APPEND outputs ${out})
+  endforeach()
+  add_custom_target(${ARG_TARGET} ALL DEPENDS ${outputs})
+endfunction()

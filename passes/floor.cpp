@@ -2,8 +2,7 @@
 
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/render/blackboard_keys.hpp"
-
-#include <optional>
+#include "passes/lighting_inputs.hpp"
 
 namespace vkw::passes {
 
@@ -13,7 +12,7 @@ void add_floor_pass(fg::FrameGraph& graph) {
         fg::BufferHandle optics;
         fg::ImageHandle hdr;
         fg::ImageHandle depth;
-        std::optional<fg::ImageHandle> camera_medium;  // the stencil split's mask, while it runs
+        LightingInputs lighting;
     };
     const auto& data = graph.add_pass<Data>(
         "floor", fg::PassKind::Graphics,
@@ -25,32 +24,23 @@ void add_floor_pass(fg::FrameGraph& graph) {
             d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
             d.depth = builder.create_image("scene depth", {VK_FORMAT_D32_SFLOAT});
             d.depth = builder.depth_stencil_attachment(d.depth, fg::LoadOp::Clear, {.depth = 0.0f});
-            if (graph.blackboard().has(keys::kCameraMedium)) {
-                d.camera_medium = builder.sample(graph.blackboard().get(keys::kCameraMedium),
-                                                 VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-            }
+            d.lighting.declare(builder, graph.blackboard());
         },
         [](const Data& d, fg::PassContext& context) {
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "receivers/floor.vert";
-            desc.fragment_shader = d.camera_medium ? "receivers/floor_per_pixel.frag" : "receivers/floor.frag";
+            desc.fragment_shader = d.lighting.shader("receivers/floor.frag");
             desc.layout.bindings = {
                 {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
                 {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}};
-            if (d.camera_medium) {
-                desc.layout.bindings.push_back({3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-                                                VK_SHADER_STAGE_FRAGMENT_BIT});
-            }
+            d.lighting.add_layout(desc.layout.bindings);
             desc.depth_test = true;
             desc.depth_write = true;
-            const Pipeline& pipeline = context.pipeline(d.camera_medium ? "floor per-pixel medium" : "floor", desc);
-            const fg::DescriptorBinding constants = context.uniform_buffer(0, d.constants);
-            const fg::DescriptorBinding optics = context.storage_buffer(1, d.optics);
-            if (d.camera_medium) {
-                context.bind(pipeline, {constants, optics, context.sampled(3, *d.camera_medium)});
-            } else {
-                context.bind(pipeline, {constants, optics});
-            }
+            const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
+            std::vector<fg::DescriptorBinding> bindings{context.uniform_buffer(0, d.constants),
+                                                        context.storage_buffer(1, d.optics)};
+            d.lighting.add_bindings(context, bindings);
+            context.bind(pipeline, bindings);
             vkCmdDraw(context.cmd(), 6, 1, 0, 0);
         });
     graph.blackboard().put(keys::kHdrColor, data.hdr);

@@ -77,8 +77,12 @@ DescriptorBinding PassContext::uniform_buffer(uint32_t binding, BufferHandle han
 }
 
 void PassContext::bind(const Pipeline& pipeline, std::initializer_list<DescriptorBinding> bindings) const {
+    bind(pipeline, std::vector<DescriptorBinding>(bindings));
+}
+
+void PassContext::bind(const Pipeline& pipeline, const std::vector<DescriptorBinding>& bindings) const {
     vkCmdBindPipeline(cmd_, pipeline.bind_point(), pipeline.handle());
-    if (bindings.size() == 0) return;
+    if (bindings.empty()) return;
     std::vector<VkWriteDescriptorSet> writes;
     for (const DescriptorBinding& binding : bindings) {
         VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};

@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace vkw {
 class Context;
@@ -74,6 +75,7 @@ public:
 
     // Binds the pipeline and pushes its descriptor set 0.
     void bind(const Pipeline& pipeline, std::initializer_list<DescriptorBinding> bindings) const;
+    void bind(const Pipeline& pipeline, const std::vector<DescriptorBinding>& bindings) const;
     void push_constants(const Pipeline& pipeline, const void* data, uint32_t bytes) const;
     template <class T>
     void push_constants(const Pipeline& pipeline, const T& data) const {

@@ -3,6 +3,7 @@
 
 #include "engine/framegraph/blackboard.hpp"
 #include "engine/framegraph/handles.hpp"
+#include "passes/caustics_resolve.hpp"
 
 namespace vkw::keys {
 
@@ -13,5 +14,6 @@ inline constexpr fg::BlackboardKey<fg::BufferHandle> kSceneOptics{"scene optics"
 // R8_UNORM, output size: 1 where the pixel's camera ray starts in the water (published only
 // while the stencil split runs; passes/water_volume_stencil.hpp).
 inline constexpr fg::BlackboardKey<fg::ImageHandle> kCameraMedium{"camera medium"};
+inline constexpr fg::BlackboardKey<passes::CausticMap> kCausticMap{"caustic map"};
 
 }  // namespace vkw::keys

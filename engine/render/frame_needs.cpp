@@ -69,6 +69,7 @@ fg::FrameNeeds decide_frame_needs(const Scene& scene, double aspect) {
     if (!scene.water) {
         decide(needs, scene, fg::Effect::Water, false, "the scene has no water");
         decide(needs, scene, fg::Effect::UnderwaterView, false, "the scene has no water");
+        decide(needs, scene, fg::Effect::SurfaceCaustics, false, "the scene has no water");
         return needs;
     }
     const WaterBounds bounds = water_bounds(scene);
@@ -88,6 +89,17 @@ fg::FrameNeeds decide_frame_needs(const Scene& scene, double aspect) {
         over_water = over_water || (corner.x >= bounds.lo.x && corner.x <= bounds.hi.x && corner.z >= bounds.lo.z &&
                                     corner.z <= bounds.hi.z);
     }
+    // Caustics: the sun must be up and the floor (the receiver the photons reach) under the
+    // highest crest; without the water in view nothing shows them.
+    const bool sun_up = scene.sun.direction.y < 0.0;
+    const bool floor_under = scene.floor.height < bounds.hi.y;
+    decide(needs, scene, fg::Effect::SurfaceCaustics, water_visible && sun_up && floor_under,
+           !water_visible ? "the water is not in view"
+           : !sun_up      ? "the sun is below the horizon"
+           : !floor_under ? "the floor lies above the highest crest"
+                          : format("the sun is up and the floor (y = %.3g m) lies under the water (crest %.3g m)",
+                                   scene.floor.height, bounds.hi.y));
+
     const bool underwater = over_water && lowest < bounds.hi.y && highest > bounds.lo.y;
     decide(needs, scene, fg::Effect::UnderwaterView, underwater,
            underwater ? format("the near plane reaches y = %.3g m, below the highest crest at %.3g m", lowest,

@@ -4,6 +4,8 @@
 #include "engine/render/blackboard_keys.hpp"
 #include "engine/render/frame_needs.hpp"
 #include "engine/vk/context.hpp"
+#include "passes/caustics_photons.hpp"
+#include "passes/caustics_resolve.hpp"
 #include "passes/floor.hpp"
 #include "passes/frame_constants_upload.hpp"
 #include "passes/readback.hpp"
@@ -21,6 +23,12 @@
 namespace vkw {
 
 namespace {
+// Texels per side of the light-space caustic map: matched to the photon grid (R photons
+// per side, plus the fit's one-texel border), so that each texel receives about one
+// photon on flat water and the 2x2 splat kernel leaves no holes between photons (the
+// photon-density sizing of the splat, seed 000's point size regulation, comes later).
+uint32_t caustic_map_texels(uint32_t grid_resolution) { return std::clamp(grid_resolution + 2, 16u, 16384u); }
+
 VkDeviceSize hdr_bytes(uint32_t width, uint32_t height) { return VkDeviceSize{width} * height * 4 * sizeof(float); }
 }  // namespace
 
@@ -40,6 +48,24 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
         // per-frame camera medium of the frame constants.
         if (graph.needs().needs(fg::Effect::UnderwaterView)) {
             passes::add_water_volume_stencil_passes(graph, *surface, water.grid_resolution, water_bottom(scene));
+        }
+        if (graph.needs().needs(fg::Effect::SurfaceCaustics)) {
+            // The sun under the water becomes the caustic map; the flat stand-in goes.
+            passes::CausticInputs caustics;
+            caustics.surface = *surface;
+            caustics.grid_resolution = water.grid_resolution;
+            caustics.water_level = water.level;
+            caustics.half_extent = water.half_extent;
+            caustics.max_amplitude = water_bounds(scene).hi.y - water.level;
+            caustics.sun_direction = scene.sun.direction;
+            caustics.sun_irradiance = scene.sun.irradiance;
+            caustics.ior = water.ior;
+            caustics.sigma_t = scene.medium.sigma_t();
+            caustics.floor_height = scene.floor.height;
+            caustics.map_width = caustics.map_height = caustic_map_texels(water.grid_resolution);
+            graph.blackboard().put(keys::kCausticMap,
+                                   passes::add_caustic_resolve_pass(
+                                       graph, passes::add_caustic_photon_pass(graph, caustics), caustics));
         }
     }
     passes::add_floor_pass(graph);
@@ -64,6 +90,13 @@ std::string Renderer::water_configuration(const Scene& scene) {
     std::string key = std::to_string(water.grid_resolution) + " " + std::to_string(int(water.waves.model)) + " " +
                       std::to_string(water.time) + " " + std::to_string(water.level) + " " +
                       std::to_string(water.half_extent) + " " + std::to_string(water.waves.components.size());
+    // The caustic passes capture the light and the medium at declaration too.
+    key += " sun " + std::to_string(scene.sun.direction.x) + "," + std::to_string(scene.sun.direction.y) + "," +
+           std::to_string(scene.sun.direction.z) + " " + std::to_string(scene.sun.irradiance.x) + "," +
+           std::to_string(scene.sun.irradiance.y) + "," + std::to_string(scene.sun.irradiance.z) + " ior " +
+           std::to_string(water.ior) + " floor " + std::to_string(scene.floor.height) + " sigma_t " +
+           std::to_string(scene.medium.sigma_t().x) + "," + std::to_string(scene.medium.sigma_t().y) + "," +
+           std::to_string(scene.medium.sigma_t().z);
     for (const WaveComponent& wave : water.waves.components) {
         key += " " + std::to_string(wave.amplitude) + "," + std::to_string(wave.wavelength) + "," +
                std::to_string(wave.direction_deg) + "," + std::to_string(wave.phase_deg) + "," +

@@ -1,4 +1,27 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The floor with the per-frame camera medium (the stencil split is culled).
-#include "receivers/floor_shading.glsl"
+// The floor as a Lambertian receiver: lit by the sun and the sky above the water, by
+// the sun through the water (the caustic map, or the flat-surface stand-in) and the
+// transmitted skylight below it. Seen from a camera in the water, the view path
+// attenuates and scatters. Variants (shaders/CMakeLists.txt): VKWATER_PER_PIXEL_MEDIUM
+// (the stencil split's mask) and VKWATER_CAUSTICS (the caustic map).
+#include "common/medium.glsl"
+#include "water_shading/camera_medium.glsl"
+#include "water_shading/underwater_light.glsl"
+
+layout(set = 0, binding = 1, std430) readonly buffer Optics { SceneOptics optics; };
+
+layout(location = 0) in vec3 in_world_position;
+layout(location = 0) out vec4 out_radiance;
+
+void main() {
+    vec3 p = in_world_position;
+    vec3 radiance = lambert_radiance(frame.floor_albedo.rgb, receiver_irradiance(p, vec3(0.0, 1.0, 0.0), optics));
+    if (camera_in_water()) {
+        vec3 eye = frame.camera_position.xyz;
+        radiance = water_path_radiance(frame.medium_sigma_s.rgb, frame.medium_sigma_t.rgb, frame.medium_sigma_s.w,
+                                       max(0.0, frame.water.x - eye.y), distance(eye, p), normalize(p - eye),
+                                       optics.refracted_sun.xyz, optics.e_perp0.rgb, radiance);
+    }
+    out_radiance = vec4(radiance, 1.0);
+}

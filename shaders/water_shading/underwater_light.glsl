@@ -1,12 +1,21 @@
 // Light under the water for Lambertian receivers (PHYSICS.md sections 1 and 3), and the
-// floor as the receiver that refracted view rays meet. The sun term is the flat-surface
-// stand-in for the caustic irradiance (the caustics issue replaces it, never adds to it).
+// floor as the receiver that refracted view rays meet. The sun term is the caustic
+// irradiance when VKWATER_CAUSTICS is defined (the map of passes/caustics_*, traced to
+// the floor) and the flat-surface stand-in otherwise: one or the other, never both.
 #ifndef VKWATER_UNDERWATER_LIGHT_GLSL
 #define VKWATER_UNDERWATER_LIGHT_GLSL
 
 #include "common/frame_constants.glsl"
 #include "common/lambert.glsl"
 #include "water_shading/scene_optics.glsl"
+
+#ifdef VKWATER_CAUSTICS
+// Bindings 4 and 5 of set 0 in every shader that lights receivers under the water.
+#define CAUSTIC_SET 0
+#define CAUSTIC_PARAMS_BINDING 4
+#define CAUSTIC_MAP_BINDING 5
+#include "caustics/caustic_lookup.glsl"
+#endif
 
 bool point_under_water(vec3 p) {
     return frame.water.w > 0.5 && p.y < frame.water.x && abs(p.x) <= frame.water.z && abs(p.z) <= frame.water.z;
@@ -17,8 +26,12 @@ bool point_under_water(vec3 p) {
 vec3 receiver_irradiance_under_water(vec3 p, vec3 normal, SceneOptics optics) {
     float depth = max(0.0, frame.water.x - p.y);
     vec3 sigma_t = frame.medium_sigma_t.rgb;
+#ifdef VKWATER_CAUSTICS
+    vec3 sun = caustic_irradiance(p, normal);
+#else
     float cos_receiver = max(0.0, -dot(optics.refracted_sun.xyz, normal));
     vec3 sun = optics.e_perp0.rgb * cos_receiver * exp(-sigma_t * (depth / optics.refracted_sun.w));
+#endif
     vec3 sky = PI * frame.sky_average.rgb * optics.transmission.x * exp(-sigma_t * depth);
     return sun + sky;
 }

@@ -64,6 +64,17 @@ TEST(frame_needs, ModesForceTheDecisionAndSaySo) {
     EXPECT_FALSE(decision(automatic, fg::Effect::Water).forced);
 }
 
+TEST(frame_needs, CausticsNeedTheSunUpAndTheFloorUnderTheWater) {
+    const std::string camera = R"("position": [0, 2, 5], "target": [0, 0, 0])";
+    EXPECT_TRUE(decision(decide_frame_needs(scene_with(camera), 1.0), fg::Effect::SurfaceCaustics).needed);
+    const auto night = decide_frame_needs(scene_with(camera, {"sun.elevation_deg=-1"}), 1.0);
+    EXPECT_FALSE(decision(night, fg::Effect::SurfaceCaustics).needed);
+    EXPECT_NE(decision(night, fg::Effect::SurfaceCaustics).reason.find("below the horizon"), std::string::npos);
+    // A floor above the highest crest (the water given its own bottom by water.depth).
+    const auto dry = decide_frame_needs(scene_with(camera, {"floor.height=0.5", "water.depth=1"}), 1.0);
+    EXPECT_FALSE(decision(dry, fg::Effect::SurfaceCaustics).needed);
+}
+
 TEST(frame_needs, NoWaterNoWaterEffects) {
     const auto needs = decide_frame_needs(scene_with(R"("position": [0, 2, 5], "target": [0, 0, 0])", {"water=null"}), 1.0);
     EXPECT_FALSE(decision(needs, fg::Effect::Water).needed);

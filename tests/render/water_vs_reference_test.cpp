@@ -62,5 +62,21 @@ TEST_F(WaterRule, CulledWaterImageEqualsForcedOnImage) {
     EXPECT_EQ(culled.image.rgba, forced_on.image.rgba);
 }
 
+TEST_F(WaterRule, CulledCausticsImageEqualsForcedOnImage) {
+    // The sun below the horizon: the rule culls the caustic passes. Forced on, they trace
+    // photons that all drop (no sunlight), and the map replaces a stand-in that is 0 too:
+    // the same arithmetic on the same zeros, so the images are equal exactly.
+    const std::vector<std::string> night = {"sun.elevation_deg=-5"};
+    std::vector<std::string> forced = night;
+    forced.push_back("effects.caustics.mode=on");
+    Renderer renderer(context());
+    const RenderResult culled = renderer.render(builtin("pool.json", night), {kWidth, kHeight, true, fg::TimingMode::None});
+    const size_t pipelines_culled = renderer.pipelines().size();
+    const RenderResult forced_on =
+        renderer.render(builtin("pool.json", forced), {kWidth, kHeight, true, fg::TimingMode::None});
+    EXPECT_GT(renderer.pipelines().size(), pipelines_culled) << "forcing the caustics on created no pipeline";
+    EXPECT_EQ(culled.image.rgba, forced_on.image.rgba);
+}
+
 }  // namespace
 }  // namespace vkw::test

@@ -1,0 +1,38 @@
+#include "passes/lighting_inputs.hpp"
+
+#include "engine/render/blackboard_keys.hpp"
+
+namespace vkw::passes {
+
+void LightingInputs::declare(fg::PassBuilder& builder, const fg::Blackboard& blackboard) {
+    if (blackboard.has(keys::kCameraMedium)) {
+        camera_medium = builder.sample(blackboard.get(keys::kCameraMedium), VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+    }
+    if (blackboard.has(keys::kCausticMap)) {
+        const CausticMap& caustics = blackboard.get(keys::kCausticMap);
+        caustic_frame = builder.uniform_buffer(caustics.frame, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+        caustic_map = builder.sample(caustics.irradiance, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+    }
+}
+
+std::string LightingInputs::shader(const std::string& base) const {
+    return base + (camera_medium ? ".per_pixel" : ".frame") + (caustic_map ? "_caustics" : "");
+}
+
+void LightingInputs::add_layout(std::vector<VkDescriptorSetLayoutBinding>& bindings) const {
+    if (camera_medium) bindings.push_back({3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
+    if (caustic_map) {
+        bindings.push_back({4, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
+        bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
+    }
+}
+
+void LightingInputs::add_bindings(const fg::PassContext& context, std::vector<fg::DescriptorBinding>& bindings) const {
+    if (camera_medium) bindings.push_back(context.sampled(3, *camera_medium));
+    if (caustic_map) {
+        bindings.push_back(context.uniform_buffer(4, *caustic_frame));
+        bindings.push_back(context.sampled(5, *caustic_map));
+    }
+}
+
+}  // namespace vkw::passes

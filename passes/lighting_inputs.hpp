@@ -1,0 +1,30 @@
+// What every pass that lights receivers reads besides the frame constants and the
+// scene optics: the stencil split's per-pixel camera medium and the caustic map, each
+// only while its passes run. One place declares them, names the shader variant that
+// matches (shaders/CMakeLists.txt) and binds them (bindings 3, 4 and 5).
+#pragma once
+
+#include "engine/framegraph/blackboard.hpp"
+#include "engine/framegraph/frame_graph.hpp"
+#include "engine/framegraph/pass_context.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vkw::passes {
+
+struct LightingInputs {
+    std::optional<fg::ImageHandle> camera_medium;  // binding 3: the stencil split's mask
+    std::optional<fg::BufferHandle> caustic_frame;  // binding 4: the caustic map's light space
+    std::optional<fg::ImageHandle> caustic_map;     // binding 5: the caustic irradiance map
+
+    // Declares, as sampled/uniform reads of this pass, whichever the blackboard holds.
+    void declare(fg::PassBuilder& builder, const fg::Blackboard& blackboard);
+    // "<shader>.<variant>" for a shader compiled with the lighting variants.
+    std::string shader(const std::string& base) const;
+    void add_layout(std::vector<VkDescriptorSetLayoutBinding>& bindings) const;
+    void add_bindings(const fg::PassContext& context, std::vector<fg::DescriptorBinding>& bindings) const;
+};
+
+}  // namespace vkw::passes
