@@ -29,7 +29,7 @@ void add_floor_pass(fg::FrameGraph& graph) {
         [](const Data& d, fg::PassContext& context) {
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "receivers/floor.vert";
-            desc.fragment_shader = d.lighting.shader("receivers/floor.frag");
+            desc.fragment_shader = d.lighting.shader("receivers/receiver.frag");
             desc.layout.bindings = {
                 {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
                 {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}};

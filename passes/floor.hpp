@@ -1,5 +1,5 @@
 // The floor plane as a Lambertian receiver, drawn over the sky with a depth buffer
-// (reversed-Z), lit above or below the water (shaders/receivers/floor.frag). Reads the
+// (reversed-Z), lit above or below the water (shaders/receivers/receiver.frag). Reads the
 // scene optics; reads and republishes keys::kHdrColor; publishes keys::kSceneDepth. Reads
 // keys::kCameraMedium, the stencil split's per-pixel medium, when it was published before.
 #pragma once

@@ -4,11 +4,11 @@
 
 namespace vkw::passes {
 
-void LightingInputs::declare(fg::PassBuilder& builder, const fg::Blackboard& blackboard) {
+void LightingInputs::declare(fg::PassBuilder& builder, const fg::Blackboard& blackboard, bool with_caustics) {
     if (blackboard.has(keys::kCameraMedium)) {
         camera_medium = builder.sample(blackboard.get(keys::kCameraMedium), VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
     }
-    if (blackboard.has(keys::kCausticMap)) {
+    if (with_caustics && blackboard.has(keys::kCausticMap)) {
         const CausticMap& caustics = blackboard.get(keys::kCausticMap);
         caustic_frame = builder.uniform_buffer(caustics.frame, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
         caustic_map = builder.sample(caustics.irradiance, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);

@@ -20,7 +20,9 @@ struct LightingInputs {
     std::optional<fg::ImageHandle> caustic_map;     // binding 5: the caustic irradiance map
 
     // Declares, as sampled/uniform reads of this pass, whichever the blackboard holds.
-    void declare(fg::PassBuilder& builder, const fg::Blackboard& blackboard);
+    // The caustic map is traced to the floor plane: passes that light other receivers
+    // pass with_caustics = false and keep the flat-surface stand-in for them.
+    void declare(fg::PassBuilder& builder, const fg::Blackboard& blackboard, bool with_caustics = true);
     // "<shader>.<variant>" for a shader compiled with the lighting variants.
     std::string shader(const std::string& base) const;
     void add_layout(std::vector<VkDescriptorSetLayoutBinding>& bindings) const;

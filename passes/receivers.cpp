@@ -2,6 +2,7 @@
 
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/render/blackboard_keys.hpp"
+#include "passes/lighting_inputs.hpp"
 
 namespace vkw::passes {
 
@@ -9,6 +10,7 @@ void add_receivers_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes) {
     struct Data {
         fg::BufferHandle constants, optics, vertices, indices;
         fg::ImageHandle hdr, depth;
+        LightingInputs lighting;
     };
     const auto& data = graph.add_pass<Data>(
         "receivers", fg::PassKind::Graphics,
@@ -21,22 +23,27 @@ void add_receivers_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes) {
             d.indices = builder.index_buffer(meshes.import_indices(graph));
             d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
             d.depth = builder.depth_stencil_attachment(graph.blackboard().get(keys::kSceneDepth), fg::LoadOp::Load);
+            d.lighting.declare(builder, graph.blackboard(), /*with_caustics=*/false);
         },
         [&meshes](const Data& d, fg::PassContext& context) {
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "receivers/mesh.vert";
-            desc.fragment_shader = "receivers/mesh.frag";
+            desc.fragment_shader = d.lighting.shader("receivers/receiver.frag");
             constexpr VkShaderStageFlags both = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
             desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, both},
                                     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}};
+            d.lighting.add_layout(desc.layout.bindings);
             desc.layout.push_constant_bytes = sizeof(glm::vec4);
             desc.vertex_bindings = {{0, 6 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX}};
             desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
                                       {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 3 * sizeof(float)}};
             desc.depth_test = true;
             desc.depth_write = true;
-            const Pipeline& pipeline = context.pipeline("receivers", desc);
-            context.bind(pipeline, {context.uniform_buffer(0, d.constants), context.storage_buffer(1, d.optics)});
+            const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
+            std::vector<fg::DescriptorBinding> bindings{context.uniform_buffer(0, d.constants),
+                                                        context.storage_buffer(1, d.optics)};
+            d.lighting.add_bindings(context, bindings);
+            context.bind(pipeline, bindings);
             const VkBuffer vertex_buffer = context.buffer(d.vertices);
             const VkDeviceSize offset = 0;
             vkCmdBindVertexBuffers(context.cmd(), 0, 1, &vertex_buffer, &offset);

@@ -1,6 +1,8 @@
 // The scene's receivers and objects (built-in shapes and glTF meshes) drawn as
-// Lambertian surfaces over the sky and the floor, lit above or under the water like the
-// floor (shaders/receivers/mesh.frag). Not yet: shadows from other objects, textures.
+// Lambertian surfaces over the sky and the floor, lit above or under the water by the
+// floor's shader (shaders/receivers/receiver.frag). Not yet: shadows from other objects,
+// textures, and caustics on them (the caustic map is traced to the floor plane: under
+// the water they keep the flat-surface stand-in).
 // Reads and republishes keys::kHdrColor and keys::kSceneDepth.
 #pragma once
 

@@ -9,6 +9,8 @@
 #include "passes/floor.hpp"
 #include "passes/frame_constants_upload.hpp"
 #include "passes/readback.hpp"
+#include "passes/receiver_meshes.hpp"
+#include "passes/receivers.hpp"
 #include "passes/scene_optics.hpp"
 #include "passes/sky.hpp"
 #include "passes/water_shading.hpp"
@@ -33,7 +35,8 @@ VkDeviceSize hdr_bytes(uint32_t width, uint32_t height) { return VkDeviceSize{wi
 }  // namespace
 
 void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
-                       uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean) {
+                       uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
+                       const passes::ReceiverMeshes* receivers) {
     passes::add_frame_constants_upload(graph, constants);
     passes::add_scene_optics_pass(graph);
     passes::add_sky_pass(graph);
@@ -69,6 +72,7 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
         }
     }
     passes::add_floor_pass(graph);
+    if (receivers && !receivers->empty()) passes::add_receivers_pass(graph, *receivers);
     if (surface) passes::add_water_shading_pass(graph, *surface, scene.water->grid_resolution);
     passes::add_readback_pass(graph, graph.blackboard().get(keys::kHdrColor), readback, hdr_bytes(width, height));
 }
@@ -121,6 +125,18 @@ const passes::OceanSpectrumBuffer* Renderer::ocean_spectrum(const Scene& scene) 
     return ocean_.get();
 }
 
+const passes::ReceiverMeshes* Renderer::receiver_meshes(const Scene& scene) {
+    if (scene.receivers.empty()) return nullptr;
+    // Receivers are static: the meshes are uploaded once per scene object and count.
+    if (!receivers_ || receivers_source_ != &scene || receivers_count_ != scene.receivers.size()) {
+        frame_.reset();  // the compiled frame imported the old buffers
+        receivers_ = std::make_unique<passes::ReceiverMeshes>(context_, scene.receivers);
+        receivers_source_ = &scene;
+        receivers_count_ = scene.receivers.size();
+    }
+    return receivers_.get();
+}
+
 Renderer::Renderer(Context& context) : context_(context), constants_(std::make_unique<FrameConstants>()) {}
 
 Renderer::~Renderer() = default;
@@ -158,6 +174,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options) 
                                       std::to_string(int(options.timing));
     *constants_ = make_frame_constants(scene, options.width, options.height);
     const passes::OceanSpectrumBuffer* ocean = ocean_spectrum(scene);
+    const passes::ReceiverMeshes* receivers = receiver_meshes(scene);
 
     if (!frame_ || frame_->configuration != configuration) {
         frame_.reset();  // release the old graph's resources before making new ones
@@ -168,7 +185,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options) 
         frame->graph = std::make_unique<fg::FrameGraph>(std::move(needs));
         frame->graph->set_default_recording(options.recording);
         build_frame_graph(*frame->graph, scene, constants_.get(), options.width, options.height,
-                          frame->readback.handle(), ocean);
+                          frame->readback.handle(), ocean, receivers);
         frame->graph->compile(options.width, options.height);
         ++compile_count_;
         frame->executor = std::make_unique<fg::FrameExecutor>(context_, *frame->graph, pipelines_,

@@ -36,13 +36,16 @@ struct RenderResult {
 
 namespace passes {
 class OceanSpectrumBuffer;
+class ReceiverMeshes;
 }
 
 // Declares every pass of a frame into `graph`. `constants` is read at record time.
 // The readback target is `readback` (VK_NULL_HANDLE when the graph is only printed);
-// `ocean` is the device copy of an FFT ocean's spectrum (nullptr for other waves).
+// `ocean` is the device copy of an FFT ocean's spectrum (nullptr for other waves);
+// `receivers` the scene's receiver meshes on the device (nullptr when it has none).
 void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
-                       uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean);
+                       uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
+                       const passes::ReceiverMeshes* receivers);
 
 class Renderer {
 public:
@@ -59,12 +62,16 @@ private:
     struct CompiledFrame;
     static std::string water_configuration(const Scene& scene);
     const passes::OceanSpectrumBuffer* ocean_spectrum(const Scene& scene);
+    const passes::ReceiverMeshes* receiver_meshes(const Scene& scene);
     Context& context_;
     fg::PipelineStore pipelines_;
     std::unique_ptr<FrameConstants> constants_;  // stable address, read when the frame records
     std::unique_ptr<CompiledFrame> frame_;
     std::unique_ptr<passes::OceanSpectrumBuffer> ocean_;  // the FFT ocean's h0 on the device
     std::string ocean_key_;                               // the settings it was made for
+    std::unique_ptr<passes::ReceiverMeshes> receivers_;   // the scene's receiver meshes on the device
+    const void* receivers_source_ = nullptr;              // the scene whose receivers they are
+    size_t receivers_count_ = 0;
     size_t compile_count_ = 0;
 };
 

@@ -5,11 +5,15 @@
 #include "common/frame_constants.glsl"
 
 layout(location = 0) out vec3 out_world_position;
+layout(location = 1) out vec3 out_normal;
+layout(location = 2) flat out vec3 out_albedo;
 
 void main() {
     const vec2 corners[6] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, -1), vec2(1, 1), vec2(-1, 1));
     vec2 xz = corners[gl_VertexIndex] * frame.floor_plane.y;
     vec3 world = vec3(xz.x, frame.floor_plane.x, xz.y);
     out_world_position = world;
+    out_normal = vec3(0.0, 1.0, 0.0);
+    out_albedo = frame.floor_albedo.rgb;
     gl_Position = frame.view_proj * vec4(world, 1.0);
 }

@@ -38,7 +38,7 @@ std::vector<uint8_t> render_mask(Context& context, fg::PipelineStore& pipelines,
     Buffer hdr(context, {VkDeviceSize{kWidth} * kHeight * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "HDR readback");
     Buffer mask(context, {VkDeviceSize{kWidth} * kHeight, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "mask readback");
     fg::FrameGraph graph(std::move(needs));
-    build_frame_graph(graph, scene, &constants, kWidth, kHeight, hdr.handle(), nullptr);
+    build_frame_graph(graph, scene, &constants, kWidth, kHeight, hdr.handle(), nullptr, nullptr);
     fg::ImportedBuffer imported{mask.handle(), VkDeviceSize{kWidth} * kHeight};
     imported.final_state = fg::access_state(fg::Use::HostRead, fg::PassKind::Transfer);
     const fg::BufferHandle target = graph.import_buffer("mask readback", imported);

@@ -9,6 +9,7 @@
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
 #include "engine/water/fft_ocean.hpp"
+#include "passes/receiver_meshes.hpp"
 #include "passes/water_surface_spectrum.hpp"
 #include "tools/vkwater/commands.hpp"
 
@@ -42,7 +43,14 @@ int run_passes(const PassesArgs& args) {
             *context, std::make_shared<const FftOceanSpectrum>(
                           make_ocean_spectrum(scene.water->waves.ocean, scene.water->waves.seed)));
     }
-    build_frame_graph(graph, scene, &constants, args.width, args.height, VK_NULL_HANDLE, ocean.get());
+    // Receiver meshes, like the ocean's spectrum, live on a device: made only when present.
+    std::unique_ptr<passes::ReceiverMeshes> receivers;
+    if (!scene.receivers.empty()) {
+        if (!context) context = std::make_unique<Context>(ContextOptions{});
+        receivers = std::make_unique<passes::ReceiverMeshes>(*context, scene.receivers);
+    }
+    build_frame_graph(graph, scene, &constants, args.width, args.height, VK_NULL_HANDLE, ocean.get(),
+                      receivers.get());
     graph.compile(args.width, args.height);
     std::printf("%s", graph.describe().c_str());
     if (args.barriers) std::printf("barriers:\n%s", graph.dump_barriers().c_str());

@@ -1,10 +1,11 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The floor as a Lambertian receiver: lit by the sun and the sky above the water, by
-// the sun through the water (the caustic map, or the flat-surface stand-in) and the
-// transmitted skylight below it. Seen from a camera in the water, the view path
-// attenuates and scatters. Variants (shaders/CMakeLists.txt): VKWATER_PER_PIXEL_MEDIUM
-// (the stencil split's mask) and VKWATER_CAUSTICS (the caustic map).
+// A Lambertian receiver (the floor, or a mesh: its vertex shader hands over the normal
+// and the albedo): lit by the sun and the sky above the water, by the sun through the
+// water (the caustic map, or the flat-surface stand-in) and the transmitted skylight
+// below it. Seen from a camera in the water, the view path attenuates and scatters.
+// Variants (shaders/CMakeLists.txt): VKWATER_PER_PIXEL_MEDIUM (the stencil split's mask)
+// and VKWATER_CAUSTICS (the caustic map).
 #include "common/medium.glsl"
 #include "water_shading/camera_medium.glsl"
 #include "water_shading/underwater_light.glsl"
@@ -12,11 +13,16 @@
 layout(set = 0, binding = 1, std430) readonly buffer Optics { SceneOptics optics; };
 
 layout(location = 0) in vec3 in_world_position;
+layout(location = 1) in vec3 in_normal;
+layout(location = 2) flat in vec3 in_albedo;
 layout(location = 0) out vec4 out_radiance;
 
 void main() {
     vec3 p = in_world_position;
-    vec3 radiance = lambert_radiance(frame.floor_albedo.rgb, receiver_irradiance(p, vec3(0.0, 1.0, 0.0), optics));
+    vec3 normal = normalize(in_normal);
+    // Lambertian surfaces are lit on the side the camera sees.
+    if (dot(normal, frame.camera_position.xyz - p) < 0.0) normal = -normal;
+    vec3 radiance = lambert_radiance(in_albedo, receiver_irradiance(p, normal, optics));
     if (camera_in_water()) {
         vec3 eye = frame.camera_position.xyz;
         radiance = water_path_radiance(frame.medium_sigma_s.rgb, frame.medium_sigma_t.rgb, frame.medium_sigma_s.w,
