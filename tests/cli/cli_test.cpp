@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -148,6 +149,39 @@ TEST(cli, RenderWithReferencePrintsTimeAndErrorLines) {
     expect_clean_failure(run_vkwater("render " + calm + " --out " + scratch("x.exr").string() +
                                      " --reference /nonexistent/ref.exr"),
                          1, "/nonexistent/ref.exr");
+}
+
+TEST(cli, BenchSmokeTestWritesCsvAndSvgAndErrorFallsWithTheGrid) {
+    // A small wavy pool (2 m of water, one sine) so that the 64x48 reference is quick.
+    const fs::path scene = scratch("bench_pool.json");
+    std::ofstream(scene) << R"({
+      "camera": {"position": [0, 1.5, 1.5], "target": [0, -1, 0], "fov_y_deg": 50},
+      "sun": {"elevation_deg": 75, "irradiance": [3, 3, 3]},
+      "sky": {"radiance": [0.3, 0.45, 0.7]},
+      "floor": {"height": -1, "albedo": [0.6, 0.6, 0.6], "half_extent": 2},
+      "water": {"level": 0, "half_extent": 1, "waves": {"model": "sum",
+                "components": [{"amplitude": 0.012, "wavelength": 0.5, "direction_deg": 20}]}}
+    })";
+    const fs::path reference = scratch("bench_ref.exr");
+    ASSERT_EQ(run_vkwater("reference " + scene.string() + " --width 64 --height 48 --out " + reference.string()).exit_code, 0);
+    const fs::path out = scratch("bench_out");
+    fs::remove_all(out);
+    const CommandRun run = run_vkwater("bench " + scene.string() + " --reference " + reference.string() +
+                                       " --grids 16,128 --frames 3 --validation --out-dir " + out.string());
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    EXPECT_TRUE(fs::exists(out / "sweep.csv"));
+    EXPECT_TRUE(fs::exists(out / "sweep.svg"));
+    // Rows: grid=16 caustics=on, off, grid=128 caustics=on, off; relMSE is the 4th column.
+    std::ifstream csv(out / "sweep.csv");
+    std::string line;
+    std::getline(csv, line);  // header
+    std::vector<double> rel_mse;
+    while (std::getline(csv, line)) {
+        const size_t third = line.find(',', line.find(',', line.find(',') + 1) + 1);
+        rel_mse.push_back(std::stod(line.substr(third + 1)));
+    }
+    ASSERT_EQ(rel_mse.size(), 4u);
+    EXPECT_LT(rel_mse[2], rel_mse[0]) << "the richer photon grid did not reduce the error:\n" << run.output;
 }
 
 TEST(cli, PassesPrintsDecisionsOrderAndMemory) {

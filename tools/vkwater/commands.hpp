@@ -24,5 +24,6 @@ Run add_render_command(CLI::App& app);
 Run add_passes_command(CLI::App& app);
 Run add_reference_command(CLI::App& app);
 Run add_compare_command(CLI::App& app);
+Run add_bench_command(CLI::App& app);
 
 }  // namespace vkw::cli

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     add(vkw::cli::add_passes_command);
     add(vkw::cli::add_reference_command);
     add(vkw::cli::add_compare_command);
+    add(vkw::cli::add_bench_command);
 
     try {
         app.parse(argc, argv);
