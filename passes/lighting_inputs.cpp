@@ -13,10 +13,16 @@ void LightingInputs::declare(fg::PassBuilder& builder, const fg::Blackboard& bla
         caustic_frame = builder.uniform_buffer(caustics.frame, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
         caustic_map = builder.sample(caustics.irradiance, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
     }
+    if (blackboard.has(keys::kSunShadow)) {
+        const SunShadowMap& shadow = blackboard.get(keys::kSunShadow);
+        sun_shadow_map = builder.sample(shadow.depth, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+        sun_shadow_space = builder.uniform_buffer(shadow.space, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+    }
 }
 
 std::string LightingInputs::shader(const std::string& base) const {
-    return base + (camera_medium ? ".per_pixel" : ".frame") + (caustic_map ? "_caustics" : "");
+    return base + (camera_medium ? ".per_pixel" : ".frame") + (caustic_map ? "_caustics" : "") +
+           (sun_shadow_map ? "_shadow" : "");
 }
 
 void LightingInputs::add_layout(std::vector<VkDescriptorSetLayoutBinding>& bindings) const {
@@ -25,6 +31,10 @@ void LightingInputs::add_layout(std::vector<VkDescriptorSetLayoutBinding>& bindi
         bindings.push_back({4, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
         bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
     }
+    if (sun_shadow_map) {
+        bindings.push_back({6, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
+        bindings.push_back({7, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
+    }
 }
 
 void LightingInputs::add_bindings(const fg::PassContext& context, std::vector<fg::DescriptorBinding>& bindings) const {
@@ -32,6 +42,10 @@ void LightingInputs::add_bindings(const fg::PassContext& context, std::vector<fg
     if (caustic_map) {
         bindings.push_back(context.uniform_buffer(4, *caustic_frame));
         bindings.push_back(context.sampled(5, *caustic_map));
+    }
+    if (sun_shadow_map) {
+        bindings.push_back(context.sampled_nearest(6, *sun_shadow_map));
+        bindings.push_back(context.uniform_buffer(7, *sun_shadow_space));
     }
 }
 

@@ -1,7 +1,7 @@
 // What every pass that lights receivers reads besides the frame constants and the
-// scene optics: the stencil split's per-pixel camera medium and the caustic map, each
-// only while its passes run. One place declares them, names the shader variant that
-// matches (shaders/CMakeLists.txt) and binds them (bindings 3, 4 and 5).
+// scene optics: the stencil split's per-pixel camera medium, the caustic map and the sun
+// shadow map, each only while its passes run. One place declares them, names the shader
+// variant that matches (shaders/CMakeLists.txt) and binds them (bindings 3 to 7).
 #pragma once
 
 #include "engine/framegraph/blackboard.hpp"
@@ -18,6 +18,8 @@ struct LightingInputs {
     std::optional<fg::ImageHandle> camera_medium;  // binding 3: the stencil split's mask
     std::optional<fg::BufferHandle> caustic_frame;  // binding 4: the caustic map's light space
     std::optional<fg::ImageHandle> caustic_map;     // binding 5: the caustic irradiance map
+    std::optional<fg::ImageHandle> sun_shadow_map;   // binding 6: the sun's depth of the objects
+    std::optional<fg::BufferHandle> sun_shadow_space;  // binding 7: its light space
 
     // Declares, as sampled/uniform reads of this pass, whichever the blackboard holds.
     // The caustic map is traced to the floor plane: passes that light other receivers

@@ -29,6 +29,11 @@ ReceiverMeshes::ReceiverMeshes(const Context& context, const std::vector<Receive
         indices.insert(indices.end(), mesh.indices.begin(), mesh.indices.end());
     }
     if (draws_.empty()) return;
+    bounds_lo_ = bounds_hi_ = glm::dvec3(vertices.front().position);
+    for (const Vertex& vertex : vertices) {
+        bounds_lo_ = glm::min(bounds_lo_, glm::dvec3(vertex.position));
+        bounds_hi_ = glm::max(bounds_hi_, glm::dvec3(vertex.position));
+    }
     // Host-visible buffers written once: on lavapipe all memory is host-visible anyway,
     // and on a GPU the vertex fetch from host memory is acceptable for receivers.
     vertices_ = Buffer(context, {vertices.size() * sizeof(Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, true},

@@ -30,6 +30,9 @@ public:
 
     bool empty() const { return draws_.empty(); }
     const std::vector<ReceiverDraw>& draws() const { return draws_; }
+    // The world-space box around every vertex (meaningless when empty()).
+    const glm::dvec3& bounds_lo() const { return bounds_lo_; }
+    const glm::dvec3& bounds_hi() const { return bounds_hi_; }
     // Imported with the state the constructor's host writes left them in; read only.
     fg::BufferHandle import_vertices(fg::FrameGraph& graph) const;
     fg::BufferHandle import_indices(fg::FrameGraph& graph) const;
@@ -37,6 +40,7 @@ public:
 private:
     Buffer vertices_, indices_;
     std::vector<ReceiverDraw> draws_;
+    glm::dvec3 bounds_lo_{0.0}, bounds_hi_{0.0};
 };
 
 }  // namespace vkw::passes

@@ -48,6 +48,11 @@ FrameExecutor::FrameExecutor(Context& context, FrameGraph& graph, PipelineStore&
     sampler_info.maxLod = 0.0f;
     VKW_CHECK(vkCreateSampler(device, &sampler_info, nullptr, &linear_sampler_), "linear sampler");
     context_.set_name(linear_sampler_, VK_OBJECT_TYPE_SAMPLER, "linear clamp sampler");
+    // For formats without linear filtering (depth): validation checks the sampler's filter
+    // against the format even where the shader only uses texelFetch.
+    sampler_info.magFilter = sampler_info.minFilter = VK_FILTER_NEAREST;
+    VKW_CHECK(vkCreateSampler(device, &sampler_info, nullptr, &nearest_sampler_), "nearest sampler");
+    context_.set_name(nearest_sampler_, VK_OBJECT_TYPE_SAMPLER, "nearest clamp sampler");
 
     realize_resources(options_.check_finite);
     create_render_passes();
@@ -71,6 +76,7 @@ FrameExecutor::~FrameExecutor() {
     }
     if (query_pool_) vkDestroyQueryPool(device, query_pool_, nullptr);
     if (linear_sampler_) vkDestroySampler(device, linear_sampler_, nullptr);
+    if (nearest_sampler_) vkDestroySampler(device, nearest_sampler_, nullptr);
     if (fence_) vkDestroyFence(device, fence_, nullptr);
     if (command_pool_) vkDestroyCommandPool(device, command_pool_, nullptr);
 }

@@ -72,6 +72,7 @@ public:
     VkImageView view(uint32_t resource) const;
     VkBuffer buffer(uint32_t resource) const;
     VkSampler linear_sampler() const { return linear_sampler_; }
+    VkSampler nearest_sampler() const { return nearest_sampler_; }
     VkRenderPass render_pass(uint32_t pass) const { return render_passes_[pass]; }
     // The image layout the graph gives `resource` in `pass`.
     VkImageLayout layout_in_pass(uint32_t pass, uint32_t resource) const;
@@ -107,6 +108,7 @@ private:
     uint64_t heap_bytes_ = 0;
     uint64_t unaliased_bytes_ = 0;
     VkSampler linear_sampler_ = VK_NULL_HANDLE;
+    VkSampler nearest_sampler_ = VK_NULL_HANDLE;
     std::vector<VkRenderPass> render_passes_;  // by pass index; null unless recorded with a VkRenderPass
     std::vector<VkFramebuffer> framebuffers_;
     VkCommandPool command_pool_ = VK_NULL_HANDLE;

@@ -58,6 +58,12 @@ DescriptorBinding PassContext::sampled(uint32_t binding, ImageHandle handle) con
     return b;
 }
 
+DescriptorBinding PassContext::sampled_nearest(uint32_t binding, ImageHandle handle) const {
+    DescriptorBinding b = sampled(binding, handle);
+    b.image.sampler = executor_.nearest_sampler();
+    return b;
+}
+
 DescriptorBinding PassContext::storage_image(uint32_t binding, ImageHandle handle) const {
     DescriptorBinding b{binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
     b.image = {VK_NULL_HANDLE, view(handle), executor_.layout_in_pass(pass_, handle.index)};

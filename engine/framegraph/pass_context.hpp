@@ -69,6 +69,8 @@ public:
 
     // Descriptors for handles this pass declared; the image layouts are the graph's.
     DescriptorBinding sampled(uint32_t binding, ImageHandle handle) const;
+    // The same with a nearest-filter sampler: for formats without linear filtering (depth).
+    DescriptorBinding sampled_nearest(uint32_t binding, ImageHandle handle) const;
     DescriptorBinding storage_image(uint32_t binding, ImageHandle handle) const;
     DescriptorBinding storage_buffer(uint32_t binding, BufferHandle handle) const;
     DescriptorBinding uniform_buffer(uint32_t binding, BufferHandle handle) const;

@@ -4,6 +4,7 @@
 #include "engine/framegraph/blackboard.hpp"
 #include "engine/framegraph/handles.hpp"
 #include "passes/caustics_resolve.hpp"
+#include "passes/sun_shadow.hpp"
 
 namespace vkw::keys {
 
@@ -15,5 +16,7 @@ inline constexpr fg::BlackboardKey<fg::BufferHandle> kSceneOptics{"scene optics"
 // while the stencil split runs; passes/water_volume_stencil.hpp).
 inline constexpr fg::BlackboardKey<fg::ImageHandle> kCameraMedium{"camera medium"};
 inline constexpr fg::BlackboardKey<passes::CausticMap> kCausticMap{"caustic map"};
+// Published only while the scene has receiver meshes and the sun is up (passes/sun_shadow.hpp).
+inline constexpr fg::BlackboardKey<passes::SunShadowMap> kSunShadow{"sun shadow map"};
 
 }  // namespace vkw::keys

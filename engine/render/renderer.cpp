@@ -13,6 +13,7 @@
 #include "passes/receivers.hpp"
 #include "passes/scene_optics.hpp"
 #include "passes/sky.hpp"
+#include "passes/sun_shadow.hpp"
 #include "passes/water_shading.hpp"
 #include "passes/water_surface.hpp"
 #include "passes/water_surface_spectrum.hpp"
@@ -32,6 +33,13 @@ namespace {
 uint32_t caustic_map_texels(uint32_t grid_resolution) { return std::clamp(grid_resolution + 2, 16u, 16384u); }
 
 VkDeviceSize hdr_bytes(uint32_t width, uint32_t height) { return VkDeviceSize{width} * height * 4 * sizeof(float); }
+
+// Texels per side of the sun shadow map: 1024 resolves about 2 cm over the default 20 m floor.
+constexpr uint32_t kSunShadowTexels = 1024;
+
+bool casts_sun_shadows(const Scene& scene, const passes::ReceiverMeshes* receivers) {
+    return receivers && !receivers->empty() && scene.sun.direction.y < 0.0;
+}
 }  // namespace
 
 void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
@@ -71,6 +79,16 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
                                        graph, passes::add_caustic_photon_pass(graph, caustics), caustics));
         }
     }
+    if (casts_sun_shadows(scene, receivers)) {
+        // Everything that can receive the sun above the water: the meshes and the floor square.
+        passes::SunShadowInputs shadow;
+        shadow.sun_direction = scene.sun.direction;
+        const double e = scene.floor.half_extent;
+        shadow.bounds_lo = glm::min(receivers->bounds_lo(), glm::dvec3(-e, scene.floor.height, -e));
+        shadow.bounds_hi = glm::max(receivers->bounds_hi(), glm::dvec3(e, scene.floor.height, e));
+        shadow.size = kSunShadowTexels;
+        graph.blackboard().put(keys::kSunShadow, passes::add_sun_shadow_pass(graph, *receivers, shadow));
+    }
     passes::add_floor_pass(graph);
     if (receivers && !receivers->empty()) passes::add_receivers_pass(graph, *receivers);
     if (surface) passes::add_water_shading_pass(graph, *surface, scene.water->grid_resolution);
@@ -107,6 +125,14 @@ std::string Renderer::water_configuration(const Scene& scene) {
                std::to_string(wave.steepness) + "," + std::to_string(wave.speed);
     }
     return key;
+}
+
+// The sun shadow pass captures its fit (the sun and the floor square; the meshes are
+// covered by receiver_meshes) at declaration.
+std::string Renderer::sun_shadow_configuration(const Scene& scene) {
+    return "shadow " + std::to_string(scene.sun.direction.x) + "," + std::to_string(scene.sun.direction.y) + "," +
+           std::to_string(scene.sun.direction.z) + " floor " + std::to_string(scene.floor.height) + "," +
+           std::to_string(scene.floor.half_extent);
 }
 
 const passes::OceanSpectrumBuffer* Renderer::ocean_spectrum(const Scene& scene) {
@@ -167,7 +193,8 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options) 
     }
     fg::FrameNeeds needs = decide_frame_needs(scene, double(options.width) / double(options.height));
     // Everything the graph's shape depends on; the rest reaches it through the constants.
-    const std::string configuration = water_configuration(scene) + " " + std::to_string(options.width) + "x" +
+    const std::string configuration = water_configuration(scene) + " " + sun_shadow_configuration(scene) + " " +
+                                      std::to_string(options.width) + "x" +
                                       std::to_string(options.height) + " " +
                                       needs.key() + " " + std::to_string(int(options.recording)) + " " +
                                       std::to_string(int(options.check_finite)) + " " +

@@ -61,6 +61,7 @@ public:
 private:
     struct CompiledFrame;
     static std::string water_configuration(const Scene& scene);
+    static std::string sun_shadow_configuration(const Scene& scene);
     const passes::OceanSpectrumBuffer* ocean_spectrum(const Scene& scene);
     const passes::ReceiverMeshes* receiver_meshes(const Scene& scene);
     Context& context_;

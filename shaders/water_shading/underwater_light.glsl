@@ -23,6 +23,8 @@ bool point_under_water(vec3 p) {
 
 // Sun through the flat surface, E_perp max(0, -t.N) exp(-sigma_t depth / cos_t), plus
 // skylight pi L_sky_avg T_hemi exp(-sigma_t depth) (the vertical path of the model).
+// Not yet: the stand-in's shadowing by objects along the refracted beam t (PHYSICS.md
+// section 1); the sun shadow map is cast along s and serves receivers above the water only.
 vec3 receiver_irradiance_under_water(vec3 p, vec3 normal, SceneOptics optics) {
     float depth = max(0.0, frame.water.x - p.y);
     vec3 sigma_t = frame.medium_sigma_t.rgb;
@@ -38,7 +40,7 @@ vec3 receiver_irradiance_under_water(vec3 p, vec3 normal, SceneOptics optics) {
 
 vec3 receiver_irradiance(vec3 p, vec3 normal, SceneOptics optics) {
     return point_under_water(p) ? receiver_irradiance_under_water(p, normal, optics)
-                                : receiver_irradiance_above_water(normal);
+                                : receiver_irradiance_above_water(p, normal);
 }
 
 // Where a ray from p in direction d (in the water) meets the floor plane, and the

@@ -1,0 +1,81 @@
+// The sun shadow map (passes/sun_shadow.hpp): a 2 m box standing on a floor with no water,
+// the sun 60 degrees high toward +x. Closed forms of the model (PHYSICS.md section 1), at the
+// pixels that see chosen world points (projected with the frame's own view_proj):
+// - a floor point inside the box's shadow gets skylight only: L = rho pi L_sky / pi;
+// - a floor point far outside it gets sun and sky: L = rho (E_s sin(60) + pi L_sky) / pi;
+// - the box top, the occluder nearest the sun, is not shadowed by itself (the bias works).
+#include "engine/render/frame_constants.hpp"
+#include "engine/render/renderer.hpp"
+#include "engine/scene/scene_loader.hpp"
+#include "tests/support/gpu_test.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace vkw::test {
+namespace {
+
+using SunShadow = GpuTest;
+
+constexpr uint32_t kSize = 64;
+
+// The pixel whose footprint contains world point p (the viewport flips y: row 0 is the top).
+const float* pixel_seeing(const RenderResult& result, const FrameConstants& constants, const glm::dvec3& p) {
+    const glm::vec4 clip = constants.view_proj * glm::vec4(glm::vec3(p), 1.0f);
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    const int x = static_cast<int>(std::floor((0.5f + 0.5f * ndc.x) * float(kSize)));
+    const int y = static_cast<int>(std::floor((0.5f - 0.5f * ndc.y) * float(kSize)));
+    return result.image.pixel(x, y);
+}
+
+TEST_F(SunShadow, BoxShadowsTheFloorAndNotItself) {
+    const Scene scene = parse_scene(R"({
+      "camera": {"position": [0, 20, 0.001], "target": [0, 0, 0], "fov_y_deg": 30},
+      "sun": {"elevation_deg": 60, "azimuth_deg": 90, "irradiance": [2, 3, 4]},
+      "sky": {"radiance": [0.2, 0.3, 0.4]},
+      "floor": {"height": 0, "half_extent": 10, "albedo": [0.6, 0.5, 0.4]},
+      "receivers": [{"type": "box", "half_size": [1, 1, 1], "translation": [0, 1, 0], "albedo": [0.7, 0.5, 0.3]}]
+    })", "shadow.json");
+    Renderer renderer(context());
+    const RenderResult result = renderer.render(scene, {kSize, kSize, true, fg::TimingMode::None});
+    const FrameConstants constants = make_frame_constants(scene, kSize, kSize);
+    // The top edge (y = 2) casts to x = -1 - 2 / tan(60) = -2.15 m: the shadow spans x in
+    // [-2.15, -1], z in [-1, 1] on the floor. Its middle is more than a pixel (0.17 m) from every edge.
+    const float* shadowed = pixel_seeing(result, constants, {-1.58, 0.0, 0.0});
+    const float* lit_floor = pixel_seeing(result, constants, {3.0, 0.0, 3.0});
+    const float* box_top = pixel_seeing(result, constants, {0.3, 2.0, 0.2});
+    const double cos_sun = -scene.sun.direction.y;
+    ASSERT_NEAR(cos_sun, std::sqrt(3.0) / 2.0, 1e-12);
+    for (int c = 0; c < 3; ++c) {
+        const double sky = std::numbers::pi * scene.sky.radiance[c];
+        const double sun = scene.sun.irradiance[c] * cos_sun;
+        const double floor_rho = scene.floor.albedo[c], box_rho = scene.receivers[0].albedo[c];
+        const double expected_shadowed = floor_rho * sky / std::numbers::pi;
+        const double expected_lit = floor_rho * (sun + sky) / std::numbers::pi;
+        const double expected_top = box_rho * (sun + sky) / std::numbers::pi;
+        // As in receivers_test: ~10 fp32 roundings of the inputs and the shading, plus the
+        // interpolated normal's renormalisation: 2e-6 relative. The visibility is exactly 0 or 1.
+        EXPECT_NEAR(shadowed[c], expected_shadowed, 2e-6 * expected_shadowed) << "channel " << c;
+        EXPECT_NEAR(lit_floor[c], expected_lit, 2e-6 * expected_lit) << "channel " << c;
+        EXPECT_NEAR(box_top[c], expected_top, 2e-6 * expected_top) << "channel " << c;
+    }
+}
+
+TEST_F(SunShadow, ShadowMapPassRunsOnlyWithObjectsAndTheSunUp) {
+    const std::string pipeline = "sun shadow map/sun shadow map/dynamic";
+    const auto renders_shadow_map = [&](const std::string& extra) {
+        const Scene scene = parse_scene(R"({"camera": {"position": [0, 5, 5], "target": [0, 0, 0]}, "sky": {"radiance": [0.2, 0.3, 0.4]})" + extra + "}",
+                                        "shadow.json");
+        Renderer renderer(context());
+        renderer.render(scene, {16, 16, true, fg::TimingMode::None});
+        return renderer.pipelines().contains(pipeline);
+    };
+    const std::string box = R"(, "receivers": [{"type": "box", "half_size": [1, 1, 1]}])";
+    EXPECT_TRUE(renders_shadow_map(R"(, "sun": {"elevation_deg": 60})" + box));
+    EXPECT_FALSE(renders_shadow_map(R"(, "sun": {"elevation_deg": 60})"));
+    EXPECT_FALSE(renders_shadow_map(R"(, "sun": {"elevation_deg": -10})" + box));
+}
+
+}  // namespace
+}  // namespace vkw::test
