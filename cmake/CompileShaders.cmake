@@ -1,7 +1,24 @@
-# vkwater_compile_shaders(TARGET name SOURCES a.comp b.frag ...)
-# Compiles GLSL to SPIR-V in the build tree with glslangValidator. The depfile makes
-# an edit to an included .glsl rebuild every shader that includes it. A shader error
-# fails the build with glslang's file:line message.
+# Compiles GLSL to SPIR-V in the build tree with glslangValidator. The depfile makes an
+# edit to an included .glsl rebuild every shader that includes it. A shader error fails
+# the build with glslang's file:line message.
+
+# The one compile rule: `abs` (a source under shaders/) to `out` with extra arguments.
+function(vkwater_glsl_command abs out)
+  file(RELATIVE_PATH rel ${CMAKE_SOURCE_DIR}/shaders ${abs})
+  get_filename_component(out_dir ${out} DIRECTORY)
+  add_custom_command(
+    OUTPUT ${out}
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${out_dir}
+    COMMAND Vulkan::glslangValidator --quiet --target-env vulkan1.3 ${ARGN}
+            -I${CMAKE_SOURCE_DIR}/shaders
+            --depfile ${out}.d -o ${out} ${abs}
+    MAIN_DEPENDENCY ${abs}
+    DEPFILE ${out}.d
+    COMMENT "GLSL ${out}"
+    VERBATIM)
+endfunction()
+
+# vkwater_compile_shaders(TARGET name SOURCES a.comp b.frag ...): build/shaders/<path>.spv each.
 function(vkwater_compile_shaders)
   cmake_parse_arguments(ARG "" "TARGET" "SOURCES" ${ARGN})
   set(outputs)
@@ -9,17 +26,7 @@ function(vkwater_compile_shaders)
     get_filename_component(abs ${src} ABSOLUTE)
     file(RELATIVE_PATH rel ${CMAKE_SOURCE_DIR}/shaders ${abs})
     set(out ${VKWATER_SHADER_OUTPUT_DIR}/${rel}.spv)
-    get_filename_component(out_dir ${out} DIRECTORY)
-    add_custom_command(
-      OUTPUT ${out}
-      COMMAND ${CMAKE_COMMAND} -E make_directory ${out_dir}
-      COMMAND Vulkan::glslangValidator --quiet --target-env vulkan1.3
-              -I${CMAKE_SOURCE_DIR}/shaders
-              --depfile ${out}.d -o ${out} ${abs}
-      MAIN_DEPENDENCY ${abs}
-      DEPFILE ${out}.d
-      COMMENT "GLSL ${rel}"
-      VERBATIM)
+    vkwater_glsl_command(${abs} ${out})
     list(APPEND outputs ${out})
   endforeach()
   add_custom_target(${ARG_TARGET} ALL DEPENDS ${outputs})
@@ -28,7 +35,7 @@ endfunction()
 # vkwater_compile_shader_variants(TARGET name SOURCE file VARIANTS variant=DEF1,DEF2 ...)
 # Compiles one GLSL source once per variant with those macros defined, into
 # build/shaders/<path>.<variant>.spv; the engine loads it as "<path>.<variant>". The
-# permutations of a shader (per-pixel camera medium, caustics) then live in one file.
+# permutations of a shader (per-pixel camera medium, caustics, shadows) then live in one file.
 function(vkwater_compile_shader_variants)
   cmake_parse_arguments(ARG "" "TARGET;SOURCE" "VARIANTS" ${ARGN})
   get_filename_component(abs ${ARG_SOURCE} ABSOLUTE)
@@ -47,17 +54,7 @@ function(vkwater_compile_shader_variants)
       endforeach()
     endif()
     set(out ${VKWATER_SHADER_OUTPUT_DIR}/${rel}.${name}.spv)
-    get_filename_component(out_dir ${out} DIRECTORY)
-    add_custom_command(
-      OUTPUT ${out}
-      COMMAND ${CMAKE_COMMAND} -E make_directory ${out_dir}
-      COMMAND Vulkan::glslangValidator --quiet --target-env vulkan1.3 ${defines}
-              -I${CMAKE_SOURCE_DIR}/shaders
-              --depfile ${out}.d -o ${out} ${abs}
-      MAIN_DEPENDENCY ${abs}
-      DEPFILE ${out}.d
-      COMMENT "GLSL ${rel} (${name})"
-      VERBATIM)
+    vkwater_glsl_command(${abs} ${out} ${defines})
     list(APPEND outputs ${out})
   endforeach()
   add_custom_target(${ARG_TARGET} ALL DEPENDS ${outputs})

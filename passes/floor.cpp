@@ -8,8 +8,6 @@ namespace vkw::passes {
 
 void add_floor_pass(fg::FrameGraph& graph) {
     struct Data {
-        fg::BufferHandle constants;
-        fg::BufferHandle optics;
         fg::ImageHandle hdr;
         fg::ImageHandle depth;
         LightingInputs lighting;
@@ -17,10 +15,6 @@ void add_floor_pass(fg::FrameGraph& graph) {
     const auto& data = graph.add_pass<Data>(
         "floor", fg::PassKind::Graphics,
         [&](fg::PassBuilder& builder, Data& d) {
-            d.constants = builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants),
-                                                 VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
-                                                     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-            d.optics = builder.read_storage(graph.blackboard().get(keys::kSceneOptics));
             d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
             d.depth = builder.create_image("scene depth", {VK_FORMAT_D32_SFLOAT});
             d.depth = builder.depth_stencil_attachment(d.depth, fg::LoadOp::Clear, {.depth = 0.0f});
@@ -30,15 +24,11 @@ void add_floor_pass(fg::FrameGraph& graph) {
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "receivers/floor.vert";
             desc.fragment_shader = d.lighting.shader("receivers/receiver.frag");
-            desc.layout.bindings = {
-                {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
-                {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}};
             d.lighting.add_layout(desc.layout.bindings);
             desc.depth_test = true;
             desc.depth_write = true;
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
-            std::vector<fg::DescriptorBinding> bindings{context.uniform_buffer(0, d.constants),
-                                                        context.storage_buffer(1, d.optics)};
+            std::vector<fg::DescriptorBinding> bindings;
             d.lighting.add_bindings(context, bindings);
             context.bind(pipeline, bindings);
             vkCmdDraw(context.cmd(), 6, 1, 0, 0);

@@ -5,6 +5,9 @@
 namespace vkw::passes {
 
 void LightingInputs::declare(fg::PassBuilder& builder, const fg::Blackboard& blackboard, bool with_caustics) {
+    constants = builder.uniform_buffer(blackboard.get(keys::kFrameConstants),
+                                       VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+    optics = builder.read_storage(blackboard.get(keys::kSceneOptics));
     if (blackboard.has(keys::kCameraMedium)) {
         camera_medium = builder.sample(blackboard.get(keys::kCameraMedium), VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
     }
@@ -26,6 +29,8 @@ std::string LightingInputs::shader(const std::string& base) const {
 }
 
 void LightingInputs::add_layout(std::vector<VkDescriptorSetLayoutBinding>& bindings) const {
+    bindings.push_back({0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT});
+    bindings.push_back({1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
     if (camera_medium) bindings.push_back({3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
     if (caustic_map) {
         bindings.push_back({4, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
@@ -38,6 +43,8 @@ void LightingInputs::add_layout(std::vector<VkDescriptorSetLayoutBinding>& bindi
 }
 
 void LightingInputs::add_bindings(const fg::PassContext& context, std::vector<fg::DescriptorBinding>& bindings) const {
+    bindings.push_back(context.uniform_buffer(0, constants));
+    bindings.push_back(context.storage_buffer(1, optics));
     if (camera_medium) bindings.push_back(context.sampled(3, *camera_medium));
     if (caustic_map) {
         bindings.push_back(context.uniform_buffer(4, *caustic_frame));

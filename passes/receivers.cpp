@@ -8,17 +8,13 @@ namespace vkw::passes {
 
 void add_receivers_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes) {
     struct Data {
-        fg::BufferHandle constants, optics, vertices, indices;
+        fg::BufferHandle vertices, indices;
         fg::ImageHandle hdr, depth;
         LightingInputs lighting;
     };
     const auto& data = graph.add_pass<Data>(
         "receivers", fg::PassKind::Graphics,
         [&](fg::PassBuilder& builder, Data& d) {
-            d.constants = builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants),
-                                                 VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
-                                                     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-            d.optics = builder.read_storage(graph.blackboard().get(keys::kSceneOptics));
             d.vertices = builder.vertex_buffer(meshes.import_vertices(graph));
             d.indices = builder.index_buffer(meshes.import_indices(graph));
             d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
@@ -29,9 +25,6 @@ void add_receivers_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes) {
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "receivers/mesh.vert";
             desc.fragment_shader = d.lighting.shader("receivers/receiver.frag");
-            constexpr VkShaderStageFlags both = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, both},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}};
             d.lighting.add_layout(desc.layout.bindings);
             desc.layout.push_constant_bytes = sizeof(glm::vec4);
             desc.vertex_bindings = {{0, 6 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX}};
@@ -40,8 +33,7 @@ void add_receivers_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes) {
             desc.depth_test = true;
             desc.depth_write = true;
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
-            std::vector<fg::DescriptorBinding> bindings{context.uniform_buffer(0, d.constants),
-                                                        context.storage_buffer(1, d.optics)};
+            std::vector<fg::DescriptorBinding> bindings;
             d.lighting.add_bindings(context, bindings);
             context.bind(pipeline, bindings);
             const VkBuffer vertex_buffer = context.buffer(d.vertices);

@@ -8,18 +8,14 @@ namespace vkw::passes {
 
 void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uint32_t grid_resolution) {
     struct Data {
-        fg::BufferHandle constants, optics, surface;
+        fg::BufferHandle surface;
         fg::ImageHandle hdr, depth;
         LightingInputs lighting;
     };
-    constexpr VkPipelineStageFlags2 kVertexAndFragment =
-        VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
     const auto& data = graph.add_pass<Data>(
         "water", fg::PassKind::Graphics,
         [&](fg::PassBuilder& builder, Data& d) {
             builder.serves(fg::Effect::Water);
-            d.constants = builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants), kVertexAndFragment);
-            d.optics = builder.read_storage(graph.blackboard().get(keys::kSceneOptics));
             d.surface = builder.read_storage(surface, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT);
             d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
             d.depth = builder.depth_stencil_attachment(graph.blackboard().get(keys::kSceneDepth), fg::LoadOp::Load);
@@ -29,18 +25,13 @@ void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uin
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "water_shading/water_surface.vert";
             desc.fragment_shader = d.lighting.shader("water_shading/water_surface.frag");
-            constexpr VkShaderStageFlags both = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, both},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT},
-                                    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT}};
+            desc.layout.bindings = {{2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT}};
             desc.layout.push_constant_bytes = sizeof(uint32_t);
             d.lighting.add_layout(desc.layout.bindings);
             desc.depth_test = true;
             desc.depth_write = true;
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
-            std::vector<fg::DescriptorBinding> bindings{context.uniform_buffer(0, d.constants),
-                                                        context.storage_buffer(1, d.optics),
-                                                        context.storage_buffer(2, d.surface)};
+            std::vector<fg::DescriptorBinding> bindings{context.storage_buffer(2, d.surface)};
             d.lighting.add_bindings(context, bindings);
             context.bind(pipeline, bindings);
             context.push_constants(pipeline, grid_resolution);
