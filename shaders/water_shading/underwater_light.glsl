@@ -33,6 +33,13 @@ vec3 receiver_irradiance_under_water(vec3 p, vec3 normal, SceneOptics optics) {
 #else
     float cos_receiver = max(0.0, -dot(optics.refracted_sun.xyz, normal));
     vec3 sun = optics.e_perp0.rgb * cos_receiver * exp(-sigma_t * (depth / optics.refracted_sun.w));
+#ifdef VKWATER_SUN_SHADOW
+    // The stand-in is shadowed along the refracted beam (PHYSICS.md section 1): by objects
+    // above the water, where the beam enters the (flat) surface, through the sun shadow
+    // map. Not yet: objects under the water along the beam.
+    vec3 entry = p - (depth / optics.refracted_sun.w) * optics.refracted_sun.xyz;
+    sun *= sun_visibility(entry, max(-frame.sun_direction.y, 1e-3));
+#endif
 #endif
     vec3 sky = PI * frame.sky_average.rgb * optics.transmission.x * exp(-sigma_t * depth);
     return sun + sky;

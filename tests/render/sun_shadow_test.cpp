@@ -3,11 +3,13 @@
 // pixels that see chosen world points (projected with the frame's own view_proj):
 // - a floor point inside the box's shadow gets skylight only: L = rho pi L_sky / pi;
 // - a floor point far outside it gets sun and sky: L = rho (E_s sin(60) + pi L_sky) / pi;
-// - the box top, the occluder nearest the sun, is not shadowed by itself (the bias works).
+// - the box top, the occluder nearest the sun, is not shadowed by itself (the bias works);
+// - under clear water, a box above it shadows the floor's stand-in sun along the refracted beam.
 #include "engine/render/frame_constants.hpp"
 #include "engine/render/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tests/support/gpu_test.hpp"
+#include "tools/reference/optics.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -59,6 +61,42 @@ TEST_F(SunShadow, BoxShadowsTheFloorAndNotItself) {
         EXPECT_NEAR(shadowed[c], expected_shadowed, 2e-6 * expected_shadowed) << "channel " << c;
         EXPECT_NEAR(lit_floor[c], expected_lit, 2e-6 * expected_lit) << "channel " << c;
         EXPECT_NEAR(box_top[c], expected_top, 2e-6 * expected_top) << "channel " << c;
+    }
+}
+
+TEST_F(SunShadow, ObjectsAboveTheWaterShadowTheStandInAlongTheRefractedBeam) {
+    // A box floating above clear water (sigma = 0, caustics off: the flat stand-in lights the
+    // floor), the sun 60 degrees high toward +x, the camera under the water looking down.
+    // The refracted beam t = (-0.375, -0.927, 0) enters the surface 0.809 m toward +x of a
+    // floor point 2 m down; the box (y from 1 to 3) shadows the surface for x in
+    // [-2.73, 0.42]. Floor x = -1.96 enters at x = -1.15: shadowed; floor x = 2.5 enters
+    // at 3.31: lit. Both are more than a metre from every shadow edge.
+    const Scene scene = parse_scene(R"({
+      "camera": {"position": [0, -0.1, 0.001], "target": [0, -2, 0], "fov_y_deg": 120},
+      "sun": {"elevation_deg": 60, "azimuth_deg": 90, "irradiance": [2, 3, 4]},
+      "sky": {"radiance": [0.2, 0.3, 0.4]},
+      "floor": {"height": -2, "half_extent": 10, "albedo": [0.6, 0.5, 0.4]},
+      "water": {"level": 0, "half_extent": 10},
+      "medium": {"sigma_a": [0, 0, 0], "sigma_s": [0, 0, 0], "g": 0},
+      "effects": {"caustics": {"mode": "off"}},
+      "receivers": [{"type": "box", "half_size": [1, 1, 1], "translation": [0, 2, 0]}]
+    })", "shadow_under_water.json");
+    Renderer renderer(context());
+    const RenderResult result = renderer.render(scene, {kSize, kSize, true, fg::TimingMode::None});
+    const FrameConstants constants = make_frame_constants(scene, kSize, kSize);
+    const float* shadowed = pixel_seeing(result, constants, {-1.96, -2.0, 0.0});
+    const float* lit = pixel_seeing(result, constants, {2.5, -2.0, 0.0});
+    const double cos_s = -scene.sun.direction.y;
+    const double transmittance = 1.0 - ref::fresnel_reflectance(cos_s, 1.0, 1.333);
+    const double t_hemi = ref::hemispherical_transmittance(1.333);
+    for (int c = 0; c < 3; ++c) {
+        const double rho = scene.floor.albedo[c];
+        const double sky = std::numbers::pi * scene.sky.radiance[c] * t_hemi;
+        // Clear water: the floor's sun is E_s cos(theta_s) T (PHYSICS.md section 3 with sigma = 0).
+        const double sun = scene.sun.irradiance[c] * cos_s * transmittance;
+        // fp32 shading as above, and T_hemi by 16-point Gauss-Legendre in fp32 (1e-6): 1e-5.
+        EXPECT_NEAR(shadowed[c], rho * sky / std::numbers::pi, 1e-5 * rho * sky / std::numbers::pi) << c;
+        EXPECT_NEAR(lit[c], rho * (sun + sky) / std::numbers::pi, 1e-5 * rho * (sun + sky) / std::numbers::pi) << c;
     }
 }
 
