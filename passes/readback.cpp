@@ -7,16 +7,17 @@ namespace {
 
 // The pass both overloads add: `Source` is the handle type, `copy` records the command.
 template <class Source, class Copy>
-void add_copy_to_host(fg::FrameGraph& graph, Source source, VkBuffer host_buffer, VkDeviceSize bytes, Copy copy) {
+void add_copy_to_host(fg::FrameGraph& graph, Source source, VkBuffer host_buffer, VkDeviceSize bytes,
+                      const std::string& name, Copy copy) {
     fg::ImportedBuffer imported{host_buffer, bytes};
     imported.final_state = fg::access_state(fg::Use::HostRead, fg::PassKind::Transfer);
-    const fg::BufferHandle target = graph.import_buffer("readback", imported);
+    const fg::BufferHandle target = graph.import_buffer(name, imported);
     struct Data {
         Source source;
         fg::BufferHandle target;
     };
     const auto& data = graph.add_pass<Data>(
-        "readback", fg::PassKind::Transfer,
+        name, fg::PassKind::Transfer,
         [&](fg::PassBuilder& builder, Data& d) {
             d.source = builder.copy_source(source);
             d.target = builder.copy_destination(target);
@@ -27,8 +28,9 @@ void add_copy_to_host(fg::FrameGraph& graph, Source source, VkBuffer host_buffer
 
 }  // namespace
 
-void add_readback_pass(fg::FrameGraph& graph, fg::ImageHandle image, VkBuffer host_buffer, VkDeviceSize bytes) {
-    add_copy_to_host(graph, image, host_buffer, bytes,
+void add_readback_pass(fg::FrameGraph& graph, fg::ImageHandle image, VkBuffer host_buffer, VkDeviceSize bytes,
+                       const std::string& name) {
+    add_copy_to_host(graph, image, host_buffer, bytes, name,
                      [](fg::PassContext& context, fg::ImageHandle source, VkBuffer target) {
                          const VkExtent2D extent = context.extent(source);
                          VkBufferImageCopy region{};
@@ -39,8 +41,9 @@ void add_readback_pass(fg::FrameGraph& graph, fg::ImageHandle image, VkBuffer ho
                      });
 }
 
-void add_readback_pass(fg::FrameGraph& graph, fg::BufferHandle buffer, VkBuffer host_buffer, VkDeviceSize bytes) {
-    add_copy_to_host(graph, buffer, host_buffer, bytes,
+void add_readback_pass(fg::FrameGraph& graph, fg::BufferHandle buffer, VkBuffer host_buffer, VkDeviceSize bytes,
+                       const std::string& name) {
+    add_copy_to_host(graph, buffer, host_buffer, bytes, name,
                      [bytes](fg::PassContext& context, fg::BufferHandle source, VkBuffer target) {
                          const VkBufferCopy region{0, 0, bytes};
                          vkCmdCopyBuffer(context.cmd(), context.buffer(source), target, 1, &region);

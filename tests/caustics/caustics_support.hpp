@@ -10,6 +10,7 @@
 #include "passes/caustics_bands.hpp"
 #include "passes/caustics_photons.hpp"
 #include "passes/caustics_resolve.hpp"
+#include "passes/readback.hpp"
 #include "passes/water_surface.hpp"
 
 #include <glm/glm.hpp>
@@ -40,39 +41,6 @@ struct CausticRun {
     uint64_t texel(size_t t, int c) const { return flux[passes::kCausticFluxHeaderBytes / 8 + 3 * t + c]; }
 };
 
-// passes::add_readback_pass names its pass "readback", and a graph's pass names are unique: the
-// tests read several results of one frame, so this copy pass takes a name.
-template <class Handle>
-void add_named_readback(fg::FrameGraph& graph, const std::string& name, Handle source, VkBuffer host,
-                        VkDeviceSize bytes) {
-    fg::ImportedBuffer imported{host, bytes};
-    imported.final_state = fg::access_state(fg::Use::HostRead, fg::PassKind::Transfer);
-    const fg::BufferHandle target = graph.import_buffer(name, imported);
-    struct Data {
-        Handle source;
-        fg::BufferHandle target;
-    };
-    const auto& data = graph.add_pass<Data>(
-        name, fg::PassKind::Transfer,
-        [&](fg::PassBuilder& builder, Data& d) {
-            d.source = builder.copy_source(source);
-            d.target = builder.copy_destination(target);
-        },
-        [bytes](const Data& d, fg::PassContext& context) {
-            if constexpr (std::is_same_v<Handle, fg::ImageHandle>) {
-                const VkExtent2D extent = context.extent(d.source);
-                VkBufferImageCopy region{};
-                region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-                region.imageExtent = {extent.width, extent.height, 1};
-                vkCmdCopyImageToBuffer(context.cmd(), context.image(d.source), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                       context.buffer(d.target), 1, &region);
-            } else {
-                const VkBufferCopy region{0, 0, bytes};
-                vkCmdCopyBuffer(context.cmd(), context.buffer(d.source), context.buffer(d.target), 1, &region);
-            }
-        });
-    graph.request_output(data.target);
-}
 
 inline void add_probe_pass(fg::FrameGraph& graph, const passes::CausticMap& map, const ProbeGrid& grid,
                            VkBuffer host, VkDeviceSize bytes) {
@@ -115,7 +83,7 @@ inline void add_probe_pass(fg::FrameGraph& graph, const passes::CausticMap& map,
             context.push_constants(pipeline, push);
             vkCmdDispatch(context.cmd(), (push.count_x * push.count_z + 63) / 64, 1, 1);
         });
-    add_named_readback(graph, "probe readback", data.out, host, bytes);
+    passes::add_readback_pass(graph, data.out, host, bytes, "probe readback");
 }
 
 // Water surface -> photons -> resolve (-> probes) -> readbacks, one submission with validation.
@@ -136,8 +104,8 @@ inline CausticRun run_caustics(Context& context, const passes::WaterSurfaceInput
         caustics.half_extent = surface.half_extent;
         const fg::BufferHandle flux = passes::add_caustic_photon_pass(graph, caustics);
         const passes::CausticMap map = passes::add_caustic_resolve_pass(graph, flux, caustics);
-        add_named_readback(graph, "flux readback", flux, flux_host.handle(), flux_bytes);
-        add_named_readback(graph, "map readback", map.irradiance, image_host.handle(), image_bytes);
+        passes::add_readback_pass(graph, flux, flux_host.handle(), flux_bytes, "flux readback");
+        passes::add_readback_pass(graph, map.irradiance, image_host.handle(), image_bytes, "map readback");
         if (probes.count_x * probes.count_z > 0) add_probe_pass(graph, map, probes, probe_host.handle(), probe_bytes);
         graph.compile(1, 1);
         fg::FrameExecutor executor(context, graph, pipelines, {.check_finite = true, .timing = fg::TimingMode::None});

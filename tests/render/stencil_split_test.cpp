@@ -14,6 +14,7 @@
 #include "engine/scene/scene_loader.hpp"
 #include "engine/water/surface.hpp"
 #include "engine/framegraph/pass_context.hpp"
+#include "passes/readback.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/reference/reference_renderer.hpp"
 
@@ -39,27 +40,8 @@ std::vector<uint8_t> render_mask(Context& context, fg::PipelineStore& pipelines,
     Buffer mask(context, {VkDeviceSize{kWidth} * kHeight, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "mask readback");
     fg::FrameGraph graph(std::move(needs));
     build_frame_graph(graph, scene, &constants, kWidth, kHeight, hdr.handle(), nullptr, nullptr);
-    fg::ImportedBuffer imported{mask.handle(), VkDeviceSize{kWidth} * kHeight};
-    imported.final_state = fg::access_state(fg::Use::HostRead, fg::PassKind::Transfer);
-    const fg::BufferHandle target = graph.import_buffer("mask readback", imported);
-    struct Data {
-        fg::ImageHandle mask;
-        fg::BufferHandle target;
-    };
-    const auto& data = graph.add_pass<Data>(
-        "mask readback", fg::PassKind::Transfer,
-        [&](fg::PassBuilder& builder, Data& d) {
-            d.mask = builder.copy_source(graph.blackboard().get(keys::kCameraMedium));
-            d.target = builder.copy_destination(target);
-        },
-        [](const Data& d, fg::PassContext& pass) {
-            VkBufferImageCopy region{};
-            region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-            region.imageExtent = {kWidth, kHeight, 1};
-            vkCmdCopyImageToBuffer(pass.cmd(), pass.image(d.mask), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                   pass.buffer(d.target), 1, &region);
-        });
-    graph.request_output(data.target);
+    passes::add_readback_pass(graph, graph.blackboard().get(keys::kCameraMedium), mask.handle(),
+                              VkDeviceSize{kWidth} * kHeight, "mask readback");
     graph.compile(kWidth, kHeight);
     fg::FrameExecutor executor(context, graph, pipelines, {true, fg::TimingMode::None});
     executor.execute();
