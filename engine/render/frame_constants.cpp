@@ -32,6 +32,7 @@ FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t
     constants.viewport = glm::vec4(static_cast<float>(width), static_cast<float>(height), 0.0f, 0.0f);
     constants.medium_sigma_t = glm::vec4(glm::vec3(scene.medium.sigma_t()), 0.0f);
     constants.medium_sigma_s = glm::vec4(glm::vec3(scene.medium.sigma_s), static_cast<float>(scene.medium.g));
+    constants.medium_options = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);  // the renderer clears x when godrays run
     if (scene.water) {
         const Water& water = *scene.water;
         constants.water = glm::vec4(static_cast<float>(water.level), static_cast<float>(water.ior),

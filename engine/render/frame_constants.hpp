@@ -36,6 +36,7 @@ struct alignas(16) FrameConstants {
     glm::vec4 medium_sigma_s;  // w: g
     glm::vec4 camera_medium;   // x: camera in the water (per frame; the stencil split refines it per pixel)
     glm::vec4 camera_near;     // x: near-plane distance, m (the stencil split's clip depth)
+    glm::vec4 medium_options;  // x: 1 when the shading adds the analytic in-scatter, 0 when the godrays supply it
 };
 static_assert(sizeof(FrameConstants) % 16 == 0, "std140 blocks are a multiple of 16 bytes");
 

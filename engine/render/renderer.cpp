@@ -200,6 +200,11 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options) 
                                       std::to_string(int(options.check_finite)) + " " +
                                       std::to_string(int(options.timing));
     *constants_ = make_frame_constants(scene, options.width, options.height);
+    // Counted once (PHYSICS.md section 1): the godray passes, when they run, are the
+    // in-scatter of sunlight, and the shading's analytic in-scatter is switched off. (An
+    // effect without a decision counts as needed; godrays have passes only once decided.)
+    const fg::EffectDecision* godrays = needs.find(fg::Effect::VolumeCaustics);
+    if (godrays && godrays->needed) constants_->medium_options.x = 0.0f;
     const passes::OceanSpectrumBuffer* ocean = ocean_spectrum(scene);
     const passes::ReceiverMeshes* receivers = receiver_meshes(scene);
 

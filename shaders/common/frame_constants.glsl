@@ -25,6 +25,12 @@ layout(set = 0, binding = 0, std140) uniform FrameConstants {
     vec4 camera_medium;       // x: 1 if the camera is in the water (per frame, from the mean level; the fallback when
                               //    the stencil split is culled, see water_shading/camera_medium.glsl)
     vec4 camera_near;         // x: near-plane distance, m (the stencil split's clip depth)
+    vec4 medium_options;      // x: 1 when the shading adds the analytic in-scatter of the sun's beam; 0 when the
+                              //    godray passes supply the in-scatter instead (counted once, PHYSICS.md section 1)
 } frame;
+
+// sigma_s for the analytic single scattering along view rays: zero when the godrays
+// (volume caustics) are the frame's in-scatter of sunlight.
+vec3 analytic_inscatter_sigma_s() { return frame.medium_sigma_s.rgb * frame.medium_options.x; }
 
 #endif

@@ -25,7 +25,7 @@ void main() {
     vec3 radiance = lambert_radiance(in_albedo, receiver_irradiance(p, normal, optics));
     if (camera_in_water()) {
         vec3 eye = frame.camera_position.xyz;
-        radiance = water_path_radiance(frame.medium_sigma_s.rgb, frame.medium_sigma_t.rgb, frame.medium_sigma_s.w,
+        radiance = water_path_radiance(analytic_inscatter_sigma_s(), frame.medium_sigma_t.rgb, frame.medium_sigma_s.w,
                                        max(0.0, frame.water.x - eye.y), distance(eye, p), normalize(p - eye),
                                        optics.refracted_sun.xyz, optics.e_perp0.rgb, radiance);
     }

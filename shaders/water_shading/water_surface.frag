@@ -26,7 +26,7 @@ vec3 radiance_in_water(vec3 p, vec3 d) {
     float length_in_water;
     vec3 behind;
     if (!floor_along(p, d, optics, length_in_water, behind)) length_in_water = 0.0;
-    return water_path_radiance(frame.medium_sigma_s.rgb, frame.medium_sigma_t.rgb, frame.medium_sigma_s.w,
+    return water_path_radiance(analytic_inscatter_sigma_s(), frame.medium_sigma_t.rgb, frame.medium_sigma_s.w,
                                max(0.0, frame.water.x - p.y), length_in_water, d, optics.refracted_sun.xyz,
                                optics.e_perp0.rgb, behind);
 }
@@ -59,7 +59,7 @@ void main() {
         at_surface += f.T * n * n * sky_radiance(to_air);
     }
     float camera_depth = max(0.0, frame.water.x - eye.y);
-    out_radiance = vec4(water_path_radiance(frame.medium_sigma_s.rgb, frame.medium_sigma_t.rgb,
+    out_radiance = vec4(water_path_radiance(analytic_inscatter_sigma_s(), frame.medium_sigma_t.rgb,
                                             frame.medium_sigma_s.w, camera_depth, distance(eye, p), v,
                                             optics.refracted_sun.xyz, optics.e_perp0.rgb, at_surface),
                         1.0);
