@@ -1,45 +1,12 @@
 #include "tools/reference/floor_caustics.hpp"
 
 #include "tools/reference/optics.hpp"
+#include "tools/reference/polygon_clip.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace vkw::ref {
-namespace {
-
-using Polygon = std::vector<glm::dvec2>;
-
-// Sutherland-Hodgman: the part of `polygon` on the side of the axis-aligned line
-// coordinate[axis] (>= or <=) bound.
-Polygon clip(const Polygon& polygon, int axis, double bound, bool keep_greater) {
-    Polygon out;
-    const size_t n = polygon.size();
-    for (size_t i = 0; i < n; ++i) {
-        const glm::dvec2& a = polygon[i];
-        const glm::dvec2& b = polygon[(i + 1) % n];
-        const bool a_in = keep_greater ? a[axis] >= bound : a[axis] <= bound;
-        const bool b_in = keep_greater ? b[axis] >= bound : b[axis] <= bound;
-        if (a_in) out.push_back(a);
-        if (a_in != b_in) {
-            const double t = (bound - a[axis]) / (b[axis] - a[axis]);
-            out.push_back(a + t * (b - a));
-        }
-    }
-    return out;
-}
-
-double area(const Polygon& polygon) {
-    double twice = 0.0;
-    for (size_t i = 0; i < polygon.size(); ++i) {
-        const glm::dvec2& a = polygon[i];
-        const glm::dvec2& b = polygon[(i + 1) % polygon.size()];
-        twice += a.x * b.y - b.x * a.y;
-    }
-    return 0.5 * std::abs(twice);
-}
-
-}  // namespace
 
 FloorCausticMap::FloorCausticMap(const Scene& scene, const WaterSurface& surface, uint32_t texels_per_side,
                                  uint32_t cells_per_side)
@@ -126,13 +93,9 @@ void FloorCausticMap::deposit(const glm::dvec2 footprint[3], const glm::dvec3& f
     }
     for (int64_t z = z0; z <= z1; ++z) {
         for (int64_t x = x0; x <= x1; ++x) {
-            const double left = -half_extent_ + x * texel_size_, bottom = -half_extent_ + z * texel_size_;
-            Polygon part = clip(triangle, 0, left, true);
-            part = clip(part, 0, left + texel_size_, false);
-            part = clip(part, 1, bottom, true);
-            part = clip(part, 1, bottom + texel_size_, false);
-            if (part.size() < 3) continue;
-            irradiance_[size_t(z) * texels_ + size_t(x)] += flux * (area(part) / footprint_area / texel_area);
+            const glm::dvec2 corner(-half_extent_ + x * texel_size_, -half_extent_ + z * texel_size_);
+            const double overlap = overlap_with_square(triangle, corner, texel_size_);
+            if (overlap > 0.0) irradiance_[size_t(z) * texels_ + size_t(x)] += flux * (overlap / footprint_area / texel_area);
         }
     }
 }

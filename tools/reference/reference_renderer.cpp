@@ -20,7 +20,7 @@ Ray camera_ray(const Camera& camera, uint32_t width, uint32_t height, double x, 
 }
 
 ImageRGBA32F render_reference(const Scene& scene, const ReferenceOptions& options, ReferenceReport* report) {
-    const WaterTransport transport(scene);
+    const WaterTransport transport(scene, options.quality);
     if (report) {
         report->caustic_refinement_change = transport.caustic_refinement_change();
         report->flat_beam_in_scatter = scene.water && scene.water->waves.model != WaveModel::Flat;

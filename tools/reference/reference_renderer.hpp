@@ -8,6 +8,7 @@
 #include "engine/image/image.hpp"
 #include "engine/scene/scene.hpp"
 #include "tools/reference/bvh.hpp"
+#include "tools/reference/water_transport.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -19,6 +20,7 @@ struct ReferenceOptions {
     uint32_t height = 300;
     unsigned threads = 0;                        // 0: every hardware thread
     std::function<void(double)> progress;        // called with the finished fraction
+    WaterTransport::Quality quality;             // wavy water's floor caustics (coarser: faster, for small tests)
 };
 
 // The primary ray through pixel (x, y)'s centre, row 0 at the top: the same camera

@@ -9,15 +9,17 @@
 // Wavy water (a sum of sines and Gerstner waves): the view ray's crossing is bracketed
 // along the ray at steps of 1/64 of the shortest wavelength (horizontally) and bisected
 // to 1e-12 m, with the exact normal; the floor's sun irradiance is the beam-mapped
-// caustic map of floor_caustics.hpp. Approximation kept (stated in the manifest): the
-// in-scatter along view rays uses the flat surface's beam, not the caustic-modulated one
-// (godrays). Not computed yet, refused with a message: the FFT ocean (its exact
-// evaluation is too slow), receivers other than the floor under wavy water.
+// caustic map of floor_caustics.hpp; with receiver meshes under the waves, every receiver's
+// (the floor's too) comes from the beams of beam_irradiance.hpp at its points, shadowed by
+// the meshes. Approximation kept (stated in the manifest): the in-scatter along view rays
+// uses the flat surface's beam, not the caustic-modulated one (godrays). Not computed yet,
+// refused with a message: the FFT ocean (its exact evaluation is too slow).
 #pragma once
 
 #include "engine/scene/scene.hpp"
 #include "engine/water/surface.hpp"
 #include "tools/reference/bvh.hpp"
+#include "tools/reference/beam_irradiance.hpp"
 #include "tools/reference/floor_caustics.hpp"
 
 #include <glm/glm.hpp>
@@ -80,6 +82,10 @@ private:
     glm::dvec3 in_water_segment(double z0, double length, const glm::dvec3& direction,
                                 const glm::dvec3& behind) const;
     bool sun_blocked_in_air(const glm::dvec3& point) const;
+    BeamIrradiance::Visibility beam_visibility() const;
+    // Relative RMS change of the receivers' sun irradiance from `coarse` to the beams in use
+    // (RMS over the mean, the worst 0.1% of points dropped).
+    double estimate_beam_refinement(const BeamIrradiance& coarse) const;
 
     const Scene& scene_;
     std::vector<Mesh> extra_meshes_;  // the floor as a mesh
@@ -88,7 +94,8 @@ private:
     double level_ = 0.0, half_extent_ = 0.0, bottom_ = 0.0, ior_ = 1.0;
     bool has_water_ = false;
     std::unique_ptr<WaterSurface> surface_;            // wavy water only
-    std::unique_ptr<FloorCausticMap> floor_caustics_;  // wavy water only
+    std::unique_ptr<FloorCausticMap> floor_caustics_;  // wavy water over the floor alone
+    std::unique_ptr<BeamIrradiance> beams_;            // wavy water with meshes under it
     double caustic_refinement_change_ = 0.0;
     double shortest_wavelength_ = 0.0;
     double max_amplitude_ = 0.0;
