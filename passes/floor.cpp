@@ -3,6 +3,7 @@
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/render/blackboard_keys.hpp"
 #include "passes/lighting_inputs.hpp"
+#include "passes/receiver_draws.hpp"
 
 namespace vkw::passes {
 
@@ -25,12 +26,14 @@ void add_floor_pass(fg::FrameGraph& graph) {
             desc.vertex_shader = "receivers/floor.vert";
             desc.fragment_shader = d.lighting.shader("receivers/receiver.frag");
             d.lighting.add_layout(desc.layout.bindings);
+            desc.layout.push_constant_bytes = sizeof(ReceiverPush);
             desc.depth_test = true;
             desc.depth_write = true;
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
             std::vector<fg::DescriptorBinding> bindings;
             d.lighting.add_bindings(context, bindings);
             context.bind(pipeline, bindings);
+            context.push_constants(pipeline, ReceiverPush{});  // the camera's own view
             vkCmdDraw(context.cmd(), 6, 1, 0, 0);
         });
     graph.blackboard().put(keys::kHdrColor, data.hdr);

@@ -4,11 +4,12 @@
 
 namespace vkw::passes {
 
-void LightingInputs::declare(fg::PassBuilder& builder, const fg::Blackboard& blackboard, bool with_caustics) {
+void LightingInputs::declare(fg::PassBuilder& builder, const fg::Blackboard& blackboard, bool with_caustics,
+                             bool with_camera_medium) {
     constants = builder.uniform_buffer(blackboard.get(keys::kFrameConstants),
                                        VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
     optics = builder.read_storage(blackboard.get(keys::kSceneOptics));
-    if (blackboard.has(keys::kCameraMedium)) {
+    if (with_camera_medium && blackboard.has(keys::kCameraMedium)) {
         camera_medium = builder.sample(blackboard.get(keys::kCameraMedium), VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
     }
     if (with_caustics && blackboard.has(keys::kCausticMap)) {

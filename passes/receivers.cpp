@@ -2,7 +2,7 @@
 
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/render/blackboard_keys.hpp"
-#include "passes/lighting_inputs.hpp"
+#include "passes/receiver_draws.hpp"
 
 namespace vkw::passes {
 
@@ -22,28 +22,12 @@ void add_receivers_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes) {
             d.lighting.declare(builder, graph.blackboard(), /*with_caustics=*/false);
         },
         [&meshes](const Data& d, fg::PassContext& context) {
-            GraphicsPipelineDesc desc;
-            desc.vertex_shader = "receivers/mesh.vert";
-            desc.fragment_shader = d.lighting.shader("receivers/receiver.frag");
-            d.lighting.add_layout(desc.layout.bindings);
-            desc.layout.push_constant_bytes = sizeof(glm::vec4);
-            desc.vertex_bindings = {{0, 6 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX}};
-            desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
-                                      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 3 * sizeof(float)}};
-            desc.depth_test = true;
-            desc.depth_write = true;
+            const GraphicsPipelineDesc desc = receiver_mesh_pipeline(d.lighting);
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
             std::vector<fg::DescriptorBinding> bindings;
             d.lighting.add_bindings(context, bindings);
             context.bind(pipeline, bindings);
-            const VkBuffer vertex_buffer = context.buffer(d.vertices);
-            const VkDeviceSize offset = 0;
-            vkCmdBindVertexBuffers(context.cmd(), 0, 1, &vertex_buffer, &offset);
-            vkCmdBindIndexBuffer(context.cmd(), context.buffer(d.indices), 0, VK_INDEX_TYPE_UINT32);
-            for (const ReceiverDraw& draw : meshes.draws()) {
-                context.push_constants(pipeline, glm::vec4(draw.albedo, 0.0f));
-                vkCmdDrawIndexed(context.cmd(), draw.index_count, 1, draw.first_index, draw.vertex_offset, 0);
-            }
+            draw_receiver_meshes(context, pipeline, meshes, d.vertices, d.indices, glm::vec4(0.0f));  // the camera's view
         });
     graph.blackboard().put(keys::kHdrColor, data.hdr);
     graph.blackboard().put(keys::kSceneDepth, data.depth);

@@ -12,22 +12,23 @@
 
 namespace vkw::passes {
 
-SunShadowSpace fit_sun_shadow(const SunShadowInputs& in) {
+ShadowProjection fit_shadow_projection(const glm::dvec3& direction, const glm::dvec3& bounds_lo,
+                                       const glm::dvec3& bounds_hi, uint32_t size) {
     bool finite = true;
-    for (int k = 0; k < 3; ++k) finite = finite && std::isfinite(in.bounds_lo[k]) && std::isfinite(in.bounds_hi[k]);
-    if (std::abs(glm::length(in.sun_direction) - 1.0) >= 1e-9 || !finite ||
-        glm::any(glm::lessThan(in.bounds_hi, in.bounds_lo)) || in.size < 1 || in.size > 16384) {
-        throw InternalError("sun shadow: inputs out of range (accepted: a unit sun direction, a finite box with "
-                            "lo <= hi, 1 <= size <= 16384); got size " + std::to_string(in.size));
+    for (int k = 0; k < 3; ++k) finite = finite && std::isfinite(bounds_lo[k]) && std::isfinite(bounds_hi[k]);
+    if (std::abs(glm::length(direction) - 1.0) >= 1e-9 || !finite || glm::any(glm::lessThan(bounds_hi, bounds_lo)) ||
+        size < 1 || size > 16384) {
+        throw InternalError("sun shadow: inputs out of range (accepted: a unit direction, a finite box with "
+                            "lo <= hi, 1 <= size <= 16384); got size " + std::to_string(size));
     }
-    const glm::dvec3 s = in.sun_direction;
+    const glm::dvec3 s = direction;
     glm::dvec3 u, v;
     branchless_basis(s, u, v);
     // The box's corners in light space: (u, v) across the map, d = s.P along the beam.
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::dvec3 p((corner & 1) ? in.bounds_hi.x : in.bounds_lo.x, (corner & 2) ? in.bounds_hi.y : in.bounds_lo.y,
-                           (corner & 4) ? in.bounds_hi.z : in.bounds_lo.z);
+        const glm::dvec3 p((corner & 1) ? bounds_hi.x : bounds_lo.x, (corner & 2) ? bounds_hi.y : bounds_lo.y,
+                           (corner & 4) ? bounds_hi.z : bounds_lo.z);
         const glm::dvec3 q(glm::dot(p, u), glm::dot(p, v), glm::dot(p, s));
         lo = glm::min(lo, q);
         hi = glm::max(hi, q);
@@ -42,18 +43,39 @@ SunShadowSpace fit_sun_shadow(const SunShadowInputs& in) {
     const glm::dvec4 row_x(2.0 * u / extent.x, -(hi.x + lo.x) / extent.x);
     const glm::dvec4 row_y(2.0 * v / extent.y, -(hi.y + lo.y) / extent.y);
     const glm::dvec4 row_z(-s / extent.z, hi.z / extent.z);
-    SunShadowSpace space{};
+    ShadowProjection projection{};
     for (int col = 0; col < 4; ++col) {
-        space.light_from_world[col * 4 + 0] = float(row_x[col]);
-        space.light_from_world[col * 4 + 1] = float(row_y[col]);
-        space.light_from_world[col * 4 + 2] = float(row_z[col]);
-        space.light_from_world[col * 4 + 3] = col == 3 ? 1.0f : 0.0f;
+        projection.light_from_world[col * 4 + 0] = float(row_x[col]);
+        projection.light_from_world[col * 4 + 1] = float(row_y[col]);
+        projection.light_from_world[col * 4 + 2] = float(row_z[col]);
+        projection.light_from_world[col * 4 + 3] = col == 3 ? 1.0f : 0.0f;
     }
-    space.params[0] = float(std::max(extent.x, extent.y) / in.size);
-    space.params[1] = float(extent.z);
-    space.params[2] = float(in.size);
+    projection.params[0] = float(std::max(extent.x, extent.y) / size);
+    projection.params[1] = float(extent.z);
+    projection.params[2] = float(size);
+    projection.params[3] = 1.0f;
+    return projection;
+}
+
+SunShadowSpace fit_sun_shadow(const SunShadowInputs& in) {
+    SunShadowSpace space{};
+    space.sun = fit_shadow_projection(in.sun_direction, in.bounds_lo, in.bounds_hi, in.size);
+    if (in.beam) {
+        // Only what lies under the water casts along the beam; the box above it is cut off.
+        glm::dvec3 hi = in.bounds_hi;
+        hi.y = std::max(std::min(hi.y, in.beam->water_level), in.bounds_lo.y);
+        space.beam = fit_shadow_projection(in.beam->direction, in.bounds_lo, hi, in.size);
+    }
     return space;
 }
+
+namespace {
+// Mirrors the push constants of receivers/sun_shadow.vert and .frag.
+struct ShadowPush {
+    float light_from_world[16];
+    float clip_height[4];  // x: meshes above this height cast nothing in this half
+};
+}  // namespace
 
 SunShadowMap add_sun_shadow_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes, const SunShadowInputs& inputs) {
     const SunShadowSpace space = fit_sun_shadow(inputs);
@@ -82,28 +104,44 @@ SunShadowMap add_sun_shadow_pass(fg::FrameGraph& graph, const ReceiverMeshes& me
             fg::ImageInfo info;
             info.format = VK_FORMAT_D32_SFLOAT;
             info.size_class = fg::SizeClass::Absolute;
-            info.width = info.height = inputs.size;
+            info.width = (inputs.beam ? 2 : 1) * inputs.size;
+            info.height = inputs.size;
             d.depth = builder.depth_stencil_attachment(builder.create_image("sun shadow depth", info),
                                                        fg::LoadOp::Clear, {.depth = 0.0f});
         },
-        [&meshes, space](const Data& d, fg::PassContext& context) {
+        [&meshes, space, size = inputs.size, beam = inputs.beam](const Data& d, fg::PassContext& context) {
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "receivers/sun_shadow.vert";
-            desc.layout.push_constant_bytes = sizeof space.light_from_world;
+            desc.fragment_shader = "receivers/sun_shadow.frag";  // clips the beam half at the water level
+            desc.layout.push_constant_bytes = sizeof(ShadowPush);
             desc.vertex_bindings = {{0, 6 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX}};
             desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}};
             desc.depth_test = true;
             desc.depth_write = true;
             const Pipeline& pipeline = context.pipeline("sun shadow map", desc);
             context.bind(pipeline, std::vector<fg::DescriptorBinding>{});
-            context.push_constants(pipeline, space.light_from_world, static_cast<uint32_t>(sizeof space.light_from_world));
             const VkBuffer vertex_buffer = context.buffer(d.vertices);
             const VkDeviceSize offset = 0;
             vkCmdBindVertexBuffers(context.cmd(), 0, 1, &vertex_buffer, &offset);
             vkCmdBindIndexBuffer(context.cmd(), context.buffer(d.indices), 0, VK_INDEX_TYPE_UINT32);
-            for (const ReceiverDraw& draw : meshes.draws()) {
-                vkCmdDrawIndexed(context.cmd(), draw.index_count, 1, draw.first_index, draw.vertex_offset, 0);
-            }
+            const auto draw_half = [&](int half, const ShadowProjection& projection, float clip_height) {
+                // Each half is a size x size viewport, y flipped as the executor's (row 0 at y = +1).
+                const float x = float(half) * float(size);
+                const VkViewport viewport{x, float(size), float(size), -float(size), 0.0f, 1.0f};
+                const VkRect2D scissor{{int32_t(half) * int32_t(size), 0}, {size, size}};
+                vkCmdSetViewport(context.cmd(), 0, 1, &viewport);
+                vkCmdSetScissor(context.cmd(), 0, 1, &scissor);
+                ShadowPush push{};
+                std::copy(std::begin(projection.light_from_world), std::end(projection.light_from_world),
+                          push.light_from_world);
+                push.clip_height[0] = clip_height;
+                context.push_constants(pipeline, push);
+                for (const ReceiverDraw& draw : meshes.draws()) {
+                    vkCmdDrawIndexed(context.cmd(), draw.index_count, 1, draw.first_index, draw.vertex_offset, 0);
+                }
+            };
+            draw_half(0, space.sun, std::numeric_limits<float>::max());
+            if (beam) draw_half(1, space.beam, float(beam->water_level));
         });
     return {data.depth, upload.space};
 }

@@ -1,9 +1,15 @@
-// The sun's shadow map (PHYSICS.md section 1: above the water the direct sun is shadowed by
-// objects): the receiver meshes' depth seen from the sun, orthographic along the sun direction s
-// in the branchless basis of caustics_light_space.hpp (finite for an overhead sun), fitted on the
-// CPU in double to the bounds of all receivers plus the floor square. D32_SFLOAT, reversed like
-// the scene depth: 1 nearest the sun, 0 (the clear) farthest. Only the meshes occlude; the floor
-// is a plane under everything and never shadows anything.
+// The sun's shadow map (PHYSICS.md section 1: the sun is shadowed by objects): the receiver
+// meshes' depth seen along a beam, orthographic in the branchless basis of
+// caustics_light_space.hpp (finite for an overhead sun), fitted on the CPU in double. Two halves
+// side by side in one D32_SFLOAT image, reversed like the scene depth (1 nearest the light, 0,
+// the clear, farthest):
+//   - left: along the sun direction s, every mesh, fitted to all receivers plus the floor square
+//     (shadows above the water, and at the point where the refracted beam enters the water);
+//   - right, for scenes with water: along the flat surface's refracted beam t, the meshes under
+//     the water (clipped at the mean level), fitted to the part of the box below it (shadows
+//     under the water: PHYSICS.md section 1 shadows the beam along t). Under waves the beam's
+//     direction varies; the shadow follows the mean direction (an approximation).
+// Only the meshes occlude; the floor is a plane under everything and never shadows anything.
 // Receivers read it through LightingInputs (bindings 6 and 7) with
 // shaders/receivers/sun_shadow.glsl: a single depth compare with a slope-scaled bias.
 // Published as keys::kSunShadow; the renderer adds it when the scene has receiver meshes and
@@ -16,27 +22,45 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <optional>
 
 namespace vkw::passes {
+
+// The beam under the water, for scenes with water.
+struct UnderwaterBeam {
+    glm::dvec3 direction{0.0, -1.0, 0.0};  // unit: the sun refracted by the flat surface
+    double water_level = 0.0;              // m: meshes above it cast nothing along the beam
+};
 
 struct SunShadowInputs {
     glm::dvec3 sun_direction{0.0, -1.0, 0.0};  // unit, the direction the sunlight travels
     glm::dvec3 bounds_lo{-1.0}, bounds_hi{1.0};  // world box the map must cover, m
-    uint32_t size = 1024;                       // texels per side
+    uint32_t size = 1024;                       // texels per side of each half
+    std::optional<UnderwaterBeam> beam;         // the right half: the scene has water
+};
+
+// One half's projection; mirrors a (mat4, vec4) pair of shaders/receivers/sun_shadow.glsl.
+struct ShadowProjection {
+    float light_from_world[16];  // column-major: world -> (x, y) in [-1, 1], z = 1 nearest the light
+    float params[4];             // x: texel size, m (the larger side); y: depth range, m; z: size, texels;
+                                 // w: 1 when the map has this half
 };
 
 // Mirrors struct SunShadowSpace of shaders/receivers/sun_shadow.glsl (std140 = std430 here).
 struct SunShadowSpace {
-    float light_from_world[16];  // column-major: world -> (x, y) in [-1, 1], z = 1 nearest the sun
-    float params[4];             // x: texel size, m (the larger side); y: depth range, m; z: map size, texels
+    ShadowProjection sun;   // left half, along s
+    ShadowProjection beam;  // right half, along t under the water (params.w = 0 without water)
 };
-static_assert(sizeof(SunShadowSpace) == 80);
+static_assert(sizeof(SunShadowSpace) == 160);
 
-// Throws vkw::InternalError for a non-unit sun, an empty or non-finite box, or size outside 1..16384.
+// Throws vkw::InternalError for a non-unit direction, an empty or non-finite box, or size
+// outside 1..16384.
+ShadowProjection fit_shadow_projection(const glm::dvec3& direction, const glm::dvec3& bounds_lo,
+                                       const glm::dvec3& bounds_hi, uint32_t size);
 SunShadowSpace fit_sun_shadow(const SunShadowInputs& inputs);
 
 struct SunShadowMap {
-    fg::ImageHandle depth;  // D32_SFLOAT, size x size
+    fg::ImageHandle depth;  // D32_SFLOAT, (2 with water, else 1) x size wide, size high
     fg::BufferHandle space;  // uniform: SunShadowSpace
 };
 

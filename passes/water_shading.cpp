@@ -6,11 +6,30 @@
 
 namespace vkw::passes {
 
-void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uint32_t grid_resolution) {
+namespace {
+// Mirrors the push constants of water_surface.vert/.frag.
+struct WaterPush {
+    uint32_t resolution;
+    uint32_t reflection_method, refraction_method;  // SCENE_LOOKUP_*: 0 off, 1 projective, 2 screen-space
+    uint32_t reflection_steps, refraction_steps;
+    float scene_size;
+    float shallow_blend;
+};
+
+uint32_t lookup_code(const std::optional<fg::ImageHandle>& view, SceneLookup method) {
+    if (!view) return 0;
+    return method == SceneLookup::Projective ? 1 : 2;
+}
+}  // namespace
+
+void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uint32_t grid_resolution,
+                            const WaterSceneLookups& lookups) {
     struct Data {
         fg::BufferHandle surface;
         fg::ImageHandle hdr, depth;
         LightingInputs lighting;
+        // Bound at 8 and 9; a missing one is stood in for by the other (its lookup is off).
+        std::optional<fg::ImageHandle> reflection_view, refraction_view;
     };
     const auto& data = graph.add_pass<Data>(
         "water", fg::PassKind::Graphics,
@@ -20,21 +39,41 @@ void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uin
             d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
             d.depth = builder.depth_stencil_attachment(graph.blackboard().get(keys::kSceneDepth), fg::LoadOp::Load);
             d.lighting.declare(builder, graph.blackboard());
+            constexpr VkPipelineStageFlags2 fragment = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+            if (lookups.reflection_view) d.reflection_view = builder.sample(*lookups.reflection_view, fragment);
+            if (lookups.refraction_view) d.refraction_view = builder.sample(*lookups.refraction_view, fragment);
         },
-        [grid_resolution](const Data& d, fg::PassContext& context) {
+        [grid_resolution, lookups](const Data& d, fg::PassContext& context) {
+            const bool views = d.reflection_view || d.refraction_view;
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "water_shading/water_surface.vert";
-            desc.fragment_shader = d.lighting.shader("water_shading/water_surface.frag");
+            desc.fragment_shader = d.lighting.shader("water_shading/water_surface.frag") + (views ? "_views" : "");
             desc.layout.bindings = {{2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT}};
-            desc.layout.push_constant_bytes = sizeof(uint32_t);
+            if (views) {
+                desc.layout.bindings.push_back({8, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
+                desc.layout.bindings.push_back({9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
+            }
+            desc.layout.push_constant_bytes = sizeof(WaterPush);
             d.lighting.add_layout(desc.layout.bindings);
             desc.depth_test = true;
             desc.depth_write = true;
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
             std::vector<fg::DescriptorBinding> bindings{context.storage_buffer(2, d.surface)};
             d.lighting.add_bindings(context, bindings);
+            if (views) {
+                const fg::ImageHandle either = d.reflection_view ? *d.reflection_view : *d.refraction_view;
+                bindings.push_back(context.sampled(8, d.reflection_view.value_or(either)));
+                bindings.push_back(context.sampled(9, d.refraction_view.value_or(either)));
+            }
             context.bind(pipeline, bindings);
-            context.push_constants(pipeline, grid_resolution);
+            const WaterPush push{grid_resolution,
+                                 lookup_code(d.reflection_view, lookups.reflection_method),
+                                 lookup_code(d.refraction_view, lookups.refraction_method),
+                                 static_cast<uint32_t>(lookups.reflection_steps),
+                                 static_cast<uint32_t>(lookups.refraction_steps),
+                                 lookups.scene_size,
+                                 lookups.shallow_blend};
+            context.push_constants(pipeline, push);
             vkCmdDraw(context.cmd(), 6 * grid_resolution * grid_resolution, 1, 0, 0);
         });
     graph.blackboard().put(keys::kHdrColor, data.hdr);

@@ -1,14 +1,29 @@
-// The water surface drawn over the scene and shaded with the simplest correct lookups
-// (shaders/water_shading/water_surface.frag): Fresnel, the sky in reflection, the
-// floor through refraction, the medium along every path, from above and from below.
-// Reads the surface grid of passes/water_surface.hpp and, when the stencil split published it
-// before, keys::kCameraMedium (per-pixel camera medium); serves Effect::Water.
+// The water surface drawn over the scene and shaded (shaders/water_shading/water_surface.frag):
+// exact Fresnel, the sky in reflection, the floor through refraction (both exact: the sky
+// by direction, the floor as a plane), the medium along every path, from above and from
+// below; with scene views (passes/scene_view.hpp), reflected and refracted rays also meet
+// the receiver meshes. Reads the surface grid of passes/water_surface.hpp and, when the
+// stencil split published it before, keys::kCameraMedium (per-pixel camera medium); serves
+// Effect::Water.
 #pragma once
 
 #include "engine/framegraph/frame_graph.hpp"
+#include "engine/scene/scene.hpp"
+
+#include <optional>
 
 namespace vkw::passes {
 
-void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uint32_t grid_resolution);
+// How the water finds the receiver meshes along its rays; a view absent: that lookup is off.
+struct WaterSceneLookups {
+    std::optional<fg::ImageHandle> reflection_view, refraction_view;
+    SceneLookup reflection_method = SceneLookup::Projective, refraction_method = SceneLookup::Projective;
+    int reflection_steps = 64, refraction_steps = 64;
+    float scene_size = 100.0f;  // m: how far a screen-space march looks when no floor bounds it
+    float shallow_blend = 0.0f;  // m: screen-space refraction blends to the direct view under this much water
+};
+
+void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uint32_t grid_resolution,
+                            const WaterSceneLookups& lookups = {});
 
 }  // namespace vkw::passes

@@ -16,8 +16,10 @@ packages=(
   libimgui-dev libstb-dev libgtest-dev
   # EXR inspection and conversion (exrheader, oiiotool)
   openexr openimageio-tools
-  # window tests and screenshots
-  xvfb xauth x11-apps imagemagick
+  # window tests and screenshots; xdotool types and clicks in the viewer's window (tests/view)
+  xvfb xauth x11-apps imagemagick xdotool
+  # the independent cross-check of the reference's floor caustics (tests/povray)
+  povray
 )
 
 sudo_cmd=()

@@ -42,6 +42,75 @@ void decide(fg::FrameNeeds& needs, const Scene& scene, fg::Effect effect, bool r
     }
 }
 
+// The vertical span of the receivers whose box overlaps the water's horizontal extent
+// (over the water, they can be seen in it or through it); empty when none does.
+struct ReceiverSpan {
+    bool any = false;
+    double lowest = 1e300, highest = -1e300;
+};
+ReceiverSpan receivers_over_water(const Scene& scene, const WaterBounds& bounds) {
+    ReceiverSpan span;
+    for (const Receiver& receiver : scene.receivers) {
+        const glm::dvec3& lo = receiver.mesh.bounds_min;
+        const glm::dvec3& hi = receiver.mesh.bounds_max;
+        if (hi.x < bounds.lo.x || lo.x > bounds.hi.x || hi.z < bounds.lo.z || lo.z > bounds.hi.z) continue;
+        span.any = true;
+        span.lowest = std::min(span.lowest, lo.y);
+        span.highest = std::max(span.highest, hi.y);
+    }
+    return span;
+}
+
+// Reflection and refraction of the scene's objects (passes/scene_view.hpp). The floor and
+// the sky are looked up exactly without them, so the views are needed only for receiver
+// meshes on the side of the surface each ray goes to: reflected rays stay on the camera's
+// side, refracted rays cross to the other. The camera's side may be either when the near
+// plane reaches into the band of the waves.
+void decide_scene_lookups(fg::FrameNeeds& needs, const Scene& scene, const WaterBounds& bounds, bool water_visible,
+                          bool camera_may_be_above, bool camera_may_be_below) {
+    const ReceiverSpan span = receivers_over_water(scene, bounds);
+    const double trough = 2.0 * scene.water->level - bounds.hi.y;  // the surface's lowest point
+    const bool objects_above = span.any && span.highest > trough;
+    const bool objects_below = span.any && span.lowest < bounds.hi.y;
+    const bool reflection = water_visible && ((camera_may_be_above && objects_above) || (camera_may_be_below && objects_below));
+    const bool refraction = water_visible && ((camera_may_be_above && objects_below) || (camera_may_be_below && objects_above));
+    const std::string sides = camera_may_be_above && camera_may_be_below ? "the near plane reaches into the waves"
+                              : camera_may_be_above                      ? "the camera is above the water"
+                                                                         : "the camera is in the water";
+    const std::string objects =
+        !span.any ? "no receiver mesh lies over the water (the floor and the sky are looked up exactly)"
+                  : format("receiver meshes over the water span y = %.3g to %.3g m", span.lowest, span.highest) +
+                        format(" (surface from %.3g to %.3g m)", trough, bounds.hi.y);
+    decide(needs, scene, fg::Effect::Reflection, reflection,
+           !water_visible ? "the water is not in view"
+           : reflection   ? sides + "; " + objects + ": some lie on the reflected rays' side"
+                          : sides + "; " + objects + ": nothing but the floor and sky on the reflected rays' side");
+    decide(needs, scene, fg::Effect::Refraction, refraction,
+           !water_visible ? "the water is not in view"
+           : refraction   ? sides + "; " + objects + ": some lie on the refracted rays' side"
+                          : sides + "; " + objects + ": nothing but the floor and sky on the refracted rays' side");
+}
+
+// Godrays (volume caustics): the sun's refracted beams scattered toward the camera, as lines
+// (passes/godrays.hpp). They need a lit, scattering medium in view. Under flat water with
+// nothing over it to shadow the beams, the beams are uniform and the shading's analytic
+// in-scatter (PHYSICS.md section 6) is already exact, so the lines would only add their
+// sampling error.
+void decide_godrays(fg::FrameNeeds& needs, const Scene& scene, const WaterBounds& bounds, bool water_visible,
+                    bool sun_up) {
+    const glm::dvec3& sigma_s = scene.medium.sigma_s;
+    const double most = std::max({sigma_s.x, sigma_s.y, sigma_s.z});
+    const bool scatters = most > 0.0;
+    const bool uniform_beams = bounds.hi.y == scene.water->level && !receivers_over_water(scene, bounds).any;
+    decide(needs, scene, fg::Effect::VolumeCaustics, water_visible && sun_up && scatters && !uniform_beams,
+           !water_visible ? "the water is not in view"
+           : !sun_up      ? "the sun is below the horizon"
+           : !scatters    ? "the medium does not scatter (sigma_s = 0 in every channel)"
+           : uniform_beams
+               ? "the water is flat and no object over it shadows the beams: the analytic in-scatter is exact"
+               : format("the sun is up, the water is in view and scatters (sigma_s up to %.3g 1/m)", most, 0.0));
+}
+
 }  // namespace
 
 WaterBounds water_bounds(const Scene& scene) {
@@ -70,6 +139,9 @@ fg::FrameNeeds decide_frame_needs(const Scene& scene, double aspect) {
         decide(needs, scene, fg::Effect::Water, false, "the scene has no water");
         decide(needs, scene, fg::Effect::UnderwaterView, false, "the scene has no water");
         decide(needs, scene, fg::Effect::SurfaceCaustics, false, "the scene has no water");
+        decide(needs, scene, fg::Effect::Reflection, false, "the scene has no water");
+        decide(needs, scene, fg::Effect::Refraction, false, "the scene has no water");
+        decide(needs, scene, fg::Effect::VolumeCaustics, false, "the scene has no water");
         return needs;
     }
     const WaterBounds bounds = water_bounds(scene);
@@ -99,6 +171,7 @@ fg::FrameNeeds decide_frame_needs(const Scene& scene, double aspect) {
            : !floor_under ? "the floor lies above the highest crest"
                           : format("the sun is up and the floor (y = %.3g m) lies under the water (crest %.3g m)",
                                    scene.floor.height, bounds.hi.y));
+    decide_godrays(needs, scene, bounds, water_visible, sun_up);
 
     const bool underwater = over_water && lowest < bounds.hi.y && highest > bounds.lo.y;
     decide(needs, scene, fg::Effect::UnderwaterView, underwater,
@@ -106,6 +179,8 @@ fg::FrameNeeds decide_frame_needs(const Scene& scene, double aspect) {
                                bounds.hi.y)
                       : format("the near plane stays above y = %.3g m, over the highest crest at %.3g m", lowest,
                                bounds.hi.y));
+    const double trough = 2.0 * scene.water->level - bounds.hi.y;
+    decide_scene_lookups(needs, scene, bounds, water_visible, !over_water || highest >= trough, underwater);
     return needs;
 }
 

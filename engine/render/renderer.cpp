@@ -8,10 +8,12 @@
 #include "passes/caustics_resolve.hpp"
 #include "passes/floor.hpp"
 #include "passes/frame_constants_upload.hpp"
+#include "passes/godrays.hpp"
 #include "passes/readback.hpp"
 #include "passes/receiver_meshes.hpp"
 #include "passes/receivers.hpp"
 #include "passes/scene_optics.hpp"
+#include "passes/scene_view.hpp"
 #include "passes/sky.hpp"
 #include "passes/sun_shadow.hpp"
 #include "passes/water_shading.hpp"
@@ -20,6 +22,7 @@
 #include "passes/water_volume_stencil.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <optional>
 
@@ -37,17 +40,55 @@ VkDeviceSize hdr_bytes(uint32_t width, uint32_t height) { return VkDeviceSize{wi
 // Texels per side of the sun shadow map: 1024 resolves about 2 cm over the default 20 m floor.
 constexpr uint32_t kSunShadowTexels = 1024;
 
+// The sun's direction under the flat surface (Snell; the sun is above the horizon, so it
+// always enters).
+glm::dvec3 refracted_sun(const Scene& scene) {
+    const glm::dvec3 s = scene.sun.direction;
+    const double eta = 1.0 / scene.water->ior;
+    const double cos_i = -s.y;
+    const double cos_t = std::sqrt(1.0 - eta * eta * (1.0 - cos_i * cos_i));
+    return glm::normalize(eta * s + (eta * cos_i - cos_t) * glm::dvec3(0.0, 1.0, 0.0));
+}
+
 bool casts_sun_shadows(const Scene& scene, const passes::ReceiverMeshes* receivers) {
     return receivers && !receivers->empty() && scene.sun.direction.y < 0.0;
 }
+// The scene views the water's reflected and refracted rays look the receiver meshes up in
+// (passes/scene_view.hpp), as the frame's needs and the scene's methods ask.
+passes::WaterSceneLookups scene_lookups(fg::FrameGraph& graph, const Scene& scene,
+                                        const passes::ReceiverMeshes* receivers) {
+    passes::WaterSceneLookups lookups;
+    if (!receivers || receivers->empty()) return lookups;
+    const EffectSettings& reflection = scene.effects[fg::Effect::Reflection];
+    const EffectSettings& refraction = scene.effects[fg::Effect::Refraction];
+    // The views' clip planes: the waves' amplitude and a millimetre beyond the mean level.
+    const auto clip_margin = static_cast<float>(water_bounds(scene).hi.y - scene.water->level + 1e-3);
+    if (graph.needs().needs(fg::Effect::Reflection)) {
+        const bool mirrored = reflection.method == SceneLookup::Projective;
+        lookups.reflection_view = passes::add_scene_view_pass(
+            graph, *receivers, {mirrored ? "mirrored reflection view" : "reflection view", mirrored, true, clip_margin});
+    }
+    if (graph.needs().needs(fg::Effect::Refraction)) {
+        lookups.refraction_view =
+            passes::add_scene_view_pass(graph, *receivers, {"refraction view", false, false, clip_margin});
+    }
+    lookups.reflection_method = reflection.method;
+    lookups.refraction_method = refraction.method;
+    lookups.reflection_steps = reflection.max_steps;
+    lookups.refraction_steps = refraction.max_steps;
+    lookups.shallow_blend = static_cast<float>(refraction.shallow_blend);
+    // A march with no floor to end it looks as far as across the scene's squares twice.
+    lookups.scene_size = static_cast<float>(4.0 * std::max(scene.floor.half_extent, scene.water->half_extent));
+    return lookups;
+}
+
 }  // namespace
 
 void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
                        uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
-                       const passes::ReceiverMeshes* receivers) {
+                       const passes::ReceiverMeshes* receivers, const FrameOutput* output) {
     passes::add_frame_constants_upload(graph, constants);
     passes::add_scene_optics_pass(graph);
-    passes::add_sky_pass(graph);
     // The surface grid comes first: the stencil split, which the floor reads, draws it.
     std::optional<fg::BufferHandle> surface;
     if (scene.water && graph.needs().needs(fg::Effect::Water)) {
@@ -87,11 +128,28 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
         shadow.bounds_lo = glm::min(receivers->bounds_lo(), glm::dvec3(-e, scene.floor.height, -e));
         shadow.bounds_hi = glm::max(receivers->bounds_hi(), glm::dvec3(e, scene.floor.height, e));
         shadow.size = kSunShadowTexels;
+        if (scene.water) shadow.beam = passes::UnderwaterBeam{refracted_sun(scene), scene.water->level};
         graph.blackboard().put(keys::kSunShadow, passes::add_sun_shadow_pass(graph, *receivers, shadow));
     }
+    // The sky after the stencil split: a ray from the water that meets nothing sees nothing.
+    passes::add_sky_pass(graph);
     passes::add_floor_pass(graph);
     if (receivers && !receivers->empty()) passes::add_receivers_pass(graph, *receivers);
-    if (surface) passes::add_water_shading_pass(graph, *surface, scene.water->grid_resolution);
+    if (surface) {
+        passes::add_water_shading_pass(graph, *surface, scene.water->grid_resolution,
+                                       scene_lookups(graph, scene, receivers));
+    }
+    // Godrays only with a decision, as the frame constants' analytic in-scatter switch has it.
+    const fg::EffectDecision* godrays = graph.needs().find(fg::Effect::VolumeCaustics);
+    if (surface && godrays && godrays->needed) {
+        passes::add_godray_passes(graph, {*surface, scene.water->grid_resolution,
+                                          water_bounds(scene).hi.y - scene.water->level, scene.effects.godrays,
+                                          width, height});
+    }
+    if (output) {
+        output->add_passes(graph, graph.blackboard().get(keys::kHdrColor));
+        return;
+    }
     passes::add_readback_pass(graph, graph.blackboard().get(keys::kHdrColor), readback, hdr_bytes(width, height));
 }
 
@@ -119,6 +177,11 @@ std::string Renderer::water_configuration(const Scene& scene) {
            std::to_string(water.ior) + " floor " + std::to_string(scene.floor.height) + " sigma_t " +
            std::to_string(scene.medium.sigma_t().x) + "," + std::to_string(scene.medium.sigma_t().y) + "," +
            std::to_string(scene.medium.sigma_t().z);
+    // The water pass and the scene views capture the lookup methods at declaration.
+    for (const fg::Effect effect : {fg::Effect::Reflection, fg::Effect::Refraction}) {
+        key += " " + std::to_string(int(scene.effects[effect].method)) + "/" + std::to_string(scene.effects[effect].max_steps) +
+               "/" + std::to_string(scene.effects[effect].shallow_blend);
+    }
     for (const WaveComponent& wave : water.waves.components) {
         key += " " + std::to_string(wave.amplitude) + "," + std::to_string(wave.wavelength) + "," +
                std::to_string(wave.direction_deg) + "," + std::to_string(wave.phase_deg) + "," +
@@ -168,6 +231,29 @@ Renderer::Renderer(Context& context) : context_(context), constants_(std::make_u
 Renderer::~Renderer() = default;
 
 RenderResult Renderer::render(const Scene& scene, const RenderOptions& options) {
+    CompiledFrame& frame = prepare(scene, options, nullptr);
+    RenderResult result;
+    result.timing = frame.executor->execute();
+    result.image.width = static_cast<int>(options.width);
+    result.image.height = static_cast<int>(options.height);
+    result.image.rgba.resize(size_t{options.width} * options.height * 4);
+    std::memcpy(result.image.rgba.data(), frame.readback.mapped(), result.image.rgba.size() * sizeof(float));
+    return result;
+}
+
+fg::FrameExecutor& Renderer::prepare_frame(const Scene& scene, const RenderOptions& options,
+                                           const FrameOutput& output) {
+    return *prepare(scene, options, &output).executor;
+}
+
+void Renderer::reload_shaders() {
+    vkDeviceWaitIdle(context_.device());
+    frame_.reset();
+    pipelines_ = fg::PipelineStore{};
+}
+
+Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptions& options,
+                                           const FrameOutput* output) {
     const uint32_t max_size = context_.properties().limits.maxImageDimension2D;
     if (options.width == 0 || options.height == 0 || options.width > max_size || options.height > max_size) {
         throw UserError("--width/--height: " + std::to_string(options.width) + "x" + std::to_string(options.height) +
@@ -198,7 +284,9 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options) 
                                       std::to_string(options.height) + " " +
                                       needs.key() + " " + std::to_string(int(options.recording)) + " " +
                                       std::to_string(int(options.check_finite)) + " " +
-                                      std::to_string(int(options.timing));
+                                      std::to_string(int(options.timing)) + " " +
+                                      passes::godray_configuration(scene.effects.godrays) + " output " +
+                                      (output ? output->key : std::string("readback"));
     *constants_ = make_frame_constants(scene, options.width, options.height);
     // Counted once (PHYSICS.md section 1): the godray passes, when they run, are the
     // in-scatter of sunlight, and the shading's analytic in-scatter is switched off. (An
@@ -212,26 +300,21 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options) 
         frame_.reset();  // release the old graph's resources before making new ones
         auto frame = std::make_unique<CompiledFrame>();
         frame->configuration = configuration;
-        frame->readback = Buffer(context_, {hdr_bytes(options.width, options.height), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
-                                 "HDR readback");
+        if (!output) {
+            frame->readback = Buffer(context_, {hdr_bytes(options.width, options.height), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
+                                     "HDR readback");
+        }
         frame->graph = std::make_unique<fg::FrameGraph>(std::move(needs));
         frame->graph->set_default_recording(options.recording);
         build_frame_graph(*frame->graph, scene, constants_.get(), options.width, options.height,
-                          frame->readback.handle(), ocean, receivers);
+                          frame->readback.handle(), ocean, receivers, output);
         frame->graph->compile(options.width, options.height);
         ++compile_count_;
         frame->executor = std::make_unique<fg::FrameExecutor>(context_, *frame->graph, pipelines_,
                                                               fg::ExecutorOptions{options.check_finite, options.timing});
         frame_ = std::move(frame);
     }
-
-    RenderResult result;
-    result.timing = frame_->executor->execute();
-    result.image.width = static_cast<int>(options.width);
-    result.image.height = static_cast<int>(options.height);
-    result.image.rgba.resize(size_t{options.width} * options.height * 4);
-    std::memcpy(result.image.rgba.data(), frame_->readback.mapped(), result.image.rgba.size() * sizeof(float));
-    return result;
+    return *frame_;
 }
 
 }  // namespace vkw

@@ -13,6 +13,7 @@
 #include "engine/vk/resources.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -39,19 +40,37 @@ class OceanSpectrumBuffer;
 class ReceiverMeshes;
 }
 
+// The last passes of a frame in place of the readback, for a caller that keeps or shows the
+// image itself (the window hands the HDR colour on to its present graph). `key` stands for
+// what `add_passes` declares in the renderer's configuration: a different key compiles anew.
+struct FrameOutput {
+    std::string key;
+    std::function<void(fg::FrameGraph& graph, fg::ImageHandle hdr)> add_passes;
+};
+
 // Declares every pass of a frame into `graph`. `constants` is read at record time.
 // The readback target is `readback` (VK_NULL_HANDLE when the graph is only printed);
 // `ocean` is the device copy of an FFT ocean's spectrum (nullptr for other waves);
-// `receivers` the scene's receiver meshes on the device (nullptr when it has none).
+// `receivers` the scene's receiver meshes on the device (nullptr when it has none);
+// `output`, when given, ends the frame instead of the readback (which is then unused).
 void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
                        uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
-                       const passes::ReceiverMeshes* receivers);
+                       const passes::ReceiverMeshes* receivers, const FrameOutput* output = nullptr);
 
 class Renderer {
 public:
     explicit Renderer(Context& context);
     ~Renderer();
     RenderResult render(const Scene& scene, const RenderOptions& options);
+
+    // The frame render() runs, with `output`'s passes instead of the readback, compiled (or
+    // reused, as render() does) and handed to a caller that runs it alone (execute(): the
+    // per-pass times) or records it into its own submission (record(cmd): the window's
+    // frames, with its swapchain semaphores). Valid until the next call.
+    fg::FrameExecutor& prepare_frame(const Scene& scene, const RenderOptions& options, const FrameOutput& output);
+    // Waits for the device, then forgets the compiled frame and every pipeline, so that the
+    // next frame re-reads the .spv files (the window's shader reload).
+    void reload_shaders();
 
     // Pipelines created so far; culled passes never add one.
     const fg::PipelineStore& pipelines() const { return pipelines_; }
@@ -60,6 +79,7 @@ public:
 
 private:
     struct CompiledFrame;
+    CompiledFrame& prepare(const Scene& scene, const RenderOptions& options, const FrameOutput* output);
     static std::string water_configuration(const Scene& scene);
     static std::string sun_shadow_configuration(const Scene& scene);
     const passes::OceanSpectrumBuffer* ocean_spectrum(const Scene& scene);

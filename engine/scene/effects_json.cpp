@@ -21,10 +21,30 @@ constexpr std::array<Named<EffectMode>, 3> kModes = {{
     {"off", EffectMode::Off},
 }};
 
+constexpr std::array<Named<SceneLookup>, 2> kLookups = {{
+    {"projective", SceneLookup::Projective},
+    {"screen_space", SceneLookup::ScreenSpace},
+}};
+
 EffectSettings read_effect(FieldReader& fields) {
     const EffectSettings defaults;
     EffectSettings effect;
     effect.mode = fields.choice("mode", kModes, defaults.mode);
+    return effect;
+}
+
+// reflection and refraction: how the scene is found along the ray, and how hard to look.
+EffectSettings read_scene_lookup_effect(FieldReader& fields) {
+    EffectSettings effect = read_effect(fields);
+    effect.method = fields.choice("method", kLookups, effect.method);
+    effect.max_steps =
+        static_cast<int>(fields.integer("max_steps", Range::closed(1.0, 256.0, "steps"), effect.max_steps));
+    return effect;
+}
+
+EffectSettings read_refraction_effect(FieldReader& fields) {
+    EffectSettings effect = read_scene_lookup_effect(fields);
+    effect.shallow_blend = fields.number("shallow_blend", Range::closed(0.0, 10.0, "m"), effect.shallow_blend);
     return effect;
 }
 
@@ -33,7 +53,18 @@ EffectSettings read_effect(FieldReader& fields) {
 EffectsSettings read_effects(FieldReader& fields) {
     EffectsSettings effects;
     for (const Named<fg::Effect>& effect : kEffects) {
-        effects[effect.value] = fields.object(effect.name, Presence::optional, read_effect);
+        if (effect.value == fg::Effect::VolumeCaustics) {  // godrays: their settings beside the mode
+            effects[effect.value] = fields.object(effect.name, Presence::optional, [&](FieldReader& godrays) {
+                const EffectSettings mode = read_effect(godrays);  // first: the settings' reader finishes
+                effects.godrays = read_godray_settings(godrays);
+                return mode;
+            });
+            continue;
+        }
+        const auto reader = effect.value == fg::Effect::Reflection   ? read_scene_lookup_effect
+                            : effect.value == fg::Effect::Refraction ? read_refraction_effect
+                                                                     : read_effect;
+        effects[effect.value] = fields.object(effect.name, Presence::optional, reader);
     }
     return effects;
 }

@@ -95,14 +95,44 @@ struct Receiver {
 // effects.<name>.mode: auto lets the frame's needs decide; on and off force the decision.
 enum class EffectMode : uint8_t { Auto, On, Off };
 
+// How the water shading finds the scene's objects along reflected and refracted rays
+// (effects.reflection.method, effects.refraction.method; passes/scene_view.hpp).
+enum class SceneLookup : uint8_t {
+    Projective,   // the estimated hit, refined by fixed-point steps (seeds 000 and 001)
+    ScreenSpace,  // a ray march through the view's depth, then bisection (seed 002)
+};
+
 struct EffectSettings {
-    EffectMode mode = EffectMode::Auto;   // later: per-effect settings beside it
+    EffectMode mode = EffectMode::Auto;
+    // reflection and refraction only: the method and its number of steps
+    SceneLookup method = SceneLookup::Projective;
+    int max_steps = 64;
+    // refraction, screen-space only: seed 002's blend to the direct view where less than this
+    // much water (m, along the view ray) lies over what is behind; 0: off (the exact default)
+    double shallow_blend = 0.0;
 };
 
 // One entry per fg::Effect, indexed by the enum (CausticBlur is its last value).
 inline constexpr std::size_t kEffectCount = fg::kAllEffects.size();
 
+// effects.godrays.method: how the in-scatter of the sun's beams under the water is computed
+// (passes/godrays.hpp).
+enum class GodrayMethod : uint8_t {
+    Lines,    // each photon's beam walked as a line over the pixels it crosses (seed 000 section 4.6)
+    Marched,  // the baseline: each view ray marched through the water
+};
+
+// The settings of effects.godrays beside its mode (scenes/README.md).
+struct GodraySettings {
+    uint32_t grid = 128;                 // photon beams per side over the water, in [2, 1024]
+    double resolution_scale = 0.5;       // of the output size: 1 or 0.5
+    std::optional<double> max_depth;     // m below the mean level where beams stop; nullopt: at the floor
+    GodrayMethod method = GodrayMethod::Lines;
+    uint32_t march_steps = 32;           // Marched: steps per view segment in the water, in [1, 4096]
+};
+
 struct EffectsSettings {
+    GodraySettings godrays;
     std::array<EffectSettings, kEffectCount> settings{};
     const EffectSettings& operator[](fg::Effect effect) const { return settings[static_cast<std::size_t>(effect)]; }
     EffectSettings& operator[](fg::Effect effect) { return settings[static_cast<std::size_t>(effect)]; }

@@ -3,10 +3,14 @@
 // A Lambertian receiver (the floor, or a mesh: its vertex shader hands over the normal
 // and the albedo): lit by the sun and the sky above the water, by the sun through the
 // water (the caustic map, or the flat-surface stand-in) and the transmitted skylight
-// below it. Seen from a camera in the water, the view path attenuates and scatters.
+// below it. Seen from a camera in the water, the view path attenuates and scatters. In a
+// scene view (passes/scene_view.hpp) it keeps one side of the water plane and writes what
+// leaves the receiver with its distance from the view's eye; the water adds the path.
 // Variants (shaders/CMakeLists.txt): VKWATER_PER_PIXEL_MEDIUM (the stencil split's mask)
 // and VKWATER_CAUSTICS (the caustic map).
 #include "common/medium.glsl"
+#include "receivers/receiver_push.glsl"
+#include "scene_view/scene_view.glsl"
 #include "water_shading/camera_medium.glsl"
 #include "water_shading/underwater_light.glsl"
 
@@ -19,10 +23,17 @@ layout(location = 0) out vec4 out_radiance;
 
 void main() {
     vec3 p = in_world_position;
+    if (in_scene_view() && !kept_by_scene_view(p)) discard;
+    vec3 eye = in_scene_view() ? scene_view_eye(scene_view_mirrored()) : frame.camera_position.xyz;
     vec3 normal = normalize(in_normal);
-    // Lambertian surfaces are lit on the side the camera sees.
-    if (dot(normal, frame.camera_position.xyz - p) < 0.0) normal = -normal;
+    // Lambertian surfaces are lit on the side the eye sees.
+    if (dot(normal, eye - p) < 0.0) normal = -normal;
     vec3 radiance = lambert_radiance(in_albedo, receiver_irradiance(p, normal, optics));
+    if (in_scene_view()) {
+        // What leaves the receiver, and how far it is: the water's shader adds the path.
+        out_radiance = vec4(radiance, distance(eye, p));
+        return;
+    }
     if (camera_in_water()) {
         vec3 eye = frame.camera_position.xyz;
         radiance = water_path_radiance(analytic_inscatter_sigma_s(), frame.medium_sigma_t.rgb, frame.medium_sigma_s.w,

@@ -22,24 +22,26 @@ bool point_under_water(vec3 p) {
 }
 
 // Sun through the flat surface, E_perp max(0, -t.N) exp(-sigma_t depth / cos_t), plus
-// skylight pi L_sky_avg T_hemi exp(-sigma_t depth) (the vertical path of the model).
-// Not yet: the stand-in's shadowing by objects along the refracted beam t (PHYSICS.md
-// section 1); the sun shadow map is cast along s and serves receivers above the water only.
+// skylight pi L_sky_avg T_hemi exp(-sigma_t depth) (the vertical path of the model). With
+// objects (VKWATER_SUN_SHADOW) the sun is shadowed along the refracted beam t (PHYSICS.md
+// section 1): by objects under the water along t (the map's beam half), and by objects above
+// it where the beam enters the flat surface (the sun half).
 vec3 receiver_irradiance_under_water(vec3 p, vec3 normal, SceneOptics optics) {
     float depth = max(0.0, frame.water.x - p.y);
     vec3 sigma_t = frame.medium_sigma_t.rgb;
+    float cos_receiver = max(0.0, -dot(optics.refracted_sun.xyz, normal));
 #ifdef VKWATER_CAUSTICS
     vec3 sun = caustic_irradiance(p, normal);
 #else
-    float cos_receiver = max(0.0, -dot(optics.refracted_sun.xyz, normal));
     vec3 sun = optics.e_perp0.rgb * cos_receiver * exp(-sigma_t * (depth / optics.refracted_sun.w));
+#endif
 #ifdef VKWATER_SUN_SHADOW
-    // The stand-in is shadowed along the refracted beam (PHYSICS.md section 1): by objects
-    // above the water, where the beam enters the (flat) surface, through the sun shadow
-    // map. Not yet: objects under the water along the beam.
+    // The caustic photons are not yet stopped by objects (issue 7): their irradiance is
+    // shadowed here like the stand-in, along the flat surface's refracted beam (exact for flat
+    // water, an approximation under waves, whose beams wander about that direction).
     vec3 entry = p - (depth / optics.refracted_sun.w) * optics.refracted_sun.xyz;
     sun *= sun_visibility(entry, max(-frame.sun_direction.y, 1e-3));
-#endif
+    if (cos_receiver > 0.0) sun *= beam_visibility_under_water(p, cos_receiver);
 #endif
     vec3 sky = PI * frame.sky_average.rgb * optics.transmission.x * exp(-sigma_t * depth);
     return sun + sky;

@@ -184,6 +184,35 @@ TEST(cli, BenchSmokeTestWritesCsvAndSvgAndErrorFallsWithTheGrid) {
     EXPECT_LT(rel_mse[2], rel_mse[0]) << "the richer photon grid did not reduce the error:\n" << run.output;
 }
 
+TEST(cli, BenchSweepsAnySceneFieldOverEveryCombination) {
+    // The box through flat water: both lookup methods against the exact reference (flat-water
+    // lookups are exact but for edge pixels: tests/render/scene_lookup_test.cpp).
+    const std::string box = std::string(VKWATER_SOURCE_DIR) + "/scenes/box.json";
+    const fs::path reference = scratch("bench_box_ref.exr");
+    ASSERT_EQ(run_vkwater("reference " + box + " --width 64 --height 48 --out " + reference.string()).exit_code, 0);
+    const fs::path out = scratch("bench_box_out");
+    fs::remove_all(out);
+    const CommandRun run = run_vkwater("bench " + box + " --reference " + reference.string() +
+                                       " --grids 8 --sweep effects.reflection.method=projective,screen_space"
+                                       " --sweep effects.refraction.max_steps=8,64 --frames 1 --out-dir " +
+                                       out.string());
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    std::ifstream csv(out / "sweep.csv");
+    std::string line;
+    std::getline(csv, line);  // header
+    std::vector<std::string> settings;
+    while (std::getline(csv, line)) settings.push_back(line.substr(1, line.find(',') - 2));  // quoted
+    const std::vector<std::string> expected = {
+        "grid_resolution=8 reflection.method=projective refraction.max_steps=8",
+        "grid_resolution=8 reflection.method=projective refraction.max_steps=64",
+        "grid_resolution=8 reflection.method=screen_space refraction.max_steps=8",
+        "grid_resolution=8 reflection.method=screen_space refraction.max_steps=64"};
+    EXPECT_EQ(settings, expected) << run.output;
+    expect_clean_failure(run_vkwater("bench " + box + " --reference " + reference.string() +
+                                     " --sweep effects.reflection.method"),
+                         1, "--sweep 'effects.reflection.method'");
+}
+
 TEST(cli, PassesPrintsDecisionsOrderAndMemory) {
     const CommandRun run = run_vkwater("passes " + kPool + " --barriers --dot " + scratch("graph.dot").string());
     EXPECT_EQ(run.exit_code, 0) << run.output;

@@ -4,7 +4,9 @@
 // - a floor point inside the box's shadow gets skylight only: L = rho pi L_sky / pi;
 // - a floor point far outside it gets sun and sky: L = rho (E_s sin(60) + pi L_sky) / pi;
 // - the box top, the occluder nearest the sun, is not shadowed by itself (the bias works);
-// - under clear water, a box above it shadows the floor's stand-in sun along the refracted beam.
+// - under clear water, a box above it shadows the floor's stand-in sun along the refracted beam;
+// - under clear water, a slab under the water shadows the floor along the refracted beam, with
+//   the stand-in and with the caustic map.
 #include "engine/render/frame_constants.hpp"
 #include "engine/render/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
@@ -97,6 +99,58 @@ TEST_F(SunShadow, ObjectsAboveTheWaterShadowTheStandInAlongTheRefractedBeam) {
         // fp32 shading as above, and T_hemi by 16-point Gauss-Legendre in fp32 (1e-6): 1e-5.
         EXPECT_NEAR(shadowed[c], rho * sky / std::numbers::pi, 1e-5 * rho * sky / std::numbers::pi) << c;
         EXPECT_NEAR(lit[c], rho * (sun + sky) / std::numbers::pi, 1e-5 * rho * (sun + sky) / std::numbers::pi) << c;
+    }
+}
+
+TEST_F(SunShadow, ObjectsUnderTheWaterShadowAlongTheRefractedBeam) {
+    // A slab under clear water (y from -1.25 to -0.75, x and z in [-1, 1]), the sun 60 degrees
+    // high toward +x: the refracted beam t = (-0.375, -0.927, 0) carries the slab's shadow
+    // 0.404 m toward -x per metre of depth, so on the floor (y = -2) it spans x in
+    // [-1 - 1.25 * 0.404, 1 - 0.75 * 0.404] = [-1.51, 0.70], z in [-1, 1]. The camera lies
+    // under the slab's level and looks along z at floor points under it: x = -0.4 (0.9 m inside
+    // every edge) is shadowed, x = 3 is lit. Where their beams enter the surface nothing
+    // stands above the water, so only the map's beam half can shadow them. The pixel
+    // footprint at that grazing view is 0.33 m along z and 0.03 m along x: inside the shadow.
+    for (const char* caustics : {"off", "on"}) {
+        const auto scene_looking_at = [&](double x) {
+            return parse_scene(R"({
+              "camera": {"position": [)" + std::to_string(x) + R"(, -1.6, 4], "target": [)" + std::to_string(x) +
+                                   R"(, -2, 0], "fov_y_deg": 30},
+              "sun": {"elevation_deg": 60, "azimuth_deg": 90, "irradiance": [2, 3, 4]},
+              "sky": {"radiance": [0.2, 0.3, 0.4]},
+              "floor": {"height": -2, "half_extent": 10, "albedo": [0.6, 0.5, 0.4]},
+              "water": {"level": 0, "half_extent": 10},
+              "medium": {"sigma_a": [0, 0, 0], "sigma_s": [0, 0, 0], "g": 0},
+              "effects": {"caustics": {"mode": ")" + std::string(caustics) + R"("}},
+              "receivers": [{"type": "box", "half_size": [1, 0.25, 1], "translation": [0, -1, 0]}]
+            })", "slab_under_water.json");
+        };
+        Renderer renderer(context());
+        const Scene shadowed_scene = scene_looking_at(-0.4);
+        const RenderResult shadowed_image = renderer.render(shadowed_scene, {kSize, kSize, true, fg::TimingMode::None});
+        const float* shadowed = pixel_seeing(shadowed_image, make_frame_constants(shadowed_scene, kSize, kSize),
+                                             {-0.4, -2.0, 0.0});
+        const Scene lit_scene = scene_looking_at(3.0);
+        const RenderResult lit_image = renderer.render(lit_scene, {kSize, kSize, true, fg::TimingMode::None});
+        const float* lit = pixel_seeing(lit_image, make_frame_constants(lit_scene, kSize, kSize), {3.0, -2.0, 0.0});
+        const double cos_s = -shadowed_scene.sun.direction.y;
+        const double transmittance = 1.0 - ref::fresnel_reflectance(cos_s, 1.0, 1.333);
+        const double t_hemi = ref::hemispherical_transmittance(1.333);
+        for (int c = 0; c < 3; ++c) {
+            const double rho = shadowed_scene.floor.albedo[c];
+            const double sky = std::numbers::pi * shadowed_scene.sky.radiance[c] * t_hemi;
+            const double sun = shadowed_scene.sun.irradiance[c] * cos_s * transmittance;
+            // Shadowed: the sun term is multiplied by an exact 0, whatever computed it (the
+            // stand-in or the caustic map): fp32 shading and T_hemi as above, 1e-5.
+            EXPECT_NEAR(shadowed[c], rho * sky / std::numbers::pi, 1e-5 * rho * sky / std::numbers::pi)
+                << "caustics " << caustics << ", channel " << c;
+            // Lit, with the stand-in: as in the test above (the caustic map's own flat-water
+            // accuracy is tested in tests/caustics).
+            if (std::string(caustics) == "off") {
+                EXPECT_NEAR(lit[c], rho * (sun + sky) / std::numbers::pi, 1e-5 * rho * (sun + sky) / std::numbers::pi)
+                    << c;
+            }
+        }
     }
 }
 

@@ -25,5 +25,7 @@ Run add_passes_command(CLI::App& app);
 Run add_reference_command(CLI::App& app);
 Run add_compare_command(CLI::App& app);
 Run add_bench_command(CLI::App& app);
+Run add_povray_command(CLI::App& app);
+Run add_view_command(CLI::App& app);
 
 }  // namespace vkw::cli

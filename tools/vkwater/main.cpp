@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
     add(vkw::cli::add_reference_command);
     add(vkw::cli::add_compare_command);
     add(vkw::cli::add_bench_command);
+    add(vkw::cli::add_povray_command);
+    add(vkw::cli::add_view_command);
 
     try {
         app.parse(argc, argv);

@@ -1,0 +1,39 @@
+// `vkwater view`: the interactive window. Each frame: the window's events and the script's
+// commands of that frame, the user interface (parameter panel, statistics overlay) and the
+// camera, then one submission holding the scene's frame graph (the renderer's, ending with
+// the hand-off of its HDR colour into the window's image instead of the readback) and the
+// present graph of the acquired swapchain image (tonemap, overlay), waiting for the image and
+// for the previous frame, and presenting. Every `timing_every` frames (and on the frame after
+// the pass list changes) the scene graph runs alone instead, one pass per submission, for the
+// per-pass times. With `frames` it stops after that many frames and prints the summary.
+#pragma once
+
+#include "engine/window/swapchain.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace vkw::window {
+
+struct ViewerOptions {
+    std::filesystem::path scene;
+    std::vector<std::string> overrides;  // --set, applied in order when loading the scene
+    uint32_t width = 800, height = 600;  // the window's initial framebuffer size
+    PresentMode present = PresentMode::Fifo;
+    uint32_t frames = 0;                 // stop after this many frames; 0: when the window closes
+    std::filesystem::path script;        // empty: none (view_script.hpp)
+    uint32_t timing_every = 30;          // frames between per-pass timing frames; 0: never
+    std::string screenshot_prefix = "vkwater-view";  // F12 writes <prefix>-<n>.exr and .png
+    bool paused = false;                 // start with the water's clock stopped
+    std::string device;                  // substring of the device name; empty: the best one
+    bool validation = false;
+};
+
+// Runs the viewer; prints the device, each screenshot written and, at the end, the summary
+// (frame time, per-pass times). Throws UserError / InternalError (exit codes 1 / 2), the
+// latter also when validation reported anything.
+void run_viewer(const ViewerOptions& options);
+
+}  // namespace vkw::window

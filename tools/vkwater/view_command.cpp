@@ -1,0 +1,73 @@
+// vkwater view SCENE: the interactive window (engine/window/viewer.hpp): orbit and fly
+// camera, the parameter panel, the statistics overlay; --frames and --script make a
+// repeatable run that exits with a summary (tests, benchmarks).
+#include "engine/core/errors.hpp"
+#include "engine/window/stats_overlay.hpp"
+#include "engine/window/viewer.hpp"
+#include "tools/vkwater/commands.hpp"
+
+#include <map>
+#include <memory>
+
+namespace vkw::cli {
+namespace {
+
+struct ViewArgs {
+    window::ViewerOptions viewer;
+    std::string scene;
+    std::string script;
+    std::string present = "fifo";
+    DeviceOptions device;
+};
+
+int run_view(ViewArgs& args) {
+    static const std::map<std::string, window::PresentMode> kModes = {
+        {"fifo", window::PresentMode::Fifo},
+        {"mailbox", window::PresentMode::Mailbox},
+        {"immediate", window::PresentMode::Immediate}};
+    args.viewer.scene = args.scene;
+    args.viewer.script = args.script;
+    args.viewer.present = kModes.at(args.present);
+    args.viewer.device = args.device.device;
+    args.viewer.validation = args.device.validation;
+    window::run_viewer(args.viewer);
+    return kExitOk;
+}
+
+}  // namespace
+
+Run add_view_command(CLI::App& app) {
+    auto args = std::make_shared<ViewArgs>();
+    CLI::App* command = app.add_subcommand(
+        "view", std::string("Show a scene in a window, with camera controls, a parameter panel and per-pass times\n") +
+                    window::kViewerKeys);
+    command->add_option("scene", args->scene, "Scene file (JSON, see scenes/README.md)")->required();
+    command->add_option("--width", args->viewer.width, "Initial window width in pixels")
+        ->check(CLI::Range(1u, 16384u))
+        ->capture_default_str();
+    command->add_option("--height", args->viewer.height, "Initial window height in pixels")
+        ->check(CLI::Range(1u, 16384u))
+        ->capture_default_str();
+    command->add_option("--present", args->present, "Present mode: fifo, mailbox or immediate")
+        ->check(CLI::IsMember({"fifo", "mailbox", "immediate"}))
+        ->capture_default_str();
+    command->add_option("--frames", args->viewer.frames,
+                        "Show this many frames, print the summary and exit (0: until the window closes)")
+        ->capture_default_str();
+    command->add_option("--script", args->script,
+                        "Run the commands of this file by frame (FRAME: camera|move|resize|set|screenshot|pause|"
+                        "resume|time|mode|reload-shaders|wait-file ...; engine/window/view_script.hpp)");
+    command->add_option("--set", args->viewer.overrides, "Override a scene field: key.path=value (repeatable)");
+    command->add_option("--pass-timing-every", args->viewer.timing_every,
+                        "Run the scene graph alone every N frames for per-pass times (fence-timed on CPU "
+                        "devices); 0: never")
+        ->capture_default_str();
+    command->add_option("--screenshot-prefix", args->viewer.screenshot_prefix,
+                        "F12 writes PREFIX-<n>.exr (linear HDR) and PREFIX-<n>.png")
+        ->capture_default_str();
+    command->add_flag("--paused", args->viewer.paused, "Start with the water's clock stopped");
+    add_device_options(*command, args->device);
+    return [args] { return run_view(*args); };
+}
+
+}  // namespace vkw::cli
