@@ -9,6 +9,7 @@
 #include "tools/reference/floor_caustics.hpp"
 #include "tools/reference/optics.hpp"
 #include "tools/reference/reference_renderer.hpp"
+#include "tests/reference/sine_scene.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,16 +23,7 @@ namespace {
 constexpr double kIor = 1.333;
 
 Scene sine_scene(double amplitude, double sun_elevation_deg) {
-    return parse_scene(R"({
-      "camera": {"position": [0, 2, 3], "target": [0, 0, 0]},
-      "sun": {"elevation_deg": )" + std::to_string(sun_elevation_deg) + R"(, "azimuth_deg": 90, "irradiance": [2, 2, 2]},
-      "sky": {"radiance": [0, 0, 0]},
-      "floor": {"height": -1, "half_extent": 4},
-      "water": {"level": 0, "half_extent": 1, "ior": 1.333,
-                "waves": {"model": "sum", "components": [{"amplitude": )" + std::to_string(amplitude) +
-                       R"(, "wavelength": 0.5, "direction_deg": 0}]}},
-      "medium": {"sigma_a": [0.1, 0.2, 0.4], "sigma_s": [0, 0, 0], "g": 0}
-    })", "sine.json");
+    return sine_scene_with_amplitude(amplitude, sun_elevation_deg);
 }
 
 const BeamIrradiance::Visibility kEverythingVisible = [](const glm::dvec3&, const glm::dvec3&, double,

@@ -6,6 +6,7 @@
 #include "engine/water/surface.hpp"
 #include "tools/reference/floor_caustics.hpp"
 #include "tools/reference/optics.hpp"
+#include "tests/reference/sine_scene.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,20 +18,9 @@ namespace {
 
 constexpr double kIor = 1.333;
 
-// One sine along x (A sin(kx)) over water 2 m wide, floor 1 m down and wide enough to
-// catch every beam, clear water with a little absorption.
+// tests/reference/sine_scene.hpp's sine with the given slope amplitude A k.
 Scene sine_scene(double slope, double sun_elevation_deg) {
-    const double wavelength = 0.5, amplitude = slope * wavelength / (2.0 * 3.14159265358979323846);
-    return parse_scene(R"({
-      "camera": {"position": [0, 2, 3], "target": [0, 0, 0]},
-      "sun": {"elevation_deg": )" + std::to_string(sun_elevation_deg) + R"(, "azimuth_deg": 90, "irradiance": [2, 2, 2]},
-      "sky": {"radiance": [0, 0, 0]},
-      "floor": {"height": -1, "half_extent": 4},
-      "water": {"level": 0, "half_extent": 1, "ior": 1.333,
-                "waves": {"model": "sum", "components": [{"amplitude": )" + std::to_string(amplitude) +
-                       R"(, "wavelength": 0.5, "direction_deg": 0}]}},
-      "medium": {"sigma_a": [0.1, 0.2, 0.4], "sigma_s": [0, 0, 0], "g": 0}
-    })", "sine.json");
+    return sine_scene_with_amplitude(slope * 0.5 / (2.0 * 3.14159265358979323846), sun_elevation_deg);
 }
 
 // PHYSICS.md section 4: Phi = E_s * integral of max(0, cos(theta_s) - u_h . grad h) T exp(-sigma_t l) dA_h,

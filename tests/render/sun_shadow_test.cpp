@@ -33,6 +33,20 @@ const float* pixel_seeing(const RenderResult& result, const FrameConstants& cons
     return result.image.pixel(x, y);
 }
 
+// The floor's radiance under clear flat water (sigma = 0, PHYSICS.md section 3), channel c:
+// in a shadow (skylight through T_hemi only) and lit (plus the sun E_s cos(theta_s) T).
+struct ClearWaterFloor {
+    double shadowed, lit;
+};
+ClearWaterFloor clear_water_floor(const Scene& scene, int c) {
+    const double cos_s = -scene.sun.direction.y;
+    const double transmittance = 1.0 - ref::fresnel_reflectance(cos_s, 1.0, scene.water->ior);
+    const double rho = scene.floor.albedo[c];
+    const double sky = std::numbers::pi * scene.sky.radiance[c] * ref::hemispherical_transmittance(scene.water->ior);
+    const double sun = scene.sun.irradiance[c] * cos_s * transmittance;
+    return {rho * sky / std::numbers::pi, rho * (sun + sky) / std::numbers::pi};
+}
+
 TEST_F(SunShadow, BoxShadowsTheFloorAndNotItself) {
     const Scene scene = parse_scene(R"({
       "camera": {"position": [0, 20, 0.001], "target": [0, 0, 0], "fov_y_deg": 30},
@@ -88,17 +102,11 @@ TEST_F(SunShadow, ObjectsAboveTheWaterShadowTheStandInAlongTheRefractedBeam) {
     const FrameConstants constants = make_frame_constants(scene, kSize, kSize);
     const float* shadowed = pixel_seeing(result, constants, {-1.96, -2.0, 0.0});
     const float* lit = pixel_seeing(result, constants, {2.5, -2.0, 0.0});
-    const double cos_s = -scene.sun.direction.y;
-    const double transmittance = 1.0 - ref::fresnel_reflectance(cos_s, 1.0, 1.333);
-    const double t_hemi = ref::hemispherical_transmittance(1.333);
     for (int c = 0; c < 3; ++c) {
-        const double rho = scene.floor.albedo[c];
-        const double sky = std::numbers::pi * scene.sky.radiance[c] * t_hemi;
-        // Clear water: the floor's sun is E_s cos(theta_s) T (PHYSICS.md section 3 with sigma = 0).
-        const double sun = scene.sun.irradiance[c] * cos_s * transmittance;
+        const ClearWaterFloor expected = clear_water_floor(scene, c);
         // fp32 shading as above, and T_hemi by 16-point Gauss-Legendre in fp32 (1e-6): 1e-5.
-        EXPECT_NEAR(shadowed[c], rho * sky / std::numbers::pi, 1e-5 * rho * sky / std::numbers::pi) << c;
-        EXPECT_NEAR(lit[c], rho * (sun + sky) / std::numbers::pi, 1e-5 * rho * (sun + sky) / std::numbers::pi) << c;
+        EXPECT_NEAR(shadowed[c], expected.shadowed, 1e-5 * expected.shadowed) << c;
+        EXPECT_NEAR(lit[c], expected.lit, 1e-5 * expected.lit) << c;
     }
 }
 
@@ -133,22 +141,16 @@ TEST_F(SunShadow, ObjectsUnderTheWaterShadowAlongTheRefractedBeam) {
         const Scene lit_scene = scene_looking_at(3.0);
         const RenderResult lit_image = renderer.render(lit_scene, {kSize, kSize, true, fg::TimingMode::None});
         const float* lit = pixel_seeing(lit_image, make_frame_constants(lit_scene, kSize, kSize), {3.0, -2.0, 0.0});
-        const double cos_s = -shadowed_scene.sun.direction.y;
-        const double transmittance = 1.0 - ref::fresnel_reflectance(cos_s, 1.0, 1.333);
-        const double t_hemi = ref::hemispherical_transmittance(1.333);
         for (int c = 0; c < 3; ++c) {
-            const double rho = shadowed_scene.floor.albedo[c];
-            const double sky = std::numbers::pi * shadowed_scene.sky.radiance[c] * t_hemi;
-            const double sun = shadowed_scene.sun.irradiance[c] * cos_s * transmittance;
+            const ClearWaterFloor expected = clear_water_floor(shadowed_scene, c);
             // Shadowed: the sun term is multiplied by an exact 0, whatever computed it (the
             // stand-in or the caustic map): fp32 shading and T_hemi as above, 1e-5.
-            EXPECT_NEAR(shadowed[c], rho * sky / std::numbers::pi, 1e-5 * rho * sky / std::numbers::pi)
+            EXPECT_NEAR(shadowed[c], expected.shadowed, 1e-5 * expected.shadowed)
                 << "caustics " << caustics << ", channel " << c;
             // Lit, with the stand-in: as in the test above (the caustic map's own flat-water
             // accuracy is tested in tests/caustics).
             if (std::string(caustics) == "off") {
-                EXPECT_NEAR(lit[c], rho * (sun + sky) / std::numbers::pi, 1e-5 * rho * (sun + sky) / std::numbers::pi)
-                    << c;
+                EXPECT_NEAR(lit[c], expected.lit, 1e-5 * expected.lit) << c;
             }
         }
     }
