@@ -262,14 +262,17 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
     }
     if (scene.water) {
         // The surface grid must fit the device: a quarter of its largest heap at most, so
-        // the frame's other targets fit beside it.
+        // the frame's other targets fit beside it, and one storage-buffer binding (the water
+        // and stencil passes pull every vertex through one).
         VkPhysicalDeviceMemoryProperties memory;
         vkGetPhysicalDeviceMemoryProperties(context_.physical_device(), &memory);
         VkDeviceSize largest_heap = 0;
         for (uint32_t i = 0; i < memory.memoryHeapCount; ++i) largest_heap = std::max(largest_heap, memory.memoryHeaps[i].size);
+        const VkDeviceSize limit =
+            std::min<VkDeviceSize>(largest_heap / 4, context_.properties().limits.maxStorageBufferRange);
         uint32_t largest_grid = 1;
-        while (passes::water_surface_bytes(largest_grid * 2) <= largest_heap / 4) largest_grid *= 2;
-        if (passes::water_surface_bytes(scene.water->grid_resolution) > largest_heap / 4) {
+        while (passes::water_surface_bytes(largest_grid * 2) <= limit) largest_grid *= 2;
+        if (passes::water_surface_bytes(scene.water->grid_resolution) > limit) {
             throw UserError(scene.source.string() + ": water.grid_resolution: " +
                             std::to_string(scene.water->grid_resolution) + " needs " +
                             std::to_string(passes::water_surface_bytes(scene.water->grid_resolution) >> 20) +
