@@ -2,6 +2,7 @@
 #include "passes/caustics_photons.hpp"
 
 #include "engine/framegraph/pass_context.hpp"
+#include "passes/zeroed_buffer.hpp"
 #include "engine/vk/context.hpp"
 #include "passes/caustics_bands.hpp"
 #include "passes/water_surface.hpp"
@@ -44,22 +45,11 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
     const CausticPhotonPush push = photon_push(inputs);  // checks the inputs
     const VkDeviceSize bytes = caustic_flux_bytes(inputs.map_width, inputs.map_height);
 
-    struct Clear {
-        fg::BufferHandle flux;
-    };
-    const auto& clear = graph.add_pass<Clear>(
-        "caustic flux clear", fg::PassKind::Transfer,
-        [&](fg::PassBuilder& builder, Clear& d) {
-            d.flux = builder.copy_destination(builder.create_buffer("caustic flux", {bytes}));
-        },
-        [](const Clear& d, fg::PassContext& context) {
-            vkCmdFillBuffer(context.cmd(), context.buffer(d.flux), 0, VK_WHOLE_SIZE, 0);
-        });
+    const fg::BufferHandle cleared = add_zeroed_buffer_pass(graph, "caustic flux clear", "caustic flux", bytes);
 
     struct Data {
         fg::BufferHandle surface, flux;
     };
-    const fg::BufferHandle cleared = clear.flux;
     const auto& data = graph.add_pass<Data>(
         "caustic photons", fg::PassKind::Compute,
         [&](fg::PassBuilder& builder, Data& d) {

@@ -2,6 +2,7 @@
 #include "passes/godrays_lines.hpp"
 
 #include "engine/framegraph/pass_context.hpp"
+#include "passes/zeroed_buffer.hpp"
 #include "engine/render/blackboard_keys.hpp"
 
 #include <algorithm>
@@ -42,18 +43,8 @@ VkDeviceSize godray_pyramid_bytes(uint32_t width, uint32_t height) {
 fg::BufferHandle add_godray_lines_passes(fg::FrameGraph& graph, const GodrayLineInputs& inputs) {
     const VkDeviceSize bytes = godray_pyramid_bytes(inputs.width, inputs.height);
 
-    struct Clear {
-        fg::BufferHandle radiance;
-    };
-    const auto& clear = graph.add_pass<Clear>(
-        "godray clear", fg::PassKind::Transfer,
-        [&](fg::PassBuilder& builder, Clear& d) {
-            builder.serves(fg::Effect::VolumeCaustics);
-            d.radiance = builder.copy_destination(builder.create_buffer("godray radiance", {bytes}));
-        },
-        [](const Clear& d, fg::PassContext& context) {
-            vkCmdFillBuffer(context.cmd(), context.buffer(d.radiance), 0, VK_WHOLE_SIZE, 0);
-        });
+    const fg::BufferHandle cleared =
+        add_zeroed_buffer_pass(graph, "godray clear", "godray radiance", bytes, fg::Effect::VolumeCaustics);
 
     GodrayLinesPush push{};
     push.grid = inputs.grid;
@@ -64,7 +55,6 @@ fg::BufferHandle add_godray_lines_passes(fg::FrameGraph& graph, const GodrayLine
         fg::BufferHandle constants, beams, radiance;
         fg::ImageHandle view_depth;
     };
-    const fg::BufferHandle cleared = clear.radiance;
     const auto& data = graph.add_pass<Data>(
         "godray lines", fg::PassKind::Compute,
         [&](fg::PassBuilder& builder, Data& d) {
