@@ -59,53 +59,51 @@ CausticMapFrame fit_caustic_map(const CausticInputs& in) {
     check(in);
     CausticMapFrame f;
     f.s = in.sun_direction;
-    f.width = in.map_width;
-    f.height = in.map_height;
-    branchless_basis(f.s, f.u, f.v);
     f.sun_up = f.s.y < 0.0;
 
-    // The flat-water refracted direction carries the extent's corners to the floor (none when
-    // the sun is not up: the map then only needs to be finite).
+    // The projection direction: the flat-water refracted sun t (straight down when the sun is
+    // not up: the map then only needs to be finite).
     double cos_t = 1.0, transmit = 0.0;
-    glm::dvec3 t(0.0, -1.0, 0.0);
+    f.direction = glm::dvec3(0.0, -1.0, 0.0);
     if (f.sun_up) {
         const double cos_i = -f.s.y;
         transmit = transmittance(cos_i, in.ior, cos_t);
         const double eta = 1.0 / in.ior;
-        t = eta * f.s + (eta * cos_i - cos_t) * glm::dvec3(0.0, 1.0, 0.0);
+        f.direction = glm::normalize(eta * f.s + (eta * cos_i - cos_t) * glm::dvec3(0.0, 1.0, 0.0));
+        cos_t = -f.direction.y;
     }
-    glm::dvec2 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-    for (const double x : {-in.half_extent, in.half_extent}) {
-        for (const double z : {-in.half_extent, in.half_extent}) {
-            for (const double y : {in.water_level - in.max_amplitude, in.water_level + in.max_amplitude}) {
-                const double l = f.sun_up ? std::max(0.0, y - in.floor_height) / -t.y : 0.0;
-                const glm::dvec3 p = glm::dvec3(x, y, z) + l * t;
-                const glm::dvec2 q(glm::dot(p, f.u), glm::dot(p, f.v));
-                lo = glm::min(lo, q);
-                hi = glm::max(hi, q);
-            }
-        }
+    // A point's map position: where the line along t through it crosses the mean level,
+    // (x, z) + (y - level) shear with shear = -t.xz / t.y (finite: t.y <= -sqrt(1 - 1 / n^2)
+    // below the surface, and for n = 1 the sun is above the horizon).
+    const glm::dvec2 shear(-f.direction.x / f.direction.y, -f.direction.z / f.direction.y);
+    f.shear = shear;
+    // Texels of the water grid's cell size (times W - 2 = R: one per photon, aligned with them),
+    // and as many more as the crests' shift along t and the margin need on each side.
+    const double texel = 2.0 * in.half_extent / double(in.map_width - 2);
+    const glm::dvec2 reach = in.max_amplitude * glm::abs(shear) + glm::dvec2(in.fit_margin);
+    const glm::uvec2 extra(std::ceil(reach.x / texel - 1e-9), std::ceil(reach.y / texel - 1e-9));
+    f.width = in.map_width + 2 * extra.x;
+    f.height = in.map_height + 2 * extra.y;
+    if (f.width > kMaxMapSide || f.height > kMaxMapSide) {
+        throw InternalError("caustics: the map with its margin for the waves (" + std::to_string(f.width) + " x " +
+                            std::to_string(f.height) + " texels) exceeds " + std::to_string(kMaxMapSide) +
+                            " texels per side");
     }
-    lo -= in.fit_margin;
-    hi += in.fit_margin;
-    glm::dvec2 extent = hi - lo;
-    const double min_side = kMinAspect * std::max(extent.x, extent.y);
-    for (int k = 0; k < 2; ++k) {
-        if (extent[k] < min_side) {
-            lo[k] -= 0.5 * (min_side - extent[k]);
-            extent[k] = min_side;
-        }
-    }
-    // One texel of border on each side: W - 2 texels span the fitted rectangle.
-    f.texel = extent / glm::dvec2(f.width - 2, f.height - 2);
-    f.corner = lo - f.texel;
-    f.texel_area = f.texel.x * f.texel.y;
+    f.texel = glm::dvec2(texel, 2.0 * in.half_extent / double(in.map_height - 2));
+    // Texel coordinate 0 at one texel (plus the extra ones) before the water's corner.
+    f.corner = glm::dvec2(-in.half_extent) - f.texel * (glm::dvec2(extra) + 1.0);
+    // A texel's area normal to t: its horizontal area at the mean level times cos(theta_t).
+    f.texel_area = f.texel.x * f.texel.y * cos_t;
 
+    // Under flat water the beam's irradiance normal to t is E_s T cos(theta_s) / cos(theta_t)
+    // (the flux through a horizontal area A cos(theta_s) crosses A cos(theta_t) normal to t).
     const double depth = std::max(0.0, in.water_level - in.floor_height);
+    const double cos_s = f.sun_up ? -f.s.y : 0.0;
     const double projected_bound = 4.0 * in.half_extent * in.half_extent + 16.0 * in.half_extent * in.max_amplitude;
     for (int c = 0; c < 3; ++c) {
         const double es = in.sun_irradiance[c];
-        f.flat_texel_flux[c] = es * transmit * std::exp(-in.sigma_t[c] * depth / cos_t) * f.texel_area;
+        f.flat_texel_flux[c] =
+            es * transmit * cos_s / cos_t * std::exp(-in.sigma_t[c] * depth / cos_t) * f.texel_area;
         const double incoming = es * projected_bound;
         f.lsb[c] = std::max(1e-9 * f.flat_texel_flux[c], incoming / 0x1.0p62);
         if (!(f.lsb[c] > 0.0)) f.lsb[c] = 1.0;  // E_s,c = 0: nothing is deposited in this channel
@@ -114,8 +112,11 @@ CausticMapFrame fit_caustic_map(const CausticInputs& in) {
 }
 
 CausticLightSpacePush caustic_light_space_push(const CausticMapFrame& f, const CausticInputs& in) {
-    const glm::dvec3 origin = f.corner.x * f.u + f.corner.y * f.v;
-    const glm::dvec3 u = f.u / f.texel.x, v = f.v / f.texel.y;
+    // coordinate = ((x, z) + (y - level) shear - corner) / texel: affine in P, so the shaders
+    // take it as dot(P - origin, axis) with origin on the mean level.
+    const glm::dvec3 origin(f.corner.x, in.water_level, f.corner.y);
+    const glm::dvec3 u = glm::dvec3(1.0, f.shear.x, 0.0) / f.texel.x;
+    const glm::dvec3 v = glm::dvec3(0.0, f.shear.y, 1.0) / f.texel.y;
     return {{float(origin.x), float(origin.y), float(origin.z), float(in.floor_height)},
             {float(u.x), float(u.y), float(u.z), float(f.width)},
             {float(v.x), float(v.y), float(v.z), float(f.height)},

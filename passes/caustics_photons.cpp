@@ -8,6 +8,9 @@
 #include "passes/water_surface.hpp"
 
 #include <cstring>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace vkw::passes {
 namespace {
@@ -20,7 +23,7 @@ struct CausticPhotonPush {
     CausticLightSpacePush space;
     float deposit_scale[4];
     float sigma_t[4];
-    uint32_t resolution, sub, first_row, rows, band_first, band_rows, pad0, pad1;
+    uint32_t resolution, sub, first_row, rows, band_first, band_rows, jitter, pad1;
 };
 static_assert(sizeof(CausticPhotonPush) == 128, "the push-constant size every device supports");
 
@@ -34,6 +37,7 @@ CausticPhotonPush photon_push(const CausticInputs& in) {
     }
     push.resolution = in.grid_resolution;
     push.sub = in.sub_photons;
+    push.jitter = in.jitter ? 1u : 0u;
     return push;
 }
 
@@ -41,14 +45,18 @@ uint32_t groups(uint64_t invocations) { return static_cast<uint32_t>((invocation
 
 }  // namespace
 
-fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInputs& inputs) {
+fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInputs& inputs,
+                                         const SunShadowMap* shadow) {
     const CausticPhotonPush push = photon_push(inputs);  // checks the inputs
-    const VkDeviceSize bytes = caustic_flux_bytes(inputs.map_width, inputs.map_height);
+    const CausticMapFrame frame = fit_caustic_map(inputs);  // its size includes the margin for the waves
+    const VkDeviceSize bytes = caustic_flux_bytes(frame.width, frame.height);
 
     const fg::BufferHandle cleared = add_zeroed_buffer_pass(graph, "caustic flux clear", "caustic flux", bytes);
 
     struct Data {
         fg::BufferHandle surface, flux;
+        std::optional<fg::ImageHandle> shadow_map;
+        std::optional<fg::BufferHandle> shadow_space;
     };
     const auto& data = graph.add_pass<Data>(
         "caustic photons", fg::PassKind::Compute,
@@ -56,15 +64,23 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
             const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
             d.surface = builder.read_storage(inputs.surface, stage);
             d.flux = builder.read_write_storage(cleared, stage);
+            if (shadow) {
+                d.shadow_map = builder.sample(shadow->depth, stage);
+                d.shadow_space = builder.uniform_buffer(shadow->space, stage);
+            }
         },
         [push](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
-            desc.shader = "caustics/caustic_photons.comp";
+            desc.shader = std::string("caustics/caustic_photons.comp.") + (d.shadow_map ? "shadow" : "plain");
             desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
                                     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
                                     {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
+            if (d.shadow_map) {
+                desc.layout.bindings.push_back({6, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT});
+                desc.layout.bindings.push_back({7, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT});
+            }
             desc.layout.push_constant_bytes = sizeof(CausticPhotonPush);
-            const Pipeline& pipeline = context.pipeline("caustic photons", desc);
+            const Pipeline& pipeline = context.pipeline(desc.shader, desc);
             const VkPhysicalDeviceLimits& limits = context.context().properties().limits;
             const uint32_t r = push.resolution, s = push.sub;
             // Cell rows j .. j + rows read vertex rows j .. j + rows: one extra row per chunk.
@@ -91,7 +107,12 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
                     p.rows = chunk.rows;
                     p.band_first = band.first;
                     p.band_rows = band.rows;
-                    context.bind(pipeline, {surface, flux, lost});
+                    std::vector<fg::DescriptorBinding> bindings{surface, flux, lost};
+                    if (d.shadow_map) {
+                        bindings.push_back(context.sampled_nearest(6, *d.shadow_map));
+                        bindings.push_back(context.uniform_buffer(7, *d.shadow_space));
+                    }
+                    context.bind(pipeline, bindings);
                     context.push_constants(pipeline, p);
                     vkCmdDispatch(context.cmd(), groups(uint64_t{r} * s), groups(uint64_t{chunk.rows} * s), 1);
                 }

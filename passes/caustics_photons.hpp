@@ -8,9 +8,13 @@
 // caustic flux map of fit_caustic_map, accumulated with uint64 fixed-point atomics
 // (caustics_light_space.hpp gives the LSB and the headroom), so two runs are bit-identical.
 // Dropped photons: the cell faces away from the sun, the refracted ray points up
-// (t.y > -1e-6), the surface lies below the floor, or the sun is not above the horizon. No jitter.
-// Not yet (issue 7): general receivers through a light-space position map (Shah et al.'s
-// iteration), the camera-depth fallback, occluders, density-adaptive kernel size, blur.
+// (t.y > -1e-6), the surface lies below the floor, the sun is not above the horizon, or (with the
+// sun shadow map) an object above the water shadows the entry point. No jitter.
+// Receivers: the floor plane, exactly; with the sun shadow map, also the receiver meshes under
+// the water as its beam half sees them along the flat-water refracted sun (the caustic map's own
+// direction), found by shaders/caustics/caustic_receiver_hit.glsl. A photon whose ray leaves that
+// map continues to the floor plane (the map covers every mesh under the water, so it misses none).
+// Not yet (issue 7): density-adaptive kernel size, jitter.
 //
 // Chunked: cell rows are dispatched in chunks whose vertex rows fit one binding, map rows in bands
 // that fit one binding (caustics_bands.hpp); every dispatch stays within 65535 groups per side.
@@ -18,12 +22,16 @@
 
 #include "engine/framegraph/frame_graph.hpp"
 #include "passes/caustics_light_space.hpp"
+#include "passes/sun_shadow.hpp"
 
 namespace vkw::passes {
 
 // Adds the clear of the flux buffer (transfer) and the photon pass (compute) and returns the
 // flux buffer: caustic_flux_bytes(W, H) bytes, laid out as caustics_bands.hpp says, in units of
-// fit_caustic_map(inputs).lsb. Throws vkw::InternalError for inputs out of range.
-fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInputs& inputs);
+// fit_caustic_map(inputs).lsb. `shadow` (scenes with receiver meshes): the sun shadow map, whose
+// beam half must look along fit_caustic_map(inputs).direction. Throws vkw::InternalError for
+// inputs out of range.
+fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInputs& inputs,
+                                         const SunShadowMap* shadow = nullptr);
 
 }  // namespace vkw::passes

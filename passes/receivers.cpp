@@ -19,7 +19,7 @@ void add_receivers_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes) {
             d.indices = builder.index_buffer(meshes.import_indices(graph));
             d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
             d.depth = builder.depth_stencil_attachment(graph.blackboard().get(keys::kSceneDepth), fg::LoadOp::Load);
-            d.lighting.declare(builder, graph.blackboard(), /*with_caustics=*/false);
+            d.lighting.declare(builder, graph.blackboard(), /*with_caustics=*/true);
         },
         [&meshes](const Data& d, fg::PassContext& context) {
             const GraphicsPipelineDesc desc = receiver_mesh_pipeline(d.lighting);

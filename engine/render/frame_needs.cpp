@@ -161,16 +161,26 @@ fg::FrameNeeds decide_frame_needs(const Scene& scene, double aspect) {
         over_water = over_water || (corner.x >= bounds.lo.x && corner.x <= bounds.hi.x && corner.z >= bounds.lo.z &&
                                     corner.z <= bounds.hi.z);
     }
-    // Caustics: the sun must be up and the floor (the receiver the photons reach) under the
-    // highest crest; without the water in view nothing shows them.
+    // Caustics: the sun must be up and a receiver the photons reach (the floor, or a mesh whose
+    // box overlaps the water's extent) below the highest crest; without the water in view nothing
+    // shows them.
     const bool sun_up = scene.sun.direction.y < 0.0;
     const bool floor_under = scene.floor.height < bounds.hi.y;
-    decide(needs, scene, fg::Effect::SurfaceCaustics, water_visible && sun_up && floor_under,
-           !water_visible ? "the water is not in view"
-           : !sun_up      ? "the sun is below the horizon"
-           : !floor_under ? "the floor lies above the highest crest"
-                          : format("the sun is up and the floor (y = %.3g m) lies under the water (crest %.3g m)",
-                                   scene.floor.height, bounds.hi.y));
+    const ReceiverSpan meshes = receivers_over_water(scene, bounds);
+    const bool mesh_under = meshes.any && meshes.lowest < bounds.hi.y;
+    // Flat water: the stand-in (with the sun shadow map along the refracted beam) is exact.
+    const bool flat_stand_in = bounds.hi.y == scene.water->level && scene.effects.caustics.analytic_flat;
+    decide(needs, scene, fg::Effect::SurfaceCaustics,
+           water_visible && sun_up && (floor_under || mesh_under) && !flat_stand_in,
+           !water_visible                ? "the water is not in view"
+           : !sun_up                     ? "the sun is below the horizon"
+           : !floor_under && !mesh_under ? "the floor and every receiver mesh lie above the highest crest"
+           : flat_stand_in ? "the water is flat: the flat-surface stand-in is exact (effects.caustics.analytic_flat)"
+           : floor_under   ? format("the sun is up and the floor (y = %.3g m) lies under the water (crest %.3g m)",
+                                    scene.floor.height, bounds.hi.y)
+                           : format("the sun is up and receiver meshes reach under the water (down to y = %.3g m, "
+                                    "crest %.3g m)",
+                                    meshes.lowest, bounds.hi.y));
     decide_godrays(needs, scene, bounds, water_visible, sun_up);
 
     const bool underwater = over_water && lowest < bounds.hi.y && highest > bounds.lo.y;

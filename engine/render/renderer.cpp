@@ -89,6 +89,20 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
                        const passes::ReceiverMeshes* receivers, const FrameOutput* output) {
     passes::add_frame_constants_upload(graph, constants);
     passes::add_scene_optics_pass(graph);
+    // The sun shadow map first: the caustic photons are traced against it.
+    std::optional<passes::SunShadowMap> sun_shadow;
+    if (casts_sun_shadows(scene, receivers)) {
+        // Everything that can receive the sun above the water: the meshes and the floor square.
+        passes::SunShadowInputs shadow;
+        shadow.sun_direction = scene.sun.direction;
+        const double e = scene.floor.half_extent;
+        shadow.bounds_lo = glm::min(receivers->bounds_lo(), glm::dvec3(-e, scene.floor.height, -e));
+        shadow.bounds_hi = glm::max(receivers->bounds_hi(), glm::dvec3(e, scene.floor.height, e));
+        shadow.size = kSunShadowTexels;
+        if (scene.water) shadow.beam = passes::UnderwaterBeam{refracted_sun(scene), scene.water->level};
+        sun_shadow = passes::add_sun_shadow_pass(graph, *receivers, shadow);
+        graph.blackboard().put(keys::kSunShadow, *sun_shadow);
+    }
     // The surface grid comes first: the stencil split, which the floor reads, draws it.
     std::optional<fg::BufferHandle> surface;
     if (scene.water && graph.needs().needs(fg::Effect::Water)) {
@@ -114,22 +128,16 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
             caustics.ior = water.ior;
             caustics.sigma_t = scene.medium.sigma_t();
             caustics.floor_height = scene.floor.height;
+            caustics.sub_photons = scene.effects.caustics.sub_photons;
+            caustics.jitter = scene.effects.caustics.jitter;
             caustics.map_width = caustics.map_height = caustic_map_texels(water.grid_resolution);
             graph.blackboard().put(keys::kCausticMap,
                                    passes::add_caustic_resolve_pass(
-                                       graph, passes::add_caustic_photon_pass(graph, caustics), caustics));
+                                       graph,
+                                       passes::add_caustic_photon_pass(graph, caustics,
+                                                                       sun_shadow ? &*sun_shadow : nullptr),
+                                       caustics));
         }
-    }
-    if (casts_sun_shadows(scene, receivers)) {
-        // Everything that can receive the sun above the water: the meshes and the floor square.
-        passes::SunShadowInputs shadow;
-        shadow.sun_direction = scene.sun.direction;
-        const double e = scene.floor.half_extent;
-        shadow.bounds_lo = glm::min(receivers->bounds_lo(), glm::dvec3(-e, scene.floor.height, -e));
-        shadow.bounds_hi = glm::max(receivers->bounds_hi(), glm::dvec3(e, scene.floor.height, e));
-        shadow.size = kSunShadowTexels;
-        if (scene.water) shadow.beam = passes::UnderwaterBeam{refracted_sun(scene), scene.water->level};
-        graph.blackboard().put(keys::kSunShadow, passes::add_sun_shadow_pass(graph, *receivers, shadow));
     }
     // The sky after the stencil split: a ray from the water that meets nothing sees nothing.
     passes::add_sky_pass(graph);

@@ -61,6 +61,14 @@ EffectsSettings read_effects(FieldReader& fields) {
             });
             continue;
         }
+        if (effect.value == fg::Effect::SurfaceCaustics) {  // likewise the caustics
+            effects[effect.value] = fields.object(effect.name, Presence::optional, [&](FieldReader& caustics) {
+                const EffectSettings mode = read_effect(caustics);
+                effects.caustics = read_caustic_settings(caustics);
+                return mode;
+            });
+            continue;
+        }
         const auto reader = effect.value == fg::Effect::Reflection   ? read_scene_lookup_effect
                             : effect.value == fg::Effect::Refraction ? read_refraction_effect
                                                                      : read_effect;

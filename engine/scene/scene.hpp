@@ -131,8 +131,18 @@ struct GodraySettings {
     uint32_t march_steps = 32;           // Marched: steps per view segment in the water, in [1, 4096]
 };
 
+// The settings of effects.caustics beside its mode (scenes/README.md).
+struct CausticSettings {
+    // Flat water: the flat-surface stand-in is exact there, so the photon passes are left out
+    // unless this is false (then they run and reproduce it up to the map's resolution).
+    bool analytic_flat = true;
+    uint32_t sub_photons = 1;  // S: S x S photons per cell of the water grid, in [1, 8]
+    bool jitter = false;       // each photon at a hashed point of its sub-cell instead of its centre
+};
+
 struct EffectsSettings {
     GodraySettings godrays;
+    CausticSettings caustics;
     std::array<EffectSettings, kEffectCount> settings{};
     const EffectSettings& operator[](fg::Effect effect) const { return settings[static_cast<std::size_t>(effect)]; }
     EffectSettings& operator[](fg::Effect effect) { return settings[static_cast<std::size_t>(effect)]; }

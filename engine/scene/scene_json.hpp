@@ -24,6 +24,7 @@ WaveSettings read_waves(FieldReader& fields);     // waves_json.cpp
 Medium read_medium(FieldReader& fields);          // medium_json.cpp
 EffectsSettings read_effects(FieldReader& fields);  // effects_json.cpp
 GodraySettings read_godray_settings(FieldReader& fields);  // godrays_json.cpp: effects.godrays but its mode
+CausticSettings read_caustic_settings(FieldReader& fields);  // caustics_json.cpp: effects.caustics but its mode
 // `base_dir`: the scene file's folder, against which glTF file names are resolved.
 Receiver read_receiver(FieldReader& fields, const std::filesystem::path& base_dir);  // receiver_json.cpp
 

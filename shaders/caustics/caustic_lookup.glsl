@@ -1,10 +1,12 @@
-// The caustic irradiance a receiver reads (issue 7 item 4): the point is projected along the sun
-// into the light-space map that passes/caustics_resolve.hpp writes (irradiance on a plane normal
-// to the sun, E_perp = Phi_texel / A_ls), bilinearly between texel centres, and converted to the
-// receiver: E = E_perp |s . N_r| (= Phi_texel |s . N_r| / A_ls). Points outside the map get 0: no
-// water lies between them and the sun.
-// Not yet: a depth test against a light-space receiver map (today the only receiver is the floor
-// plane the photons were traced to).
+// The caustic irradiance a receiver reads (issue 7 item 4): the point is projected along the
+// map's direction t (the flat-water refracted sun) into the light-space map that
+// passes/caustics_resolve.hpp writes (irradiance on a plane normal to t, E_perp = Phi_texel /
+// A_ls), bilinearly between texel centres, and converted to the receiver:
+// E = E_perp max(0, -t . N_r) (= Phi_texel max(0, -t . N_r) / A_ls). A face turned away from t
+// gets 0 (its texels belong to the lit face in front of it). Points outside the map get 0: no
+// water lies between them and the sun. The depth test (is the point the surface the map sees
+// along t, or behind it?) is the caller's: beam_visibility_under_water of
+// receivers/sun_shadow.glsl, the map the photons were traced against.
 //
 // The includer chooses where the map lives, before including this file:
 //   #define CAUSTIC_SET 0
@@ -39,7 +41,7 @@ vec3 caustic_irradiance(vec3 world_position, vec3 normal) {
     const ivec2 t = ivec2(base);
     const vec3 e = mix(mix(caustic_map_texel(t), caustic_map_texel(t + ivec2(1, 0)), f.x),
                        mix(caustic_map_texel(t + ivec2(0, 1)), caustic_map_texel(t + ivec2(1, 1)), f.x), f.y);
-    return e * abs(dot(caustic_space.sun.xyz, normal));
+    return e * max(0.0, -dot(caustic_map_direction(caustic_space), normal));
 }
 
 #endif

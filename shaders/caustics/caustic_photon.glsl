@@ -1,6 +1,7 @@
 // One caustic photon (issue 7 item 2, PHYSICS.md sections 4 and 8): sub-cell (a, b) of cell
 // (i, j) of the GPU water grid (passes/water_surface.hpp), refracted with the exact Fresnel of
-// common/fresnel.glsl and carried to the floor plane. Shared by the fixed-point kernel and any
+// common/fresnel.glsl and carried to the floor plane (the receiver meshes in front of it are
+// found by caustic_receiver_hit.glsl). Shared by the fixed-point kernel, the godray beams and any
 // other splat variant, so that they trace identical photons.
 #ifndef VKWATER_CAUSTIC_PHOTON_GLSL
 #define VKWATER_CAUSTIC_PHOTON_GLSL
@@ -14,10 +15,21 @@
 const float kCausticUpEpsilon = 1e-6;
 
 struct CausticPhoton {
-    vec3 hit;     // where the refracted ray meets the floor plane
-    vec3 energy;  // per RGB: max(0, -s.a) T(theta_i) exp(-sigma_t l), a the sub-cell's vector area;
-                  // times E_s this is the photon's flux Phi (W)
+    vec3 entry;      // where it enters the water (the sub-cell's centre)
+    vec3 direction;  // its refracted direction t (unit, pointing down)
+    float carried;   // max(0, -s.a) T(theta_i), a the sub-cell's vector area: its flux over E_s
+                     // just below the surface
+    float path;      // l: the path in the water to its receiver
+    vec3 hit;        // entry + l t, where it meets the receiver
+    vec3 energy;     // per RGB: carried exp(-sigma_t l); times E_s this is the photon's flux Phi (W)
 };
+
+// Stops the photon after l metres in the water (its receiver, found by the caller).
+void caustic_photon_stop_at(inout CausticPhoton photon, float l, vec3 sigma_t) {
+    photon.path = l;
+    photon.hit = photon.entry + l * photon.direction;
+    photon.energy = photon.carried * exp(-sigma_t * l);
+}
 
 // The four corners of one grid cell, as the GPU surface wrote them.
 struct CausticCell {
@@ -43,9 +55,11 @@ vec3 caustic_patch_normal(CausticCell c, vec2 uv) {
 // so no slope factor is applied again.
 // Optics (Fresnel, refraction): the interpolated vertex normals at the centre, which are the
 // surface model's analytic normals rather than the chord's.
-bool trace_caustic_photon(CausticCell cell, vec2 uv0, vec2 uv1, CausticLightSpace space, vec3 sigma_t,
-                          out CausticPhoton photon) {
-    photon = CausticPhoton(vec3(0.0), vec3(0.0));
+// `at` is the point of the patch (in [uv0, uv1]) the photon leaves from: the sub-cell's centre, or
+// a jittered point of it; its area stays the sub-cell's either way.
+bool trace_caustic_photon_at(CausticCell cell, vec2 uv0, vec2 uv1, vec2 at, CausticLightSpace space, vec3 sigma_t,
+                             out CausticPhoton photon) {
+    photon = CausticPhoton(vec3(0.0), vec3(0.0, -1.0, 0.0), 0.0, 0.0, vec3(0.0), vec3(0.0));
     const vec3 s = space.sun.xyz;
     const float n = space.sun.w;
     const vec3 c00 = caustic_patch_point(cell, uv0), c11 = caustic_patch_point(cell, uv1);
@@ -53,9 +67,8 @@ bool trace_caustic_photon(CausticCell cell, vec2 uv0, vec2 uv1, CausticLightSpac
     // u runs along x and v along z: (c01 - c10) x (c11 - c00) points up (+y) on a flat cell.
     const vec3 area = 0.5 * cross(c01 - c10, c11 - c00);
     const float projected = -dot(s, area);
-    const vec2 centre = 0.5 * (uv0 + uv1);
-    const vec3 p = caustic_patch_point(cell, centre);
-    const vec3 normal = normalize(caustic_patch_normal(cell, centre));
+    const vec3 p = caustic_patch_point(cell, at);
+    const vec3 normal = normalize(caustic_patch_normal(cell, at));
     const float cos_i = -dot(s, normal);
     if (!(projected > 0.0) || !(cos_i > 0.0)) return false;
     vec3 t;
@@ -63,9 +76,16 @@ bool trace_caustic_photon(CausticCell cell, vec2 uv0, vec2 uv1, CausticLightSpac
     const float l = (p.y - space.origin.w) / (-t.y);  // path length in the water
     if (!(l >= 0.0)) return false;
     const Fresnel fresnel = fresnel_exact(cos_i, 1.0, n);
-    photon.hit = p + l * t;
-    photon.energy = (projected * fresnel.T) * exp(-sigma_t * l);
+    photon.entry = p;
+    photon.direction = t;
+    photon.carried = projected * fresnel.T;
+    caustic_photon_stop_at(photon, l, sigma_t);
     return true;
+}
+
+bool trace_caustic_photon(CausticCell cell, vec2 uv0, vec2 uv1, CausticLightSpace space, vec3 sigma_t,
+                          out CausticPhoton photon) {
+    return trace_caustic_photon_at(cell, uv0, uv1, 0.5 * (uv0 + uv1), space, sigma_t, photon);
 }
 
 #endif

@@ -1,6 +1,8 @@
 #version 460
 // Photon grid -> light-space caustic flux, accumulated deterministically in 64-bit fixed point
-// (passes/caustics_photons.hpp). One invocation per photon: sub-cell (a, b) of cell (i, j),
+// (passes/caustics_photons.hpp). Variants: plain (the floor plane is the receiver) and
+// VKWATER_SUN_SHADOW (receiver meshes under the water and occluders above it, from the sun
+// shadow map). One invocation per photon: sub-cell (a, b) of cell (i, j),
 // invocation (i S + a, j_local S + b). Each photon's flux, in units of the map's LSB, is rounded
 // once to an integer q and split over the 2x2 bilinear footprint by integer subtraction, so the
 // four taps sum to q exactly (a normalised kernel with no rounding drift) and integer addition
@@ -10,6 +12,9 @@
 #extension GL_EXT_shader_atomic_int64 : require
 
 #include "caustics/caustic_photon.glsl"
+#ifdef VKWATER_SUN_SHADOW
+#include "caustics/caustic_receiver_hit.glsl"  // bindings 6 and 7: the sun shadow map
+#endif
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -31,8 +36,25 @@ layout(push_constant) uniform Push {
     uint rows;           // cell rows in this chunk
     uint band_first;     // first map row of this band
     uint band_rows;      // map rows in this band
-    uint pad0, pad1;
+    uint jitter;         // 1: each photon leaves from a hashed point of its sub-cell
+    uint pad1;
 } pc;
+
+// A point of [0, 1)^2 from the photon's index (two rounds of a 32-bit integer hash, after
+// Wellons' "lowbias32"): the same point every frame and run, so renders stay bit-identical.
+uint hash32(uint x) {
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+vec2 jitter_point(uvec2 photon) {
+    const uint a = hash32(photon.x * 0x9e3779b9u ^ hash32(photon.y));
+    const uint b = hash32(a);
+    return vec2(a >> 8, b >> 8) * (1.0 / 16777216.0);
+}
 
 void deposit(ivec2 texel, uint channel, uint64_t q) {
     if (q == 0ul) return;
@@ -57,8 +79,17 @@ void main() {
     const uint k = cell.y * row + cell.x;
     const CausticCell c = CausticCell(vertices[k], vertices[k + 1u], vertices[k + row], vertices[k + row + 1u]);
     const vec2 uv0 = vec2(g % S) / float(S), uv1 = vec2(g % S + 1u) / float(S);
+    const uvec2 index = uvec2(g.x, g.y + pc.first_row * S);  // the photon's place in the whole grid
+    const vec2 at = pc.jitter != 0u ? mix(uv0, uv1, jitter_point(index)) : 0.5 * (uv0 + uv1);
     CausticPhoton photon;
-    if (!trace_caustic_photon(c, uv0, uv1, pc.space, pc.sigma_t.rgb, photon)) return;
+    if (!trace_caustic_photon_at(c, uv0, uv1, at, pc.space, pc.sigma_t.rgb, photon)) return;
+#ifdef VKWATER_SUN_SHADOW
+    // Objects above the water stop it before it enters; those under it are receivers in front of
+    // the floor.
+    if (!caustic_entry_lit(photon, pc.space.sun.xyz)) return;
+    const float l = receiver_path(photon, caustic_map_direction(pc.space), pc.space.origin.w, photon.path);
+    caustic_photon_stop_at(photon, l, pc.sigma_t.rgb);
+#endif
 
     const vec3 q = pc.deposit_scale.rgb * photon.energy;
     const vec2 coord = caustic_texel_coord(photon.hit, pc.space) - 0.5;

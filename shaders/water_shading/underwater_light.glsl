@@ -1,7 +1,7 @@
 // Light under the water for Lambertian receivers (PHYSICS.md sections 1 and 3), and the
 // floor as the receiver that refracted view rays meet. The sun term is the caustic
-// irradiance when VKWATER_CAUSTICS is defined (the map of passes/caustics_*, traced to
-// the floor) and the flat-surface stand-in otherwise: one or the other, never both.
+// irradiance when VKWATER_CAUSTICS is defined (the map of passes/caustics_*, traced to the floor
+// and the receiver meshes) and the flat-surface stand-in otherwise: one or the other, never both.
 #ifndef VKWATER_UNDERWATER_LIGHT_GLSL
 #define VKWATER_UNDERWATER_LIGHT_GLSL
 
@@ -21,11 +21,15 @@ bool point_under_water(vec3 p) {
     return frame.water.w > 0.5 && p.y < frame.water.x && abs(p.x) <= frame.water.z && abs(p.z) <= frame.water.z;
 }
 
-// Sun through the flat surface, E_perp max(0, -t.N) exp(-sigma_t depth / cos_t), plus
-// skylight pi L_sky_avg T_hemi exp(-sigma_t depth) (the vertical path of the model). With
-// objects (VKWATER_SUN_SHADOW) the sun is shadowed along the refracted beam t (PHYSICS.md
-// section 1): by objects under the water along t (the map's beam half), and by objects above
-// it where the beam enters the flat surface (the sun half).
+// The sun: the caustic irradiance (VKWATER_CAUSTICS), or the stand-in through the flat surface,
+// E_perp max(0, -t.N) exp(-sigma_t depth / cos_t); plus skylight pi L_sky_avg T_hemi
+// exp(-sigma_t depth) (the vertical path of the model). With objects (VKWATER_SUN_SHADOW) the sun
+// is shadowed along the refracted beam t (PHYSICS.md section 1):
+// - the caustic photons were already stopped by objects above the water and ended on the first
+//   receiver along their ray, so the map needs only its depth test: a point behind the surface
+//   the map sees along t (the shadow map's beam half) reads nothing;
+// - the stand-in is shadowed by objects under the water along t (the beam half) and by objects
+//   above it where the beam enters the flat surface (the sun half).
 vec3 receiver_irradiance_under_water(vec3 p, vec3 normal, SceneOptics optics) {
     float depth = max(0.0, frame.water.x - p.y);
     vec3 sigma_t = frame.medium_sigma_t.rgb;
@@ -36,11 +40,10 @@ vec3 receiver_irradiance_under_water(vec3 p, vec3 normal, SceneOptics optics) {
     vec3 sun = optics.e_perp0.rgb * cos_receiver * exp(-sigma_t * (depth / optics.refracted_sun.w));
 #endif
 #ifdef VKWATER_SUN_SHADOW
-    // The caustic photons are not yet stopped by objects (issue 7): their irradiance is
-    // shadowed here like the stand-in, along the flat surface's refracted beam (exact for flat
-    // water, an approximation under waves, whose beams wander about that direction).
+#ifndef VKWATER_CAUSTICS
     vec3 entry = p - (depth / optics.refracted_sun.w) * optics.refracted_sun.xyz;
     sun *= sun_visibility(entry, max(-frame.sun_direction.y, 1e-3));
+#endif
     if (cos_receiver > 0.0) sun *= beam_visibility_under_water(p, cos_receiver);
 #endif
     vec3 sky = PI * frame.sky_average.rgb * optics.transmission.x * exp(-sigma_t * depth);

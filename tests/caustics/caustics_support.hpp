@@ -89,8 +89,10 @@ inline void add_probe_pass(fg::FrameGraph& graph, const passes::CausticMap& map,
 // Water surface -> photons -> resolve (-> probes) -> readbacks, one submission with validation.
 inline CausticRun run_caustics(Context& context, const passes::WaterSurfaceInputs& surface,
                                passes::CausticInputs caustics, const ProbeGrid& probes = {}) {
-    const VkDeviceSize flux_bytes = passes::caustic_flux_bytes(caustics.map_width, caustics.map_height);
-    const VkDeviceSize image_bytes = VkDeviceSize{caustics.map_width} * caustics.map_height * 16;
+    // The map's own size: the requested W x H plus the margin the waves' crests need.
+    const passes::CausticMapFrame frame = passes::fit_caustic_map(caustics);
+    const VkDeviceSize flux_bytes = passes::caustic_flux_bytes(frame.width, frame.height);
+    const VkDeviceSize image_bytes = VkDeviceSize{frame.width} * frame.height * 16;
     const VkDeviceSize probe_bytes = std::max<VkDeviceSize>(16, VkDeviceSize{probes.count_x} * probes.count_z * 16);
     Buffer flux_host(context, {flux_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "caustic flux readback");
     Buffer image_host(context, {image_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "caustic map readback");
