@@ -1,10 +1,8 @@
 // Flat water (PHYSICS.md section 3): the floor irradiance read through caustic_lookup.glsl equals
 // E_s cos(theta_s) T exp(-sigma_t d / cos(theta_t)), and with n = 1 the map is uniform to its
-// rounding. The sun travels in the y-z plane, where the branchless basis gives u = +x exactly and
-// v in the y-z plane, and W - 2 = H - 2 = R: the photons' lattice in light space then has exactly
-// one texel of spacing along both axes, and a bilinear splat of such a lattice sums to the same
-// value in every texel for any phase (sum over k of tent(x - k) = 1), so uniformity is exact up
-// to rounding.
+// rounding. W - 2 = H - 2 = R: a point's map position is where its line along the refracted sun
+// crosses the mean level, so under flat water every photon lands on a texel centre (texel = cell)
+// and each texel holds one photon's flux; uniformity is exact up to rounding.
 #include "tests/caustics/caustics_support.hpp"
 #include "tests/support/gpu_test.hpp"
 

@@ -11,6 +11,8 @@
 #include "passes/caustics_photons.hpp"
 #include "passes/caustics_resolve.hpp"
 #include "passes/readback.hpp"
+#include "passes/receiver_meshes.hpp"
+#include "passes/sun_shadow.hpp"
 #include "passes/water_surface.hpp"
 
 #include <glm/glm.hpp>
@@ -18,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -86,9 +89,26 @@ inline void add_probe_pass(fg::FrameGraph& graph, const passes::CausticMap& map,
     passes::add_readback_pass(graph, data.out, host, bytes, "probe readback");
 }
 
-// Water surface -> photons -> resolve (-> probes) -> readbacks, one submission with validation.
+// The sun shadow map as the renderer fits it: every mesh and the floor square along s, the meshes
+// under the water along the caustic map's direction t.
+inline passes::SunShadowInputs caustic_shadow_inputs(const passes::CausticInputs& caustics,
+                                                     const passes::ReceiverMeshes& meshes, double floor_half_extent,
+                                                     double level) {
+    passes::SunShadowInputs in;
+    in.sun_direction = caustics.sun_direction;
+    const double e = floor_half_extent;
+    in.bounds_lo = glm::min(meshes.bounds_lo(), glm::dvec3(-e, caustics.floor_height, -e));
+    in.bounds_hi = glm::max(meshes.bounds_hi(), glm::dvec3(e, caustics.floor_height, e));
+    in.size = 1024;
+    in.beam = passes::UnderwaterBeam{passes::fit_caustic_map(caustics).direction, level};
+    return in;
+}
+
+// Water surface (-> sun shadow map of `meshes`) -> photons -> resolve (-> probes) -> readbacks, one
+// submission with validation. With meshes, their sun shadow map (caustic_shadow_inputs) too.
 inline CausticRun run_caustics(Context& context, const passes::WaterSurfaceInputs& surface,
-                               passes::CausticInputs caustics, const ProbeGrid& probes = {}) {
+                               passes::CausticInputs caustics, const ProbeGrid& probes = {},
+                               const passes::ReceiverMeshes* meshes = nullptr, double floor_half_extent = 10.0) {
     // The map's own size: the requested W x H plus the margin the waves' crests need.
     const passes::CausticMapFrame frame = passes::fit_caustic_map(caustics);
     const VkDeviceSize flux_bytes = passes::caustic_flux_bytes(frame.width, frame.height);
@@ -104,7 +124,12 @@ inline CausticRun run_caustics(Context& context, const passes::WaterSurfaceInput
         caustics.grid_resolution = surface.grid_resolution;
         caustics.water_level = surface.level;
         caustics.half_extent = surface.half_extent;
-        const fg::BufferHandle flux = passes::add_caustic_photon_pass(graph, caustics);
+        std::optional<passes::SunShadowMap> shadow;
+        if (meshes) {
+            shadow = passes::add_sun_shadow_pass(graph, *meshes,
+                                                 caustic_shadow_inputs(caustics, *meshes, floor_half_extent, surface.level));
+        }
+        const fg::BufferHandle flux = passes::add_caustic_photon_pass(graph, caustics, shadow ? &*shadow : nullptr);
         const passes::CausticMap map = passes::add_caustic_resolve_pass(graph, flux, caustics);
         passes::add_readback_pass(graph, flux, flux_host.handle(), flux_bytes, "flux readback");
         passes::add_readback_pass(graph, map.irradiance, image_host.handle(), image_bytes, "map readback");
