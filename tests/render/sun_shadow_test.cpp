@@ -80,33 +80,41 @@ TEST_F(SunShadow, BoxShadowsTheFloorAndNotItself) {
     }
 }
 
-TEST_F(SunShadow, ObjectsAboveTheWaterShadowTheStandInAlongTheRefractedBeam) {
-    // A box floating above clear water (sigma = 0, caustics off: the flat stand-in lights the
-    // floor), the sun 60 degrees high toward +x, the camera under the water looking down.
+TEST_F(SunShadow, ObjectsAboveTheWaterShadowTheSunAlongTheRefractedBeam) {
+    // A box floating above clear water (sigma = 0), the sun 60 degrees high toward +x, the camera
+    // under the water looking down; the floor lit by the flat stand-in (caustics off) or by the
+    // caustic photons (on), which the box stops before they enter the water.
     // The refracted beam t = (-0.375, -0.927, 0) enters the surface 0.809 m toward +x of a
     // floor point 2 m down; the box (y from 1 to 3) shadows the surface for x in
     // [-2.73, 0.42]. Floor x = -1.96 enters at x = -1.15: shadowed; floor x = 2.5 enters
     // at 3.31: lit. Both are more than a metre from every shadow edge.
-    const Scene scene = parse_scene(R"({
-      "camera": {"position": [0, -0.1, 0.001], "target": [0, -2, 0], "fov_y_deg": 120},
-      "sun": {"elevation_deg": 60, "azimuth_deg": 90, "irradiance": [2, 3, 4]},
-      "sky": {"radiance": [0.2, 0.3, 0.4]},
-      "floor": {"height": -2, "half_extent": 10, "albedo": [0.6, 0.5, 0.4]},
-      "water": {"level": 0, "half_extent": 10},
-      "medium": {"sigma_a": [0, 0, 0], "sigma_s": [0, 0, 0], "g": 0},
-      "effects": {"caustics": {"mode": "off"}},
-      "receivers": [{"type": "box", "half_size": [1, 1, 1], "translation": [0, 2, 0]}]
-    })", "shadow_under_water.json");
-    Renderer renderer(context());
-    const RenderResult result = renderer.render(scene, {kSize, kSize, true, fg::TimingMode::None});
-    const FrameConstants constants = make_frame_constants(scene, kSize, kSize);
-    const float* shadowed = pixel_seeing(result, constants, {-1.96, -2.0, 0.0});
-    const float* lit = pixel_seeing(result, constants, {2.5, -2.0, 0.0});
-    for (int c = 0; c < 3; ++c) {
-        const ClearWaterFloor expected = clear_water_floor(scene, c);
-        // fp32 shading as above, and T_hemi by 16-point Gauss-Legendre in fp32 (1e-6): 1e-5.
-        EXPECT_NEAR(shadowed[c], expected.shadowed, 1e-5 * expected.shadowed) << c;
-        EXPECT_NEAR(lit[c], expected.lit, 1e-5 * expected.lit) << c;
+    for (const char* caustics : {"off", "on"}) {
+        const Scene scene = parse_scene(R"({
+          "camera": {"position": [0, -0.1, 0.001], "target": [0, -2, 0], "fov_y_deg": 120},
+          "sun": {"elevation_deg": 60, "azimuth_deg": 90, "irradiance": [2, 3, 4]},
+          "sky": {"radiance": [0.2, 0.3, 0.4]},
+          "floor": {"height": -2, "half_extent": 10, "albedo": [0.6, 0.5, 0.4]},
+          "water": {"level": 0, "half_extent": 10},
+          "medium": {"sigma_a": [0, 0, 0], "sigma_s": [0, 0, 0], "g": 0},
+          "effects": {"caustics": {"mode": ")" + std::string(caustics) + R"("}},
+          "receivers": [{"type": "box", "half_size": [1, 1, 1], "translation": [0, 2, 0]}]
+        })", "shadow_under_water.json");
+        Renderer renderer(context());
+        const RenderResult result = renderer.render(scene, {kSize, kSize, true, fg::TimingMode::None});
+        const FrameConstants constants = make_frame_constants(scene, kSize, kSize);
+        const float* shadowed = pixel_seeing(result, constants, {-1.96, -2.0, 0.0});
+        const float* lit = pixel_seeing(result, constants, {2.5, -2.0, 0.0});
+        for (int c = 0; c < 3; ++c) {
+            const ClearWaterFloor expected = clear_water_floor(scene, c);
+            // fp32 shading as above, and T_hemi by 16-point Gauss-Legendre in fp32 (1e-6): 1e-5.
+            // Shadowed: the sun term is an exact 0 (no photon entered there, or the stand-in's
+            // visibility is 0).
+            EXPECT_NEAR(shadowed[c], expected.shadowed, 1e-5 * expected.shadowed)
+                << "caustics " << caustics << ", channel " << c;
+            if (std::string(caustics) == "off") {
+                EXPECT_NEAR(lit[c], expected.lit, 1e-5 * expected.lit) << c;
+            }
+        }
     }
 }
 
