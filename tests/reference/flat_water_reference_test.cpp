@@ -157,13 +157,21 @@ TEST(reference_flat_water, OutputIsIdenticalForAnyThreadCount) {
 }
 
 TEST(reference_flat_water, RefusesWhatItDoesNotComputeYetWithAClearMessage) {
-    Scene ocean = calm_scene(45.0);
-    ocean.water->waves.model = WaveModel::FftOcean;
+    // Receiver meshes under an FFT ocean (the FFT ocean alone renders: ocean_reference_test.cpp).
+    const Scene ocean = parse_scene(R"({
+      "camera": {"position": [0, 2, 0], "target": [0, 0, -1]},
+      "sun": {"elevation_deg": 45, "irradiance": [1, 1, 1]},
+      "sky": {"radiance": [0.1, 0.1, 0.1]},
+      "floor": {"height": -2, "half_extent": 8},
+      "water": {"level": 0, "half_extent": 8,
+                "waves": {"model": "fft", "resolution": 16, "patch_size": 8, "wind_speed": 5}},
+      "receivers": [{"type": "box", "half_size": [0.3, 0.1, 0.3], "translation": [0, -0.5, 0]}]
+    })", "ocean_with_box.json");
     try {
         render_reference(ocean, {4, 4, 1, {}});
-        FAIL() << "an FFT ocean was accepted";
+        FAIL() << "receiver meshes under an FFT ocean were accepted";
     } catch (const UserError& error) {
-        EXPECT_NE(std::string(error.what()).find("water.waves.model"), std::string::npos) << error.what();
+        EXPECT_NE(std::string(error.what()).find("ocean_with_box.json: receivers"), std::string::npos) << error.what();
     }
 }
 

@@ -6,6 +6,8 @@
 #include "engine/water/surface.hpp"
 #include "tools/reference/floor_caustics.hpp"
 #include "tools/reference/optics.hpp"
+#include "tests/reference/section4_flux.hpp"
+#include "tests/reference/sine_profile.hpp"
 #include "tests/reference/sine_scene.hpp"
 
 #include <gtest/gtest.h>
@@ -23,32 +25,6 @@ Scene sine_scene(double slope, double sun_elevation_deg) {
     return sine_scene_with_amplitude(slope * 0.5 / (2.0 * 3.14159265358979323846), sun_elevation_deg);
 }
 
-// PHYSICS.md section 4: Phi = E_s * integral of max(0, cos(theta_s) - u_h . grad h) T exp(-sigma_t l) dA_h,
-// by the midpoint rule on a grid much finer than the beams' (independent of their triangles).
-glm::dvec3 section4_flux(const Scene& scene, const WaterSurface& surface, int steps) {
-    const glm::dvec3 s = scene.sun.direction, toward_sun = -s;
-    const glm::dvec2 u_h{toward_sun.x, toward_sun.z};
-    const double extent = scene.water->half_extent, cell = 2.0 * extent / steps;
-    glm::dvec3 flux(0.0);
-    for (int j = 0; j < steps; ++j) {
-        for (int i = 0; i < steps; ++i) {
-            const double x = -extent + (i + 0.5) * cell, z = -extent + (j + 0.5) * cell;
-            const SurfacePoint p = surface.at_parameter(x, z);
-            const glm::dvec2 gradient{-p.normal.x / p.normal.y, -p.normal.z / p.normal.y};
-            const double projected = std::max(0.0, toward_sun.y - glm::dot(u_h, gradient));
-            const double cos_i = -glm::dot(s, p.normal);
-            if (projected <= 0.0 || cos_i <= 0.0) continue;
-            const glm::dvec3 t = *refract(s, p.normal, 1.0 / kIor);
-            const double path = (p.position.y - scene.floor.height) / -t.y;
-            const double transmittance = 1.0 - fresnel_reflectance(cos_i, 1.0, kIor);
-            const glm::dvec3 sigma_t = scene.medium.sigma_t();
-            flux += scene.sun.irradiance * (projected * transmittance * cell * cell) *
-                    glm::dvec3(std::exp(-sigma_t.x * path), std::exp(-sigma_t.y * path), std::exp(-sigma_t.z * path));
-        }
-    }
-    return flux;
-}
-
 TEST(reference_floor_caustics, FluxOnTheFloorEqualsTheSection4Integral) {
     for (double slope : {0.1, 0.3}) {
         for (double sun : {90.0, 30.0}) {  // sun 30 degrees above the horizon: 60 from the zenith
@@ -56,7 +32,8 @@ TEST(reference_floor_caustics, FluxOnTheFloorEqualsTheSection4Integral) {
             const Scene scene = sine_scene(slope, sun);
             const auto surface = make_surface(scene.water->waves, 0.0, 0.0);
             const FloorCausticMap map(scene, *surface, 512, 512);
-            const glm::dvec3 expected = section4_flux(scene, *surface, 2000);
+            const double extent = scene.water->half_extent;
+            const glm::dvec3 expected = section4_flux(scene, *surface, -extent, 2.0 * extent, 2000);
             for (int c = 0; c < 3; ++c) {
                 // PHYSICS.md: within 0.5%. The beams are flat triangles with their chord's
                 // normal (an O(h^2) error, h = 1/128 of the wavelength here) and the midpoint rule
@@ -84,32 +61,6 @@ TEST(reference_floor_caustics, FlatSurfaceBeamsGiveTheClosedFormIrradiance) {
     }
 }
 
-// PHYSICS.md section 5, h = A sin(kx), vertical sun: the texel-averaged floor irradiance,
-// computed here by an independent method: the exact 1-D map X(x) = x + (d + h) t_x / (-t_y)
-// sampled at 2^22 points per metre, each carrying its flux E_s T exp(-sigma_t l) dx into the
-// texel of its landing point (a histogram of the map, converging as dx -> 0).
-std::vector<double> sine_profile(double amplitude, double k, double depth, double sigma_t, double extent,
-                                 double floor_extent, int texels) {
-    std::vector<double> flux(texels, 0.0);
-    const double texel = 2.0 * floor_extent / texels;
-    const int samples = static_cast<int>(2.0 * extent * (1 << 22));
-    const double dx = 2.0 * extent / samples;
-    for (int i = 0; i < samples; ++i) {
-        const double x = -extent + (i + 0.5) * dx;
-        const double slope = amplitude * k * std::cos(k * x);
-        const double h = amplitude * std::sin(k * x);
-        const glm::dvec3 normal = glm::normalize(glm::dvec3(-slope, 1.0, 0.0));
-        const glm::dvec3 t = *refract({0.0, -1.0, 0.0}, normal, 1.0 / kIor);
-        const double path = (depth + h) / -t.y;
-        const double landing = x + path * t.x;
-        const double transmittance = 1.0 - fresnel_reflectance(normal.y, 1.0, kIor);
-        const int bin = static_cast<int>(std::floor((landing + floor_extent) / texel));
-        if (bin >= 0 && bin < texels) flux[bin] += transmittance * std::exp(-sigma_t * path) * dx;
-    }
-    for (double& f : flux) f /= texel;  // E_s = 1
-    return flux;
-}
-
 TEST(reference_floor_caustics, SineProfileMatchesSection5BeforeAtAndPastTheFocus) {
     const double wavelength = 0.5, k = 2.0 * 3.14159265358979323846 / wavelength, amplitude = 0.3 / k;  // A k = 0.3
     const double focal = 1.0 / ((1.0 - 1.0 / kIor) * amplitude * k * k);
@@ -133,7 +84,7 @@ TEST(reference_floor_caustics, SineProfileMatchesSection5BeforeAtAndPastTheFocus
         const auto surface = make_surface(scene.water->waves, 0.0, 0.0);
         const FloorCausticMap map(scene, *surface, texels, 1024);
         const std::vector<double> expected =
-            sine_profile(amplitude, k, depth, sigma_t, extent, floor_extent, texels);
+            sine_profile(amplitude, k, depth, sigma_t, extent, floor_extent, texels, kIor);
         // Compare texels whose light comes from well inside the water's extent (the edges
         // of the water lose or gain beams): |X| < 0.5 m, on the middle row in z.
         double difference = 0.0, total = 0.0;

@@ -5,21 +5,41 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <thread>
 
 namespace vkw::ref {
 
 FloorCausticMap::FloorCausticMap(const Scene& scene, const WaterSurface& surface, uint32_t texels_per_side,
                                  uint32_t cells_per_side)
+    : FloorCausticMap(scene, surface, texels_per_side, cells_per_side, Tile{0.0, scene.water->half_extent, false},
+                      Tile{0.0, scene.floor.half_extent, false}, scene.floor.height) {}
+
+FloorCausticMap::FloorCausticMap(const Scene& scene, const WaterSurface& surface, uint32_t texels_per_side,
+                                 uint32_t cells_per_side, double period)
+    : FloorCausticMap(scene, surface, texels_per_side, cells_per_side, period, scene.floor.height) {}
+
+FloorCausticMap::FloorCausticMap(const Scene& scene, const WaterSurface& surface, uint32_t texels_per_side,
+                                 uint32_t cells_per_side, double period, double plane_y)
+    : FloorCausticMap(scene, surface, texels_per_side, cells_per_side,
+                      period > 0.0 ? Tile{0.5 * period, 0.5 * period, true} : Tile{0.0, scene.water->half_extent, false},
+                      period > 0.0 ? Tile{0.5 * period, 0.5 * period, true} : Tile{0.0, scene.floor.half_extent, false},
+                      plane_y) {}
+
+FloorCausticMap::FloorCausticMap(const Scene& scene, const WaterSurface& surface, uint32_t texels_per_side,
+                                 uint32_t cells_per_side, const Tile& cells, const Tile& texels, double plane_y)
     : texels_(texels_per_side),
-      half_extent_(scene.floor.half_extent),
-      texel_size_(2.0 * scene.floor.half_extent / texels_per_side),
+      centre_(texels.centre),
+      half_extent_(texels.half_side),
+      texel_size_(2.0 * texels.half_side / texels_per_side),
+      periodic_(texels.periodic),
       irradiance_(size_t{texels_per_side} * texels_per_side, glm::dvec3(0.0)) {
     const glm::dvec3 s = scene.sun.direction;
     if (s.y >= 0.0) return;  // sun below the horizon: no caustics
     const double ior = scene.water->ior;
-    const double floor_y = scene.floor.height;
+    const double floor_y = plane_y;
     const glm::dvec3 sigma_t = scene.medium.sigma_t();
-    const double extent = scene.water->half_extent;
+    const double extent = cells.half_side;
     const uint32_t m = cells_per_side;
     // The surface's vertices and their refracted rays, one row at a time.
     struct Vertex {
@@ -29,12 +49,13 @@ FloorCausticMap::FloorCausticMap(const Scene& scene, const WaterSurface& surface
         bool valid;
     };
     auto vertex = [&](uint32_t i, uint32_t j) {
-        const double x0 = extent * (2.0 * i - m) / m, z0 = extent * (2.0 * j - m) / m;
+        const double x0 = cells.centre + extent * (2.0 * i - m) / m, z0 = cells.centre + extent * (2.0 * j - m) / m;
         const SurfacePoint p = surface.at_parameter(x0, z0);
         Vertex v{p.position, {}, 0.0, false};
         const auto t = refract(s, p.normal, 1.0 / ior);
         if (!t || t->y > -1e-9) return v;  // a ray that does not go down reaches no floor
         v.path = (p.position.y - floor_y) / -t->y;
+        if (v.path < 0.0) return v;  // a vertex below the plane reaches none of it
         const glm::dvec3 hit = p.position + v.path * *t;
         v.floor_hit = {hit.x, hit.z};
         v.valid = true;
@@ -72,39 +93,53 @@ FloorCausticMap::FloorCausticMap(const Scene& scene, const WaterSurface& surface
     }
 }
 
+int64_t FloorCausticMap::texel_of(double coordinate) const {
+    return static_cast<int64_t>(std::floor((coordinate - centre_ + half_extent_) / texel_size_));
+}
+
+int64_t FloorCausticMap::texel_index(int64_t x, int64_t z) const {
+    const int64_t n = texels_;
+    if (periodic_) {
+        x = ((x % n) + n) % n;
+        z = ((z % n) + n) % n;
+    } else if (x < 0 || z < 0 || x >= n || z >= n) {
+        return -1;
+    }
+    return z * n + x;
+}
+
 void FloorCausticMap::deposit(const glm::dvec2 footprint[3], const glm::dvec3& flux) {
     const Polygon triangle{footprint[0], footprint[1], footprint[2]};
     const double footprint_area = area(triangle);
-    auto texel_of = [&](double coordinate) {
-        return static_cast<int64_t>(std::floor((coordinate + half_extent_) / texel_size_));
-    };
-    const glm::dvec2 lo = glm::min(glm::min(footprint[0], footprint[1]), footprint[2]);
-    const glm::dvec2 hi = glm::max(glm::max(footprint[0], footprint[1]), footprint[2]);
-    const int64_t x0 = std::max<int64_t>(0, texel_of(lo.x)), x1 = std::min<int64_t>(texels_ - 1, texel_of(hi.x));
-    const int64_t z0 = std::max<int64_t>(0, texel_of(lo.y)), z1 = std::min<int64_t>(texels_ - 1, texel_of(hi.y));
     const double texel_area = texel_size_ * texel_size_;
     if (footprint_area < 1e-30) {
         // A footprint collapsed to a point or a segment (a focus): all its flux lands in
         // the texel of its centroid.
         const glm::dvec2 centre = (footprint[0] + footprint[1] + footprint[2]) / 3.0;
-        const int64_t x = texel_of(centre.x), z = texel_of(centre.y);
-        if (x >= 0 && z >= 0 && x < texels_ && z < texels_) irradiance_[size_t(z) * texels_ + size_t(x)] += flux / texel_area;
+        const int64_t index = texel_index(texel_of(centre.x), texel_of(centre.y));
+        if (index >= 0) irradiance_[size_t(index)] += flux / texel_area;
         return;
     }
+    const glm::dvec2 lo = glm::min(glm::min(footprint[0], footprint[1]), footprint[2]);
+    const glm::dvec2 hi = glm::max(glm::max(footprint[0], footprint[1]), footprint[2]);
+    // On a periodic map the texels past the tile's edge are those of the next period.
+    const int64_t first = 0, last = texels_ - 1;
+    const int64_t x0 = periodic_ ? texel_of(lo.x) : std::max(first, texel_of(lo.x));
+    const int64_t x1 = periodic_ ? texel_of(hi.x) : std::min(last, texel_of(hi.x));
+    const int64_t z0 = periodic_ ? texel_of(lo.y) : std::max(first, texel_of(lo.y));
+    const int64_t z1 = periodic_ ? texel_of(hi.y) : std::min(last, texel_of(hi.y));
     for (int64_t z = z0; z <= z1; ++z) {
         for (int64_t x = x0; x <= x1; ++x) {
-            const glm::dvec2 corner(-half_extent_ + x * texel_size_, -half_extent_ + z * texel_size_);
+            const glm::dvec2 corner(centre_ - half_extent_ + x * texel_size_, centre_ - half_extent_ + z * texel_size_);
             const double overlap = overlap_with_square(triangle, corner, texel_size_);
-            if (overlap > 0.0) irradiance_[size_t(z) * texels_ + size_t(x)] += flux * (overlap / footprint_area / texel_area);
+            if (overlap > 0.0) irradiance_[size_t(texel_index(x, z))] += flux * (overlap / footprint_area / texel_area);
         }
     }
 }
 
 glm::dvec3 FloorCausticMap::irradiance(double x, double z) const {
-    const int64_t i = static_cast<int64_t>(std::floor((x + half_extent_) / texel_size_));
-    const int64_t j = static_cast<int64_t>(std::floor((z + half_extent_) / texel_size_));
-    if (i < 0 || j < 0 || i >= texels_ || j >= texels_) return glm::dvec3(0.0);
-    return irradiance_[size_t(j) * texels_ + size_t(i)];
+    const int64_t index = texel_index(texel_of(x), texel_of(z));
+    return index >= 0 ? irradiance_[size_t(index)] : glm::dvec3(0.0);
 }
 
 glm::dvec3 FloorCausticMap::total_flux() const {
@@ -114,10 +149,17 @@ glm::dvec3 FloorCausticMap::total_flux() const {
 }
 
 RefinedFloorCaustics refine_floor_caustics(const Scene& scene, const WaterSurface& surface, uint32_t texels_per_side,
-                                           uint32_t coarse_cells_per_side) {
-    const FloorCausticMap coarse(scene, surface, texels_per_side, coarse_cells_per_side);
+                                           uint32_t coarse_cells_per_side, double period) {
+    auto build = [&](uint32_t cells) {
+        return period > 0.0 ? std::make_unique<FloorCausticMap>(scene, surface, texels_per_side, cells, period)
+                            : std::make_unique<FloorCausticMap>(scene, surface, texels_per_side, cells);
+    };
+    // The two maps are independent: the finer one is built on a thread of its own.
     RefinedFloorCaustics refined;
-    refined.map = std::make_unique<FloorCausticMap>(scene, surface, texels_per_side, 2 * coarse_cells_per_side);
+    std::thread fine([&] { refined.map = build(2 * coarse_cells_per_side); });
+    const std::unique_ptr<FloorCausticMap> coarse_map = build(coarse_cells_per_side);
+    fine.join();
+    const FloorCausticMap& coarse = *coarse_map;
     double mean = 0.0;
     for (const glm::dvec3& e : coarse.texels()) mean += e.x + e.y + e.z;
     mean /= 3.0 * coarse.texels().size();

@@ -23,7 +23,9 @@ ImageRGBA32F render_reference(const Scene& scene, const ReferenceOptions& option
     const WaterTransport transport(scene, options.quality);
     if (report) {
         report->caustic_refinement_change = transport.caustic_refinement_change();
-        report->flat_beam_in_scatter = scene.water && scene.water->waves.model != WaveModel::Flat;
+        report->approximations = transport.approximations();
+        report->surface_height_error_bound = transport.surface_height_error_bound();
+        report->surface_slope_error_bound = transport.surface_slope_error_bound();
     }
     ImageRGBA32F image;
     image.width = static_cast<int>(options.width);

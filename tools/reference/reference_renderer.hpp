@@ -12,6 +12,8 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace vkw::ref {
 
@@ -30,7 +32,9 @@ Ray camera_ray(const Camera& camera, uint32_t width, uint32_t height, double x, 
 // What the reference knows of its own error.
 struct ReferenceReport {
     double caustic_refinement_change = 0.0;  // relative RMS change of the floor caustics on refinement
-    bool flat_beam_in_scatter = false;       // wavy water: in-scatter follows the flat surface's beam
+    std::vector<std::string> approximations;  // what the image keeps approximate, one sentence each
+    double surface_height_error_bound = 0.0;   // m: the FFT ocean's sampled series (0: exact surfaces)
+    double surface_slope_error_bound = 0.0;
 };
 
 ImageRGBA32F render_reference(const Scene& scene, const ReferenceOptions& options, ReferenceReport* report = nullptr);

@@ -2,6 +2,7 @@
 
 #include "engine/core/errors.hpp"
 #include "engine/scene/builtin_meshes.hpp"
+#include "engine/water/sampled_ocean_surface.hpp"
 #include "tools/reference/optics.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -29,11 +30,7 @@ WaterTransport::~WaterTransport() = default;
 
 WaterTransport::WaterTransport(const Scene& scene, const Quality& quality) : scene_(scene) {
     const bool wavy = scene.water && scene.water->waves.model != WaveModel::Flat;
-    if (wavy && scene.water->waves.model == WaveModel::FftOcean) {
-        throw UserError(scene.source.string() +
-                        ": water.waves.model: the reference renderer does not compute the FFT ocean yet (its exact "
-                        "evaluation is too slow; accepted now: \"flat\" or \"sum\")");
-    }
+    const bool ocean = wavy && scene.water->waves.model == WaveModel::FftOcean;
     // The floor joins the receivers as one more mesh.
     Mesh floor = make_plane_mesh({scene.floor.half_extent, scene.floor.half_extent});
     transform_mesh(floor, glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, scene.floor.height, 0.0)));
@@ -61,7 +58,9 @@ WaterTransport::WaterTransport(const Scene& scene, const Quality& quality) : sce
         const double transmittance = 1.0 - fresnel_reflectance(cos_s, 1.0, ior_);
         e_perp0_ = scene.sun.irradiance * (cos_s * transmittance / cos_t);
     }
-    if (wavy) {
+    if (ocean) {
+        build_ocean(quality);
+    } else if (wavy) {
         surface_ = make_surface(scene.water->waves, level_, scene.water->time);
         max_amplitude_ = surface_->max_amplitude();
         shortest_wavelength_ = std::numeric_limits<double>::infinity();
@@ -70,10 +69,7 @@ WaterTransport::WaterTransport(const Scene& scene, const Quality& quality) : sce
         }
         const auto cells = static_cast<uint32_t>(
             std::ceil(2.0 * half_extent_ / shortest_wavelength_ * quality.cells_per_wavelength));
-        const bool meshes_under_water = std::any_of(scene.receivers.begin(), scene.receivers.end(), [&](const Receiver& r) {
-            return r.mesh.bounds_min.y < level_ + max_amplitude_;
-        });
-        if (meshes_under_water) {
+        if (meshes_under_water()) {
             // Meshes under the waves: every receiver (the floor too, so that the meshes shadow
             // it) takes the beams averaged over a patch the size of the floor map's texel, at
             // the floor map's coarse cell density (memory: 56 bytes per vertex) and at half
@@ -88,9 +84,73 @@ WaterTransport::WaterTransport(const Scene& scene, const Quality& quality) : sce
             caustic_refinement_change_ = caustics.relative_rms_change;
         }
     }
+    if (wavy && !quality.caustic_in_scatter) {
+        approximations_.push_back("in-scatter along view rays follows the flat surface's beam (no godray modulation)");
+    } else if (wavy) {
+        CausticInScatter::Settings godrays;
+        godrays.levels = quality.in_scatter_levels;
+        if (ocean) {
+            godrays.texels_per_side = quality.ocean_in_scatter_texels;
+            godrays.cells_per_side = quality.ocean_in_scatter_cells;
+            godrays.period = static_cast<const SampledOceanSurface&>(*surface_).period();
+        } else {
+            godrays.texels_per_side = quality.in_scatter_texels;
+            godrays.cells_per_side = static_cast<uint32_t>(
+                std::ceil(2.0 * half_extent_ / shortest_wavelength_ * quality.in_scatter_cells_per_wavelength));
+        }
+        in_scatter_ = std::make_unique<CausticInScatter>(scene, *surface_, max_amplitude_, godrays);
+        approximations_.push_back(
+            "in-scatter under waves: the beam-mapped irradiance on " + std::to_string(godrays.levels) +
+            " horizontal planes from the lowest trough to the floor (" + std::to_string(godrays.texels_per_side) +
+            " texels, " + std::to_string(godrays.cells_per_side) +
+            " surface cells per side), linear in depth between them, the top plane's above it; each beam's "
+            "direction taken as the flat refracted one (E_perp = E_h / cos(theta_t), the phase function at t); "
+            "not shadowed by meshes");
+    }
     sky_average_ = sky_average_radiance(scene.sky);
     hemispherical_transmittance_ = hemispherical_transmittance(ior_);
     sun_disk_cos_ = std::cos(kSunDiskAngularRadiusDeg * std::numbers::pi / 180.0);
+}
+
+bool WaterTransport::meshes_under_water() const {
+    return std::any_of(scene_.receivers.begin(), scene_.receivers.end(),
+                       [&](const Receiver& r) { return r.mesh.bounds_min.y < level_ + max_amplitude_; });
+}
+
+void WaterTransport::build_ocean(const Quality& quality) {
+    const WaveSettings& waves = scene_.water->waves;
+    const FftOceanSpectrum spectrum = make_ocean_spectrum(waves.ocean, waves.seed);
+    auto ocean = std::make_unique<SampledOceanSurface>(spectrum, waves.ocean.choppiness, level_, scene_.water->time,
+                                                       quality.ocean_padding);
+    max_amplitude_ = ocean->max_amplitude();
+    shortest_wavelength_ = ocean->shortest_wavelength();
+    // Between samples the slope may exceed the sampled maximum (by its interpolation error,
+    // and by the true slope's own rise between samples P n / (patch / shortest wavelength)
+    // >= 5 per shortest wave apart): 1.5 times the sampled maximum bounds it with room.
+    crossing_slope_ = 1.5 * ocean->max_sample_slope();
+    surface_height_error_bound_ = ocean->error_bound()[kOceanHeight];
+    surface_slope_error_bound_ = std::max(ocean->error_bound()[kOceanSlopeX], ocean->error_bound()[kOceanSlopeZ]);
+    const double period = ocean->period();
+    surface_ = std::move(ocean);
+    if (meshes_under_water()) {
+        throw UserError(scene_.source.string() +
+                        ": receivers: the reference renderer does not compute receiver meshes under an FFT ocean yet "
+                        "(accepted: meshes entirely above y = " + std::to_string(level_ + max_amplitude_) +
+                        ", the highest crest)");
+    }
+    RefinedFloorCaustics caustics = refine_floor_caustics(scene_, *surface_, quality.ocean_floor_texels,
+                                                          quality.ocean_cells_per_period, period);
+    floor_caustics_ = std::move(caustics.map);
+    caustic_refinement_change_ = caustics.relative_rms_change;
+    // Beams that reach the floor near the water's edge may have entered beyond it, where the
+    // periodic map still counts a surface: within the largest sideways drift of a beam
+    // (refracted at the steepest sampled slope) over the water's depth, plus the amplitude.
+    approximations_.push_back(
+        "FFT ocean: the surface is the zero-padded FFT samples (padding " + std::to_string(quality.ocean_padding) +
+        ") with Hermite patches, error bound " + std::to_string(surface_height_error_bound_) + " m in height, " +
+        std::to_string(surface_slope_error_bound_) +
+        " in slope; the floor's caustics are one period's map repeated, also near the water's edge where some "
+        "beams would have entered beyond it");
 }
 
 BeamIrradiance::Visibility WaterTransport::beam_visibility() const {
@@ -178,11 +238,14 @@ std::optional<WaterTransport::WaterHit> WaterTransport::water_surface_hit(const 
     };
     const double horizontal = std::hypot(ray.direction.x, ray.direction.z);
     const double step = std::min((t1 - t0) / 4.0, shortest_wavelength_ / 64.0 / std::max(horizontal, 1e-12));
+    // |df/dt| <= |d_y| + |d_h| max|grad h|: no crossing lies within |f| / that of a point.
+    const double lipschitz = std::abs(ray.direction.y) + horizontal * crossing_slope_;
     const double start_sign = f(t0) > 0.0 ? 1.0 : -1.0;
     double previous = t0;
-    for (double t = t0 + step; previous < t1; t += step) {
+    for (double t = t0 + step; previous < t1;) {
         const double here = std::min(t, t1);
-        if (f(here) * start_sign <= 0.0) {
+        const double f_here = f(here);
+        if (f_here * start_sign <= 0.0) {
             double lo = previous, hi = here;
             for (int i = 0; i < 200 && hi - lo > 1e-12; ++i) {
                 const double mid = 0.5 * (lo + hi);
@@ -194,6 +257,7 @@ std::optional<WaterTransport::WaterHit> WaterTransport::water_surface_hit(const 
             return WaterHit{hi, surface_->at_parameter(parameter.x, parameter.y).normal};
         }
         previous = here;
+        t = here + (crossing_slope_ > 0.0 ? std::max(step, std::abs(f_here) / lipschitz) : step);
     }
     return std::nullopt;
 }
@@ -265,8 +329,11 @@ glm::dvec3 WaterTransport::radiance_in_air(const Ray& ray) const {
     return radiance;
 }
 
-glm::dvec3 WaterTransport::in_water_segment(double z0, double length, const glm::dvec3& direction,
+glm::dvec3 WaterTransport::in_water_segment(const glm::dvec3& origin, double length, const glm::dvec3& direction,
                                                 const glm::dvec3& behind) const {
+    if (in_scatter_) return in_scatter_->segment_radiance(origin, direction, length, behind);
+    // A segment that starts in a crest above the mean level uses depth 0.
+    const double z0 = std::max(0.0, level_ - origin.y);
     glm::dvec3 radiance;
     const glm::dvec3 sigma_t = scene_.medium.sigma_t();
     for (int c = 0; c < 3; ++c) {
@@ -284,9 +351,7 @@ glm::dvec3 WaterTransport::radiance_in_water_to_receiver(const Ray& ray, glm::dv
     const double length = hit ? hit->distance : 0.0;
     const glm::dvec3 behind =
         hit ? receiver_radiance(ray.origin + hit->distance * ray.direction, *hit, caustic) : glm::dvec3(0.0);
-    // A segment that starts in a crest above the mean level uses depth 0: the in-scatter
-    // follows the flat surface's beam (the stated approximation for wavy water).
-    return in_water_segment(std::max(0.0, level_ - ray.origin.y), length, ray.direction, behind);
+    return in_water_segment(ray.origin, length, ray.direction, behind);
 }
 
 PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray) const {
@@ -324,15 +389,14 @@ PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray) const {
     }
 
     // Camera in the water.
-    const double z0 = std::max(0.0, level_ - ray.origin.y);
     if (receiver) {
         const glm::dvec3 behind =
             receiver_radiance(ray.origin + receiver->distance * ray.direction, *receiver, &pixel.caustic);
-        pixel.radiance = in_water_segment(z0, receiver->distance, ray.direction, behind);
+        pixel.radiance = in_water_segment(ray.origin, receiver->distance, ray.direction, behind);
         return pixel;
     }
     if (to_surface == kInfinity) {
-        pixel.radiance = in_water_segment(z0, 0.0, ray.direction, glm::dvec3(0.0));
+        pixel.radiance = in_water_segment(ray.origin, 0.0, ray.direction, glm::dvec3(0.0));
         return pixel;
     }
     // The surface from below: Snell's window, total internal reflection outside it.
@@ -345,7 +409,7 @@ PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray) const {
     if (const auto refracted = refract(ray.direction, down, ior_)) {
         at_surface += (1.0 - reflectance) * ior_ * ior_ * radiance_in_air({p - kOffset * down, *refracted});
     }
-    pixel.radiance = in_water_segment(z0, to_surface, ray.direction, at_surface);
+    pixel.radiance = in_water_segment(ray.origin, to_surface, ray.direction, at_surface);
     return pixel;
 }
 

@@ -11,20 +11,29 @@
 // to 1e-12 m, with the exact normal; the floor's sun irradiance is the beam-mapped
 // caustic map of floor_caustics.hpp; with receiver meshes under the waves, every receiver's
 // (the floor's too) comes from the beams of beam_irradiance.hpp at its points, shadowed by
-// the meshes. Approximation kept (stated in the manifest): the in-scatter along view rays
-// uses the flat surface's beam, not the caustic-modulated one (godrays). Not computed yet,
-// refused with a message: the FFT ocean (its exact evaluation is too slow).
+// the meshes. The in-scatter along view rays follows the caustics too with
+// Quality::caustic_in_scatter (caustic_in_scatter.hpp, with the approximations it states; not
+// shadowed by meshes, as the flat in-scatter is not), else the flat surface's beam.
+// The FFT ocean: its series is evaluated through the zero-padded FFT samples and Hermite
+// patches of engine/water/sampled_ocean_surface.hpp (a bounded, measured error); the view
+// ray's crossing is bracketed by steps of |f| / L (f the ray's height above the surface, L
+// its Lipschitz bound from the largest sampled slope, times 1.5) but never shorter than
+// 1/64 of the shortest wavelength, then bisected; the floor's caustics come from the
+// periodic floor map of one period (floor_caustics.hpp). Refused with a message for now:
+// receiver meshes under an FFT ocean.
 #pragma once
 
 #include "engine/scene/scene.hpp"
 #include "engine/water/surface.hpp"
 #include "tools/reference/bvh.hpp"
 #include "tools/reference/beam_irradiance.hpp"
+#include "tools/reference/caustic_in_scatter.hpp"
 #include "tools/reference/floor_caustics.hpp"
 
 #include <glm/glm.hpp>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace vkw::ref {
@@ -40,6 +49,24 @@ public:
     struct Quality {
         uint32_t floor_texels = 2048;        // texels per side of the floor's caustic map
         double cells_per_wavelength = 32.0;  // surface cells per shortest wavelength (coarse map; the fine one doubles it)
+        // The FFT ocean: the padding of its sampled series (sampled_ocean_surface.hpp), and its
+        // periodic floor map's texels and (coarse) surface cells per period.
+        uint32_t ocean_padding = 4;
+        uint32_t ocean_floor_texels = 1024;
+        uint32_t ocean_cells_per_period = 4096;
+        // Under waves, the in-scatter modulated by the caustics (caustic_in_scatter.hpp, the
+        // model's godrays); off: the flat surface's beam (section 6's closed form), what the
+        // real-time renderer computes without its godray passes (the tests that compare the two
+        // that way keep it off; `vkwater reference` turns it on).
+        bool caustic_in_scatter = false;
+        // The in-scatter's planes under waves: how many, their maps'
+        // texels per side (over the floor, or per period for the FFT ocean) and surface cells
+        // (per shortest wavelength, or per period for the FFT ocean).
+        uint32_t in_scatter_levels = 16;
+        uint32_t in_scatter_texels = 512;
+        double in_scatter_cells_per_wavelength = 16.0;
+        uint32_t ocean_in_scatter_texels = 1024;
+        uint32_t ocean_in_scatter_cells = 1024;
     };
 
     // Throws UserError when the scene needs what this class does not compute.
@@ -50,6 +77,12 @@ public:
     // Estimated remaining error of the floor caustics (relative RMS change on refinement);
     // 0 for flat water, where they are closed form.
     double caustic_refinement_change() const { return caustic_refinement_change_; }
+    // The approximations this scene's image keeps, one sentence each (for the manifest).
+    const std::vector<std::string>& approximations() const { return approximations_; }
+    // The FFT ocean's sampled series: the bound on its error in height (m) and in slope
+    // (sampled_ocean_surface.hpp); 0 for other surfaces.
+    double surface_height_error_bound() const { return surface_height_error_bound_; }
+    double surface_slope_error_bound() const { return surface_slope_error_bound_; }
 
     PixelRadiance trace_camera_ray(const Ray& ray) const;
 
@@ -79,10 +112,16 @@ private:
     // Radiance arriving at `start` along `ray` inside the water, up to the receiver it
     // meets (no surface event: the ray's one surface event is already spent).
     glm::dvec3 radiance_in_water_to_receiver(const Ray& ray, glm::dvec3* caustic) const;
-    glm::dvec3 in_water_segment(double z0, double length, const glm::dvec3& direction,
+    // Radiance arriving at `origin` in the water along `direction` over `length`, `behind` at
+    // its far end: attenuation and in-scatter (closed form under flat water, modulated by the
+    // caustics under waves).
+    glm::dvec3 in_water_segment(const glm::dvec3& origin, double length, const glm::dvec3& direction,
                                 const glm::dvec3& behind) const;
     bool sun_blocked_in_air(const glm::dvec3& point) const;
     BeamIrradiance::Visibility beam_visibility() const;
+    bool meshes_under_water() const;  // any receiver mesh reaching below the highest crest
+    // The FFT ocean's sampled surface, its crossing slope and its periodic floor caustics.
+    void build_ocean(const Quality& quality);
     // Relative RMS change of the receivers' sun irradiance from `coarse` to the beams in use
     // (RMS over the mean, the worst 0.1% of points dropped).
     double estimate_beam_refinement(const BeamIrradiance& coarse) const;
@@ -94,8 +133,14 @@ private:
     double level_ = 0.0, half_extent_ = 0.0, bottom_ = 0.0, ior_ = 1.0;
     bool has_water_ = false;
     std::unique_ptr<WaterSurface> surface_;            // wavy water only
+    // Steps along view rays: |f| / (|d_y| + |d_h| crossing_slope_) when crossing_slope_ > 0
+    // (the FFT ocean), else the fixed step of 1/64 of the shortest wavelength.
+    double crossing_slope_ = 0.0;
+    std::vector<std::string> approximations_;
+    double surface_height_error_bound_ = 0.0, surface_slope_error_bound_ = 0.0;
     std::unique_ptr<FloorCausticMap> floor_caustics_;  // wavy water over the floor alone
     std::unique_ptr<BeamIrradiance> beams_;            // wavy water with meshes under it
+    std::unique_ptr<CausticInScatter> in_scatter_;     // wavy water: the godrays
     double caustic_refinement_change_ = 0.0;
     double shortest_wavelength_ = 0.0;
     double max_amplitude_ = 0.0;

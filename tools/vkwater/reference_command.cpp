@@ -47,7 +47,7 @@ void record_in_manifest(const ReferenceArgs& args, double seconds, const ref::Re
     }
     const std::filesystem::path scene = args.scene;
     const std::filesystem::path base = std::filesystem::path(args.manifest).parent_path();
-    manifest[scene.filename().string()] = {
+    nlohmann::ordered_json entry = {
         {"scene", std::filesystem::relative(scene, base).generic_string()},
         {"scene_hash", ref::scene_file_hash(scene)},
         {"reference", std::filesystem::relative(args.out, base).generic_string()},
@@ -58,11 +58,14 @@ void record_in_manifest(const ReferenceArgs& args, double seconds, const ref::Re
         {"samples_per_pixel", 1},
         {"estimated_rel_mse", kClosedFormRelMse + report.caustic_refinement_change * report.caustic_refinement_change},
         {"caustic_refinement_change", report.caustic_refinement_change},
-        {"approximations", report.flat_beam_in_scatter
-                               ? nlohmann::ordered_json::array({"in-scatter along view rays follows the flat "
-                                                                "surface's beam (no godray modulation)"})
-                               : nlohmann::ordered_json::array()},
+        {"approximations", report.approximations},
         {"seconds", seconds}};
+    if (report.surface_height_error_bound > 0.0) {
+        // The FFT ocean's sampled surface: its error bound (the surface is not exact).
+        entry["surface_height_error_bound_m"] = report.surface_height_error_bound;
+        entry["surface_slope_error_bound"] = report.surface_slope_error_bound;
+    }
+    manifest[scene.filename().string()] = std::move(entry);
     std::ofstream(args.manifest) << manifest.dump(2) << "\n";
 }
 
@@ -73,6 +76,7 @@ int run_reference(const ReferenceArgs& args) {
     options.width = args.width;
     options.height = args.height;
     options.threads = args.threads;
+    options.quality.caustic_in_scatter = true;  // the model's godrays under waves
     // A progress bar only on a terminal: logs and CI output stay clean.
     if (::isatty(STDERR_FILENO)) {
         options.progress = [](double fraction) {
