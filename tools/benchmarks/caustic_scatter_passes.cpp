@@ -1,0 +1,72 @@
+// The scatter-only benchmark passes (caustic_scatter_passes.hpp).
+#include "tools/benchmarks/caustic_scatter_passes.hpp"
+
+#include "engine/core/errors.hpp"
+#include "engine/framegraph/pass_context.hpp"
+#include "engine/vk/context.hpp"
+#include "passes/caustics_bands.hpp"
+#include "passes/zeroed_buffer.hpp"
+
+#include <algorithm>
+
+namespace vkwbench {
+namespace {
+
+using namespace vkw;
+
+}  // namespace
+
+ScatterPush scatter_push(uint32_t resolution, const passes::CausticMapFrame& frame) {
+    const uint32_t requested = resolution + 2;
+    return {resolution, frame.width, frame.height, (frame.width - std::min(frame.width, requested)) / 2,
+            (frame.height - std::min(frame.height, requested)) / 2};
+}
+
+std::string scatter_pass_name(ScatterKind kind) {
+    return kind == ScatterKind::FixedPoint64 ? "scatter int64 fixed point" : "scatter float32 CAS";
+}
+
+fg::BufferHandle add_caustic_scatter_pass(fg::FrameGraph& graph, ScatterKind kind, uint32_t resolution,
+                                          const passes::CausticMapFrame& frame) {
+    const bool fixed = kind == ScatterKind::FixedPoint64;
+    // The fixed-point target is the photon pass's flux buffer (header, then three uint64 per
+    // texel); the float one holds three floats per texel.
+    const VkDeviceSize header = fixed ? passes::kCausticFluxHeaderBytes : 0;
+    const VkDeviceSize texels = VkDeviceSize{frame.width} * frame.height;
+    const VkDeviceSize bytes = header + texels * (fixed ? passes::kCausticTexelBytes : 3 * sizeof(float));
+    const std::string name = scatter_pass_name(kind);
+    const fg::BufferHandle cleared = passes::add_zeroed_buffer_pass(graph, name + " clear", name + " target", bytes);
+
+    const ScatterPush push = scatter_push(resolution, frame);
+    struct Data {
+        fg::BufferHandle target;
+    };
+    const auto& data = graph.add_pass<Data>(
+        name, fg::PassKind::Compute,
+        [&](fg::PassBuilder& builder, Data& d) {
+            d.target = builder.read_write_storage(cleared, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+        },
+        [push, fixed, header, bytes, name](const Data& d, fg::PassContext& context) {
+            const VkDeviceSize range = bytes - header;
+            if (range > context.context().properties().limits.maxStorageBufferRange) {
+                throw InternalError(name + ": a map of " + std::to_string(push.width) + " x " +
+                                    std::to_string(push.height) + " texels exceeds one storage-buffer binding");
+            }
+            ComputePipelineDesc desc;
+            desc.shader = fixed ? "caustics/bench/caustic_scatter_fixed.comp" : "caustics/bench/caustic_scatter_float_cas.comp";
+            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
+            desc.layout.push_constant_bytes = sizeof(ScatterPush);
+            const Pipeline& pipeline = context.pipeline(desc.shader, desc);
+            fg::DescriptorBinding target = context.storage_buffer(0, d.target);
+            target.buffer.offset = header;
+            target.buffer.range = range;
+            context.bind(pipeline, {target});
+            context.push_constants(pipeline, push);
+            const uint32_t groups = (push.resolution + kScatterGroupSide - 1) / kScatterGroupSide;
+            vkCmdDispatch(context.cmd(), groups, groups, 1);
+        });
+    graph.request_output(data.target);
+    return data.target;
+}
+
+}  // namespace vkwbench
