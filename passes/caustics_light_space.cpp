@@ -81,7 +81,11 @@ CausticMapFrame fit_caustic_map(const CausticInputs& in) {
     // and as many more as the crests' shift along t and the margin need on each side.
     const double texel = 2.0 * in.half_extent / double(in.map_width - 2);
     const glm::dvec2 reach = in.max_amplitude * glm::abs(shear) + glm::dvec2(in.fit_margin);
-    const glm::uvec2 extra(std::ceil(reach.x / texel - 1e-9), std::ceil(reach.y / texel - 1e-9));
+    // The adaptive kernel reaches up to kMaxSplatHalfWidth texels from its photon, the bilinear
+    // one a texel (the border below): the difference is added so edge photons keep all their taps.
+    const uint32_t kernel_reach = in.kernel == CausticKernel::Adaptive ? kMaxSplatHalfWidth - 1 : 0;
+    const glm::uvec2 extra(std::ceil(reach.x / texel - 1e-9) + kernel_reach,
+                           std::ceil(reach.y / texel - 1e-9) + kernel_reach);
     f.width = in.map_width + 2 * extra.x;
     f.height = in.map_height + 2 * extra.y;
     if (f.width > kMaxMapSide || f.height > kMaxMapSide) {

@@ -13,8 +13,9 @@
 //   lattice and the texels) and under waves only the waves' deflection moves it. A texel's area
 //   normal to t is A_ls = texel_x texel_z cos(theta_t).
 // - fit: the water's extent, plus as many texels on each side as the crests' shift along t
-//   (max_amplitude |t.xz / t.y|) and fit_margin need, plus one texel of border, so the 2x2
-//   kernel of an edge photon stays on the map. The map is therefore wider than the requested
+//   (max_amplitude |t.xz / t.y|) and fit_margin need, plus a border as wide as the splat
+//   kernel reaches (one texel for the bilinear 2x2, kMaxSplatHalfWidth for the adaptive one),
+//   so the kernel of an edge photon stays on the map. The map is therefore wider than the requested
 //   W x H when the water has waves (CausticMapFrame::width, height).
 // - fixed point: the map accumulates flux in uint64 units of LSB_c (per channel c), with
 //     LSB_c = max(1e-9 Phi_flat_c, Phi_in_c / 2^62),
@@ -28,12 +29,16 @@
 #pragma once
 
 #include "engine/framegraph/frame_graph.hpp"
+#include "engine/scene/scene.hpp"
 
 #include <glm/glm.hpp>
 
 #include <cstdint>
 
 namespace vkw::passes {
+
+// The adaptive splat's largest half-width, texels (kMaxSplatHalfWidth of caustic_splat.glsl).
+constexpr uint32_t kMaxSplatHalfWidth = 4;
 
 struct CausticInputs {
     fg::BufferHandle surface;             // the vertex grid of add_water_surface_pass
@@ -43,6 +48,7 @@ struct CausticInputs {
     double max_amplitude = 0.0;           // a bound on |h| (WaterSurface::max_amplitude), for the fit
     uint32_t sub_photons = 1;             // S: S x S photons per cell (S = 1: one per cell)
     bool jitter = false;                  // photons leave from hashed points of their sub-cells
+    CausticKernel kernel = CausticKernel::Bilinear;  // the splat (shaders/caustics/caustic_splat.glsl)
     glm::dvec3 sun_direction{0.0, -1.0, 0.0};  // unit, the direction the sunlight travels
     glm::dvec3 sun_irradiance{1.0};       // E_s per RGB, W m^-2 normal to the beam
     double ior = 1.333;                   // n of the water, [1, 2]

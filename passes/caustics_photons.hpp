@@ -4,7 +4,8 @@
 // refracts them with the exact Fresnel of common/fresnel.glsl, carries them to the floor plane,
 // and splats each photon's flux
 //   Phi = E_s max(0, -s.a) T(theta_i) exp(-sigma_t l)      (a: the sub-cell's vector area)
-// with a 2x2 bilinear kernel (weights sum to one exactly, in integers) into the light-space
+// with a tent kernel (caustic_splat.glsl: the 2x2 bilinear one, or as wide as the photon's
+// neighbours land apart; its taps sum to the photon's flux exactly, in integers) into the light-space
 // caustic flux map of fit_caustic_map, accumulated with uint64 fixed-point atomics
 // (caustics_light_space.hpp gives the LSB and the headroom), so two runs are bit-identical.
 // Dropped photons: the cell faces away from the sun, the refracted ray points up
@@ -14,7 +15,7 @@
 // the water as its beam half sees them along the flat-water refracted sun (the caustic map's own
 // direction), found by shaders/caustics/caustic_receiver_hit.glsl. A photon whose ray leaves that
 // map continues to the floor plane (the map covers every mesh under the water, so it misses none).
-// Not yet (issue 7): density-adaptive kernel size, jitter.
+// Options (CausticInputs): S x S photons per cell, jitter, the kernel.
 //
 // Chunked: cell rows are dispatched in chunks whose vertex rows fit one binding, map rows in bands
 // that fit one binding (caustics_bands.hpp); every dispatch stays within 65535 groups per side.

@@ -130,6 +130,7 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
             caustics.floor_height = scene.floor.height;
             caustics.sub_photons = scene.effects.caustics.sub_photons;
             caustics.jitter = scene.effects.caustics.jitter;
+            caustics.kernel = scene.effects.caustics.kernel;
             caustics.map_width = caustics.map_height = caustic_map_texels(water.grid_resolution);
             graph.blackboard().put(keys::kCausticMap,
                                    passes::add_caustic_resolve_pass(
@@ -185,6 +186,10 @@ std::string Renderer::water_configuration(const Scene& scene) {
            std::to_string(water.ior) + " floor " + std::to_string(scene.floor.height) + " sigma_t " +
            std::to_string(scene.medium.sigma_t().x) + "," + std::to_string(scene.medium.sigma_t().y) + "," +
            std::to_string(scene.medium.sigma_t().z);
+    // The photon pass captures its sampling and its splat kernel at declaration.
+    const CausticSettings& caustics = scene.effects.caustics;
+    key += " photons " + std::to_string(caustics.sub_photons) + "/" + std::to_string(int(caustics.jitter)) + "/" +
+           std::to_string(int(caustics.kernel));
     // The water pass and the scene views capture the lookup methods at declaration.
     for (const fg::Effect effect : {fg::Effect::Reflection, fg::Effect::Refraction}) {
         key += " " + std::to_string(int(scene.effects[effect].method)) + "/" + std::to_string(scene.effects[effect].max_steps) +

@@ -1,8 +1,18 @@
 // The settings of "effects.caustics" beside its mode (effects_json.cpp reads the mode): whether
-// flat water keeps the exact stand-in, and the photons per water cell.
+// flat water keeps the exact stand-in, the photons per water cell, and their splat kernel.
 #include "engine/scene/scene_json.hpp"
 
+#include <array>
+
 namespace vkw {
+namespace {
+
+constexpr std::array<Named<CausticKernel>, 2> kKernels = {{
+    {"adaptive", CausticKernel::Adaptive},
+    {"bilinear", CausticKernel::Bilinear},
+}};
+
+}  // namespace
 
 CausticSettings read_caustic_settings(FieldReader& fields) {
     const CausticSettings defaults;
@@ -11,6 +21,7 @@ CausticSettings read_caustic_settings(FieldReader& fields) {
     caustics.sub_photons = static_cast<uint32_t>(
         fields.integer("sub_photons", Range::closed(1.0, 8.0, "photons per cell side"), defaults.sub_photons));
     caustics.jitter = fields.boolean("jitter", defaults.jitter);
+    caustics.kernel = fields.choice("kernel", kKernels, defaults.kernel);
     fields.finish();
     return caustics;
 }

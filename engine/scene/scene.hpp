@@ -131,6 +131,12 @@ struct GodraySettings {
     uint32_t march_steps = 32;           // Marched: steps per view segment in the water, in [1, 4096]
 };
 
+// effects.caustics.kernel: how a photon's flux is splatted into the light-space map.
+enum class CausticKernel : uint8_t {
+    Bilinear,  // a tent one texel wide: the 2x2 bilinear splat
+    Adaptive,  // a tent as wide as the photon's neighbours land apart (1 to 4 texels per axis)
+};
+
 // The settings of effects.caustics beside its mode (scenes/README.md).
 struct CausticSettings {
     // Flat water: the flat-surface stand-in is exact there, so the photon passes are left out
@@ -138,6 +144,7 @@ struct CausticSettings {
     bool analytic_flat = true;
     uint32_t sub_photons = 1;  // S: S x S photons per cell of the water grid, in [1, 8]
     bool jitter = false;       // each photon at a hashed point of its sub-cell instead of its centre
+    CausticKernel kernel = CausticKernel::Adaptive;
 };
 
 struct EffectsSettings {

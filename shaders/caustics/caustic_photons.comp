@@ -4,14 +4,16 @@
 // VKWATER_SUN_SHADOW (receiver meshes under the water and occluders above it, from the sun
 // shadow map). One invocation per photon: sub-cell (a, b) of cell (i, j),
 // invocation (i S + a, j_local S + b). Each photon's flux, in units of the map's LSB, is rounded
-// once to an integer q and split over the 2x2 bilinear footprint by integer subtraction, so the
-// four taps sum to q exactly (a normalised kernel with no rounding drift) and integer addition
-// makes the result independent of the order the atomics land in.
+// once to an integer q and split over its splat kernel (caustic_splat.glsl: a tent one texel
+// wide, the bilinear 2x2, or as wide as its neighbours' spacing) by cumulative rounding, so the
+// taps sum to q exactly (a normalised kernel with no rounding drift) and integer addition makes
+// the result independent of the order the atomics land in.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_shader_atomic_int64 : require
 
 #include "caustics/caustic_photon.glsl"
+#include "caustics/caustic_splat.glsl"
 #ifdef VKWATER_SUN_SHADOW
 #include "caustics/caustic_receiver_hit.glsl"  // bindings 6 and 7: the sun shadow map
 #endif
@@ -37,7 +39,7 @@ layout(push_constant) uniform Push {
     uint band_first;     // first map row of this band
     uint band_rows;      // map rows in this band
     uint jitter;         // 1: each photon leaves from a hashed point of its sub-cell
-    uint pad1;
+    uint adaptive;       // 1: the splat's half-width from the neighbours' spacing; 0: bilinear
 } pc;
 
 // A point of [0, 1)^2 from the photon's index (two rounds of a 32-bit integer hash, after
@@ -67,8 +69,19 @@ void deposit(ivec2 texel, uint channel, uint64_t q) {
     atomicAdd(flux[(uint(row) * uint(pc.space.u_axis.w) + uint(texel.x)) * 3u + channel], q);
 }
 
-// round(q w) for w in [0, 1], never above q (float(q) is exact: q came from a float).
+// The cumulative share round(q w) for w in [0, 1], never above q.
 uint64_t share(uint64_t q, float w) { return min(uint64_t(float(q) * w + 0.5), q); }
+
+// Splits q over the taps of one axis by cumulative rounding: share k is
+// round(q W_k / W) - round(q W_{k-1} / W) with W_k the partial sums of the weights, so the shares
+// are non-negative and sum to q exactly.
+uint64_t axis_share(uint64_t q, SplatAxis axis, float total, int k, inout float partial, inout uint64_t given) {
+    partial += splat_weight(axis, k);
+    const uint64_t upto = k == axis.count - 1 ? q : share(q, partial / total);
+    const uint64_t s = upto - given;
+    given = upto;
+    return s;
+}
 
 void main() {
     const uint S = pc.sub;
@@ -92,19 +105,29 @@ void main() {
 #endif
 
     const vec3 q = pc.deposit_scale.rgb * photon.energy;
+    // Non-finite or absurd flux is dropped here, at its producer (uint64() of it is undefined).
+    if (!(all(greaterThanEqual(q, vec3(0.0))) && all(lessThan(q, vec3(9.0e18))))) return;
     const vec2 coord = caustic_texel_coord(photon.hit, pc.space) - 0.5;
     // Far off the map (or not a number): every tap is outside, and int() of it is undefined.
-    const bool far = !all(lessThan(abs(coord), vec2(1e7)));
-    const vec2 base = far ? vec2(-2.0) : floor(coord);
-    const vec2 f = far ? vec2(0.0) : coord - base;
-    const ivec2 t0 = ivec2(base);
+    if (!all(lessThan(abs(coord), vec2(1e7)))) {
+        for (uint ch = 0u; ch < 3u; ++ch) deposit(ivec2(-2), ch, uint64_t(q[ch] + 0.5));
+        return;
+    }
+    const vec2 half_width = pc.adaptive != 0u ? splat_half_width(c, at, 1.0 / float(S), photon, pc.space) : vec2(1.0);
+    const SplatAxis x_axis = splat_axis(coord.x, half_width.x), y_axis = splat_axis(coord.y, half_width.y);
+    const float x_total = splat_total(x_axis), y_total = splat_total(y_axis);
     for (uint ch = 0u; ch < 3u; ++ch) {
         const uint64_t total = uint64_t(q[ch] + 0.5);
-        const uint64_t x0 = share(total, 1.0 - f.x), x1 = total - x0;
-        const uint64_t x0y0 = share(x0, 1.0 - f.y), x1y0 = share(x1, 1.0 - f.y);
-        deposit(t0, ch, x0y0);
-        deposit(t0 + ivec2(0, 1), ch, x0 - x0y0);
-        deposit(t0 + ivec2(1, 0), ch, x1y0);
-        deposit(t0 + ivec2(1, 1), ch, x1 - x1y0);
+        float x_partial = 0.0;
+        uint64_t x_given = 0ul;
+        for (int i = 0; i < x_axis.count; ++i) {
+            const uint64_t column = axis_share(total, x_axis, x_total, i, x_partial, x_given);
+            float y_partial = 0.0;
+            uint64_t y_given = 0ul;
+            for (int j = 0; j < y_axis.count; ++j) {
+                const uint64_t tap = axis_share(column, y_axis, y_total, j, y_partial, y_given);
+                deposit(ivec2(x_axis.first + i, y_axis.first + j), ch, tap);
+            }
+        }
     }
 }

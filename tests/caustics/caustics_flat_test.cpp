@@ -7,6 +7,7 @@
 #include "tests/support/gpu_test.hpp"
 
 #include <cstdio>
+#include <utility>
 
 namespace vkw::test {
 namespace {
@@ -34,6 +35,24 @@ passes::CausticInputs flat_caustics(double zenith_deg, double ior) {
 }
 
 using caustics_flat = GpuTest;
+
+// The smallest and largest E of channel c over the texels whose centres lie within `reach` m of
+// the map's middle on both axes (away from the water's edge, whatever border the kernel adds).
+std::pair<double, double> interior_range(const CausticRun& run, const passes::CausticMapFrame& frame, int c,
+                                         double reach) {
+    auto inside = [&](uint32_t i, double corner, double texel) { return std::abs(corner + (i + 0.5) * texel) <= reach; };
+    double lo = 1e300, hi = 0.0;
+    for (uint32_t y = 0; y < frame.height; ++y) {
+        if (!inside(y, frame.corner.y, frame.texel.y)) continue;
+        for (uint32_t x = 0; x < frame.width; ++x) {
+            if (!inside(x, frame.corner.x, frame.texel.x)) continue;
+            const double e = run.irradiance[4 * (size_t(y) * frame.width + x) + c];
+            lo = std::min(lo, e);
+            hi = std::max(hi, e);
+        }
+    }
+    return {lo, hi};
+}
 
 // (a) Elevations 90, 60 and 30 degrees (zenith 0, 30, 60), n = 1.333.
 TEST_F(caustics_flat, FloorIrradianceMatchesSection3) {
@@ -99,24 +118,21 @@ TEST_F(caustics_flat, FloorIrradianceMatchesSection3) {
 
 // (b) n = 1, no jitter, vertical sun, one and four photons per cell, photon lattice aligned with
 // the texels: every interior texel equal.
+// Both kernels: under flat water the adaptive kernel's half-width is one texel (neighbours land
+// one photon spacing apart, at most a texel), so it must be exactly as uniform as the bilinear one.
 TEST_F(caustics_flat, RefractionFreeMapIsUniform) {
+    for (const CausticKernel kernel : {CausticKernel::Bilinear, CausticKernel::Adaptive})
     for (const uint32_t sub : {1u, 2u}) {
         passes::CausticInputs in = flat_caustics(0.0, 1.0);
         in.sigma_t = glm::dvec3(0.0);
         in.sub_photons = sub;
+        in.kernel = kernel;
         const CausticRun run = run_caustics(context(), flat_surface(), in);
         const passes::CausticMapFrame frame = passes::fit_caustic_map(in);
-        const uint32_t w = frame.width;
-        // Interior: texels 2 .. W - 3, away from the one-texel border and the partly covered edge.
+        // Interior: texel centres within E - 1.5 texels (the bilinear map's texels 2 .. W - 3),
+        // away from the border and the partly covered edge.
         for (int c = 0; c < 3; ++c) {
-            double lo = 1e300, hi = 0.0;
-            for (uint32_t y = 2; y + 2 < frame.height; ++y) {
-                for (uint32_t x = 2; x + 2 < w; ++x) {
-                    const double e = run.irradiance[4 * (size_t(y) * w + x) + c];
-                    lo = std::min(lo, e);
-                    hi = std::max(hi, e);
-                }
-            }
+            const auto [lo, hi] = interior_range(run, frame, c, kE - 1.5 * frame.texel.x);
             // Bound, relative: max(LSB x deposits per texel, 2^-24 max|coordinate| / texel size),
             // both with their counts. A texel gathers at most (2 S - 1 + 1)^2 = 4 S^2 taps, each
             // rounded by at most 1 LSB = 1e-9 of the flat texel flux. A photon's coordinate is off
@@ -132,6 +148,49 @@ TEST_F(caustics_flat, RefractionFreeMapIsUniform) {
                         sub, c, lo, hi, in.sun_irradiance[c], spread, bound, spread / bound);
             EXPECT_LE(spread, bound) << "S = " << sub << " channel " << c;
             EXPECT_NEAR(hi / in.sun_irradiance[c], 1.0, bound);
+        }
+    }
+}
+
+
+// (c) Sparse photons: 16 cells on a 64-texel map, n = 1, vertical sun: photons land 4 texels
+// apart. The adaptive kernel sizes its tent from the neighbours' spacing, half-width 4 texels,
+// and tents of half-width h spaced h apart sum to one everywhere: the covered interior is
+// uniform and equal to E_s, to rounding. The bilinear kernel leaves the texels between photons
+// empty (spread 1), which is what shows this test can fail.
+TEST_F(caustics_flat, AdaptiveKernelFillsBetweenSparsePhotons) {
+    constexpr uint32_t kCells = 16;
+    passes::WaterSurfaceInputs surface = flat_surface();
+    surface.grid_resolution = kCells;
+    for (const CausticKernel kernel : {CausticKernel::Adaptive, CausticKernel::Bilinear}) {
+        passes::CausticInputs in = flat_caustics(0.0, 1.0);
+        in.sigma_t = glm::dvec3(0.0);
+        in.grid_resolution = kCells;
+        in.kernel = kernel;
+        const CausticRun run = run_caustics(context(), surface, in);
+        const passes::CausticMapFrame frame = passes::fit_caustic_map(in);
+        // Covered interior: texel centres within E - 1 m (the outermost photons sit at E - 0.5 m
+        // and a tent reaches 1 m, so every such texel gets both of its neighbouring photons).
+        for (int c = 0; c < 3; ++c) {
+            const auto [lo, hi] = interior_range(run, frame, c, kE - 1.0);
+            const double spread = (hi - lo) / std::max(hi, 1e-300);
+            if (kernel == CausticKernel::Bilinear) {
+                std::printf("bilinear channel %d: E in [%.6g, %.6g], spread %.3f (holes between photons)\n", c, lo,
+                            hi, spread);
+                EXPECT_GT(spread, 0.5) << "the bilinear kernel should leave texels between sparse photons empty";
+                continue;
+            }
+            // Bound, relative: the half-width comes from fp32 landing coordinates, each off by at
+            // most 8 u max|coordinate| / texel texels (as above), so each tent weight by that over
+            // h and the partition of unity by twice it per photon, at most 4 photons per axis
+            // reach a texel: 2 axes x 4 x 2 x 8 u coord/texel; plus 16 u for the photons' fluxes
+            // and the LSB rounding of at most 64 taps of 1e-9.
+            const double coord = 2.0 * kE + 8.0 * frame.texel.x;
+            const double bound = 2.0 * 4.0 * 2.0 * 8.0 * kUnit * coord / frame.texel.x + 16.0 * kUnit + 64e-9;
+            std::printf("adaptive channel %d: E in [%.9g, %.9g] (E_s %.3g), spread %.3e, bound %.3e\n", c, lo, hi,
+                        in.sun_irradiance[c], spread, bound);
+            EXPECT_LE(spread, bound) << "channel " << c;
+            EXPECT_NEAR(hi / in.sun_irradiance[c], 1.0, bound) << "channel " << c;
         }
     }
 }

@@ -67,6 +67,35 @@ TEST(scene_effects, NamedExactlyAsTheFrameGraphNamesThem) {
     }
 }
 
+// effects.caustics' settings: their defaults (scenes/README.md), each read, and each refused
+// outside its range naming the field and what is accepted.
+TEST(scene_effects, CausticSettingsDefaultsReadAndRanges) {
+    const CausticSettings defaults = with({}).effects.caustics;
+    EXPECT_TRUE(defaults.analytic_flat);
+    EXPECT_EQ(defaults.sub_photons, 1u);
+    EXPECT_FALSE(defaults.jitter);
+    EXPECT_EQ(defaults.kernel, CausticKernel::Adaptive);
+
+    const CausticSettings set = with({"effects.caustics.analytic_flat=false", "effects.caustics.sub_photons=4",
+                                      "effects.caustics.jitter=true", "effects.caustics.kernel=bilinear"})
+                                    .effects.caustics;
+    EXPECT_FALSE(set.analytic_flat);
+    EXPECT_EQ(set.sub_photons, 4u);
+    EXPECT_TRUE(set.jitter);
+    EXPECT_EQ(set.kernel, CausticKernel::Bilinear);
+
+    auto error_with = [](const std::string& override) {
+        return test::user_error_of([&] { with({override}); });
+    };
+    EXPECT_NE(error_with("effects.caustics.kernel=gaussian").find("effects.caustics.kernel: unknown value \"gaussian\" "
+                                                                   "(accepted: one of adaptive, bilinear)"),
+              std::string::npos)
+        << error_with("effects.caustics.kernel=gaussian");
+    const std::string sub = error_with("effects.caustics.sub_photons=9");
+    EXPECT_NE(sub.find("effects.caustics.sub_photons"), std::string::npos) << sub;
+    EXPECT_NE(sub.find("8"), std::string::npos) << sub;
+}
+
 TEST(scene_overrides, ArrayElementsByIndex) {
     const std::string text = R"({ "camera": { "position": [0, 1, 3], "target": [0, 0, 0] },
         "sun": { "elevation_deg": 45 }, "sky": { "radiance": [1, 1, 1] },
