@@ -22,16 +22,6 @@ ImageRGBA32F with_layer(ImageRGBA32F image, const std::string& name, float value
     return image;
 }
 
-std::string user_error_message(const std::function<void()>& call) {
-    try {
-        call();
-    } catch (const UserError& error) {
-        return error.what();
-    }
-    ADD_FAILURE() << "no UserError";
-    return {};
-}
-
 TEST(metrics_compare, IdenticalImagesGiveZeroEverywhere) {
     const ImageRGBA32F b = test::make_image(kW, kH, [](int x, int y) {
         return test::Rgb{0.1f + 0.02f * static_cast<float>(x), 0.3f, 0.01f * static_cast<float>(y)};
@@ -78,14 +68,14 @@ TEST(metrics_compare, LayerIsComparedInsteadOfTheMainImage) {
     const metrics::Metrics m = compare_layer(a, b, "caustic");
     EXPECT_EQ(m.bias, 0.5);
     test::expect_relative(m.rel_mse, 0.25 / 1.01);
-    const std::string message = user_error_message([&] { compare_layer(a, b, "glints"); });
+    const std::string message = test::user_error_message([&] { compare_layer(a, b, "glints"); });
     EXPECT_NE(message.find("'glints'"), std::string::npos) << message;
     EXPECT_NE(message.find("caustic"), std::string::npos) << message;  // lists the layers it has
 }
 
 TEST(metrics_compare, SizeMismatchNamesBothSizes) {
-    const std::string message =
-        user_error_message([] { compare_images(test::grey_image(kW, kH, 1.0f), test::grey_image(20, 10, 1.0f)); });
+    const std::string message = test::user_error_message(
+        [] { compare_images(test::grey_image(kW, kH, 1.0f), test::grey_image(20, 10, 1.0f)); });
     EXPECT_NE(message.find("40x30"), std::string::npos) << message;
     EXPECT_NE(message.find("20x10"), std::string::npos) << message;
 }
@@ -93,7 +83,7 @@ TEST(metrics_compare, SizeMismatchNamesBothSizes) {
 TEST(metrics_compare, MaskErrors) {
     const ImageRGBA32F b = test::grey_image(kW, kH, 1.0f);
     const ImageRGBA32F small_mask = test::grey_image(20, 10, 1.0f);
-    const std::string message = user_error_message([&] { compare_images(b, b, &small_mask); });
+    const std::string message = test::user_error_message([&] { compare_images(b, b, &small_mask); });
     EXPECT_NE(message.find("20x10"), std::string::npos) << message;
     const ImageRGBA32F empty_mask = test::grey_image(kW, kH, 0.5f);  // R > 0.5 nowhere
     EXPECT_THROW(compare_images(b, b, &empty_mask), UserError);

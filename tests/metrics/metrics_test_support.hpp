@@ -7,8 +7,10 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <string>
 #include <vector>
 
+#include "engine/core/errors.hpp"
 #include "engine/image/image.hpp"
 #include "tools/metrics/rgb_view.hpp"
 
@@ -75,6 +77,17 @@ inline ImageRGBA32F with_pixel(ImageRGBA32F image, int x, int y, Rgb colour) {
     p[1] = colour[1];
     p[2] = colour[2];
     return image;
+}
+
+// The message of the UserError `call` throws (a test failure if it throws none).
+inline std::string user_error_message(const std::function<void()>& call) {
+    try {
+        call();
+    } catch (const UserError& error) {
+        return error.what();
+    }
+    ADD_FAILURE() << "no UserError";
+    return {};
 }
 
 // Every pixel of the image counts.

@@ -1,17 +1,24 @@
 // vkwater bench SCENE --reference REF.exr: renders the scene over a sweep of quality
 // settings, times each (median of N frames after a warm-up, interquartile spread, one
-// submission per frame), measures its error against the reference, and writes the
-// table as CSV and as an SVG plot of error against time with the Pareto front marked.
+// submission per frame), measures its error against the reference (at full resolution, at
+// 4x box-downsampled resolution, and of the caustic layer when both images carry one) and the
+// frame's memory, and writes the table as CSV and as an SVG plot of error against time with
+// the Pareto front marked.
 // The settings: the water grid (which is also the photon grid, `--grids`) times any scene
-// fields named with `--sweep key=v1,v2,...` (each a scene override, as `--set`; every
-// combination is rendered); without `--sweep`, caustics on and off (the flat-surface stand-in).
+// fields named with `--sweep key=v1,v2,...` (each a scene override, as `--set`) times any sets
+// of overrides given with `--alternatives 'k=v k=v|k=v'` (every combination is rendered);
+// without either, caustics on and off (the flat-surface stand-in).
+// Every frame of a setting renders the same Scene: the water stays at the scene file's
+// `water.time` (the renderer keeps no clock), so the timed frames and the measured one agree.
 #include "engine/core/errors.hpp"
 #include "engine/image/exr_io.hpp"
 #include "engine/render/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
+#include "tools/benchmarks/frame_memory.hpp"
 #include "tools/benchmarks/sweep_report.hpp"
-#include "tools/metrics/metrics.hpp"
+#include "tools/metrics/downsample.hpp"
+#include "tools/metrics/reference_errors.hpp"
 #include "tools/vkwater/commands.hpp"
 
 #include <algorithm>
@@ -22,35 +29,63 @@
 namespace vkw::cli {
 namespace {
 
+// The minimum for a median with a meaningful spread; fewer are for smoke tests.
+constexpr uint32_t kRecommendedFrames = 30;
+
 struct BenchArgs {
     std::string scene;
     std::string reference;
     std::vector<uint32_t> grids{128, 256, 512};
-    std::vector<std::string> sweeps;  // "key=v1,v2,..."
-    uint32_t frames = 30;
+    std::vector<std::string> sweeps;        // "key=v1,v2,..."
+    std::vector<std::string> alternatives;  // "key=v key=v|key=v|..."
+    uint32_t frames = kRecommendedFrames;
     std::string out_dir;
     std::vector<std::string> overrides;
     DeviceOptions device;
 };
 
-// One swept scene field and its values.
+// One axis of the sweep: its values, each a list of scene overrides ("key.path=value").
 struct SweepAxis {
-    std::string key;
-    std::vector<std::string> values;
+    std::vector<std::vector<std::string>> values;
 };
 
+// --sweep key.path=v1,v2,...: one field, one override per value.
 SweepAxis parse_sweep(const std::string& text) {
     const size_t equals = text.find('=');
+    const std::string key = equals != std::string::npos ? text.substr(0, equals) : "";
     SweepAxis axis;
-    if (equals != std::string::npos) axis.key = text.substr(0, equals);
     for (size_t start = equals + 1; equals != std::string::npos && start <= text.size();) {
         const size_t comma = std::min(text.find(',', start), text.size());
-        if (comma > start) axis.values.push_back(text.substr(start, comma - start));
+        if (comma > start) axis.values.push_back({key + "=" + text.substr(start, comma - start)});
         start = comma + 1;
     }
-    if (axis.key.empty() || axis.values.empty()) {
+    if (key.empty() || axis.values.empty()) {
         throw UserError("--sweep '" + text + "': expected key.path=value1,value2,... (a scene field as --set names it, "
                         "and at least one value)");
+    }
+    return axis;
+}
+
+// --alternatives 'a.b=1 c.d=2|a.b=3': values that set several fields at once (or none, where an
+// alternative sets a field that makes the others moot, as godrays off and a godray grid).
+SweepAxis parse_alternatives(const std::string& text) {
+    SweepAxis axis;
+    for (size_t start = 0; start <= text.size();) {
+        const size_t bar = std::min(text.find('|', start), text.size());
+        std::vector<std::string> overrides;
+        for (size_t word = start; word < bar;) {
+            const size_t space = std::min(text.find(' ', word), bar);
+            if (space > word) overrides.push_back(text.substr(word, space - word));
+            word = space + 1;
+        }
+        auto is_override = [](const std::string& o) { return o.find('=') != std::string::npos && o.front() != '='; };
+        const bool valid = !overrides.empty() && std::all_of(overrides.begin(), overrides.end(), is_override);
+        if (!valid) {
+            throw UserError("--alternatives '" + text + "': expected alternatives separated by '|', each one or more "
+                            "key.path=value overrides separated by spaces");
+        }
+        axis.values.push_back(std::move(overrides));
+        start = bar + 1;
     }
     return axis;
 }
@@ -69,9 +104,9 @@ std::vector<std::vector<std::string>> combinations(const std::vector<SweepAxis>&
     for (const SweepAxis& axis : axes) {
         std::vector<std::vector<std::string>> next;
         for (const std::vector<std::string>& setting : settings) {
-            for (const std::string& value : axis.values) {
+            for (const std::vector<std::string>& value : axis.values) {
                 next.push_back(setting);
-                next.back().push_back(axis.key + "=" + value);
+                next.back().insert(next.back().end(), value.begin(), value.end());
             }
         }
         settings = std::move(next);
@@ -79,9 +114,23 @@ std::vector<std::vector<std::string>> combinations(const std::vector<SweepAxis>&
     return settings;
 }
 
+// The reference, with the bench's downsampling factor checked against its size (naming the file).
+metrics::ReferenceErrors load_reference(const std::string& path) {
+    ImageRGBA32F image = read_exr(path);
+    const int factor = metrics::kBenchDownsampleFactor;
+    if (image.width < factor || image.height < factor) {
+        throw UserError("--reference " + path + ": the image is " + metrics::size_text(image.width, image.height) +
+                        ", but the errors at " + std::to_string(factor) +
+                        "x box-downsampled resolution need at least " +
+                        std::to_string(factor) + "x" + std::to_string(factor) + " pixels");
+    }
+    return metrics::ReferenceErrors(std::move(image), factor);
+}
+
 int run_bench(const BenchArgs& args) {
-    const ImageRGBA32F reference = read_exr(args.reference);
-    const uint32_t width = static_cast<uint32_t>(reference.width), height = static_cast<uint32_t>(reference.height);
+    const metrics::ReferenceErrors reference = load_reference(args.reference);
+    const uint32_t width = static_cast<uint32_t>(reference.reference().width);
+    const uint32_t height = static_cast<uint32_t>(reference.reference().height);
     const std::filesystem::path out_dir =
         args.out_dir.empty() ? "bench-" + std::filesystem::path(args.scene).stem().string() : args.out_dir;
     std::filesystem::create_directories(out_dir);
@@ -90,13 +139,15 @@ int run_bench(const BenchArgs& args) {
     context_options.validation = args.device.validation;
     context_options.device_name = args.device.device;
     auto context = std::make_unique<Context>(context_options);
-    const metrics::FlipExposureRange range = metrics::flip_exposure_range(reference);  // once, from the reference
     std::vector<bench::SweepRow> rows;
-    std::printf("%-28s %10s %9s %12s %9s %9s\n", "setting", "ms", "spread", "relMSE", "FLIP", "bias");
-    std::vector<SweepAxis> axes{{"water.grid_resolution", {}}};
-    for (const uint32_t grid : args.grids) axes[0].values.push_back(std::to_string(grid));
-    if (args.sweeps.empty()) axes.push_back({"effects.caustics.mode", {"on", "off"}});
+    const std::string factor = std::to_string(metrics::kBenchDownsampleFactor) + "x";
+    std::printf("%-28s %10s %9s %12s %12s %9s %9s %12s %9s\n", "setting", "ms", "spread", "relMSE",
+                ("relMSE " + factor).c_str(), "FLIP", "bias", "caustic", "MiB");
+    std::vector<SweepAxis> axes(1);
+    for (const uint32_t grid : args.grids) axes[0].values.push_back({"water.grid_resolution=" + std::to_string(grid)});
+    if (args.sweeps.empty() && args.alternatives.empty()) axes.push_back(parse_sweep("effects.caustics.mode=on,off"));
     for (const std::string& sweep : args.sweeps) axes.push_back(parse_sweep(sweep));
+    for (const std::string& alternatives : args.alternatives) axes.push_back(parse_alternatives(alternatives));
     for (const std::vector<std::string>& setting : combinations(axes)) {
         std::vector<std::string> overrides = args.overrides;
         overrides.insert(overrides.end(), setting.begin(), setting.end());
@@ -110,21 +161,39 @@ int run_bench(const BenchArgs& args) {
             times.push_back(result.timing.total_ms);
         }
         std::sort(times.begin(), times.end());
-        const metrics::Metrics error = metrics::compare_images(result.image, reference, nullptr, &range);
+        const metrics::FrameErrors error = reference.measure(result.image);
+        const bench::FrameMemory memory = bench::measure_frame_memory(renderer, scene, options);
         std::string name;
         for (const std::string& override_text : setting) name += (name.empty() ? "" : " ") + short_key(override_text);
-        bench::SweepRow row{name, times[times.size() / 2], times[times.size() * 3 / 4] - times[times.size() / 4],
-                            error.rel_mse, error.flip_mean, error.bias};
-        std::printf("%-28s %10.2f %9.2f %12.6g %9.4f %9.4f\n", row.setting.c_str(), row.median_ms, row.spread_ms,
-                    row.rel_mse, row.flip, row.bias);
+        bench::SweepRow row{name,
+                            times[times.size() / 2],
+                            times[times.size() * 3 / 4] - times[times.size() / 4],
+                            error.full.rel_mse,
+                            error.full.flip_mean,
+                            error.full.bias,
+                            error.downsampled.rel_mse,
+                            error.downsampled.flip_mean,
+                            error.caustic.value,
+                            memory.total()};
+        std::printf("%-28s %10.2f %9.2f %12.6g %12.6g %9.4f %9.4f %12s %9.2f\n", row.setting.c_str(), row.median_ms,
+                    row.spread_ms, row.rel_mse, row.rel_mse_downsampled, row.flip, row.bias,
+                    error.caustic.text().c_str(), static_cast<double>(row.memory_bytes) / (1024.0 * 1024.0));
+        std::fflush(stdout);  // a long sweep shows its progress, also when its output goes to a file
         rows.push_back(row);
     }
-    bench::write_csv(out_dir / "sweep.csv", rows);
+    bench::write_csv(out_dir / "sweep.csv", rows, metrics::kBenchDownsampleFactor);
     bench::write_svg(out_dir / "sweep.svg", std::filesystem::path(args.scene).filename().string() + ", " +
-                                                std::to_string(width) + "x" + std::to_string(height) + " on " +
-                                                context->device_name(),
-                     rows);
-    std::printf("time: median of %u frames after a warm-up, one submission per frame (whole frame)\n", args.frames);
+                                                std::to_string(width) + "x" + std::to_string(height) + ", " +
+                                                std::to_string(args.frames) + " frames, on " + context->device_name(),
+                     rows, metrics::kBenchDownsampleFactor);
+    std::printf("time: median of %u frames after a warm-up (spread: interquartile range), one submission per "
+                "frame (whole frame), scene time frozen at water.time\n",
+                args.frames);
+    if (args.frames < kRecommendedFrames) {
+        std::printf("note: fewer than %u frames per setting: the medians and spreads are rough\n",
+                    kRecommendedFrames);
+    }
+    std::printf("memory: the frame graph's transient heap plus the imported buffers and images\n");
     std::printf("wrote %s and %s\n", (out_dir / "sweep.csv").c_str(), (out_dir / "sweep.svg").c_str());
     return kExitOk;
 }
@@ -142,8 +211,13 @@ Run add_bench_command(CLI::App& app) {
         ->capture_default_str();
     command->add_option("--sweep", args->sweeps,
                         "Also sweep a scene field: key.path=v1,v2,... (repeatable; every combination is rendered; "
-                        "without it, caustics on and off)");
-    command->add_option("--frames", args->frames, "Timed frames per setting (after one warm-up frame)")
+                        "without it and --alternatives, caustics on and off)");
+    command->add_option("--alternatives", args->alternatives,
+                        "Also sweep over whole sets of overrides: 'key.path=v key.path=v|key.path=v|...' (repeatable; "
+                        "one axis each, combined with every other axis), e.g. "
+                        "'effects.godrays.mode=off|effects.godrays.grid=32'");
+    command->add_option("--frames", args->frames, "Timed frames per setting (after one warm-up frame); 30 or more for a meaningful median "
+                        "and spread")
         ->check(CLI::Range(1u, 100000u))
         ->capture_default_str();
     command->add_option("--out-dir", args->out_dir, "Folder for sweep.csv and sweep.svg (default bench-<scene>)");

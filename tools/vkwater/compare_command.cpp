@@ -1,10 +1,16 @@
-// vkwater compare A.exr B.exr [--mask M.exr] [--layer NAME]: A against the reference B, one line
-// per metric (relMSE, FLIP, bias, L*u*v*), definitions in tools/metrics/metrics.hpp.
+// vkwater compare A.exr B.exr [--mask M.exr] [--layer NAME] [--downsample N]: A against the
+// reference B, one line per metric (relMSE, FLIP, bias, L*u*v*; definitions in
+// tools/metrics/metrics.hpp); with --downsample N the same four again with both images (and the
+// mask) box-downsampled by N (tools/metrics/downsample.hpp); without --layer, the relMSE of the
+// caustic layer when both images carry one, else "n/a" and why.
 #include "engine/core/errors.hpp"
 #include "engine/image/exr_io.hpp"
+#include "tools/metrics/downsample.hpp"
 #include "tools/metrics/metrics.hpp"
+#include "tools/metrics/reference_errors.hpp"
 #include "tools/vkwater/commands.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -18,10 +24,19 @@ struct CompareArgs {
     std::string reference;
     std::string mask;
     std::string layer;
+    int downsample = 1;
 };
 
 std::string described(const std::string& path, const ImageRGBA32F& image) {
     return path + " (" + metrics::size_text(image.width, image.height) + ")";
+}
+
+// One line per metric; `suffix` says at what resolution they were measured.
+void print_metrics(const metrics::Metrics& result, const std::string& suffix) {
+    std::printf("relMSE%s %.6g\n", suffix.c_str(), result.rel_mse);
+    std::printf("FLIP%s %.6g\n", suffix.c_str(), result.flip_mean);
+    std::printf("bias%s %.6g\n", suffix.c_str(), result.bias);
+    std::printf("L*u*v*%s %.6g\n", suffix.c_str(), result.luv_mean);
 }
 
 int run_compare(const CompareArgs& args) {
@@ -40,19 +55,33 @@ int run_compare(const CompareArgs& args) {
                             described(args.reference, reference));
         }
     }
-    const ImageRGBA32F* mask_image = mask ? &*mask : nullptr;
-    metrics::Metrics result;
-    if (args.layer.empty()) {
-        result = metrics::compare_images(test, reference, mask_image);
-    } else {
+    if (args.downsample > std::min(reference.width, reference.height)) {
+        throw UserError("--downsample: " + std::to_string(args.downsample) + " is out of range for " +
+                        described(args.reference, reference) + " (accepted: 1 to " +
+                        std::to_string(std::min(reference.width, reference.height)) + ")");
+    }
+    if (!args.layer.empty()) {
         metrics::layer_view(test, args.layer, args.test);  // throws, naming the file, if it is missing
         metrics::layer_view(reference, args.layer, args.reference);
-        result = metrics::compare_layer(test, reference, args.layer, mask_image);
     }
-    std::printf("relMSE %.6g\n", result.rel_mse);
-    std::printf("FLIP %.6g\n", result.flip_mean);
-    std::printf("bias %.6g\n", result.bias);
-    std::printf("L*u*v* %.6g\n", result.luv_mean);
+    const ImageRGBA32F* mask_image = mask ? &*mask : nullptr;
+    auto compare = [&](const ImageRGBA32F& a, const ImageRGBA32F& b, const ImageRGBA32F* m) {
+        return args.layer.empty() ? metrics::compare_images(a, b, m) : metrics::compare_layer(a, b, args.layer, m);
+    };
+    print_metrics(compare(test, reference, mask_image), "");
+    if (args.downsample > 1) {
+        std::optional<ImageRGBA32F> small_mask;
+        if (mask) small_mask = metrics::box_downsample_mask(*mask, args.downsample);
+        const ImageRGBA32F small_reference = metrics::box_downsample(reference, args.downsample);
+        print_metrics(compare(metrics::box_downsample(test, args.downsample), small_reference,
+                              small_mask ? &*small_mask : nullptr),
+                      " (" + std::to_string(args.downsample) + "x box-downsampled to " +
+                          metrics::size_text(small_reference.width, small_reference.height) + ")");
+    }
+    if (args.layer.empty()) {
+        std::printf("%s relMSE %s\n", metrics::kCausticLayer,
+                    metrics::layer_rel_mse(test, reference, metrics::kCausticLayer, mask_image).text(true).c_str());
+    }
     return kExitOk;
 }
 
@@ -67,6 +96,11 @@ Run add_compare_command(CLI::App& app) {
         ->required();
     command->add_option("--mask", args->mask, "Only pixels whose R is > 0.5 in this OpenEXR image count");
     command->add_option("--layer", args->layer, "Compare this extra layer (e.g. caustic) instead of R, G, B");
+    command->add_option("--downsample", args->downsample,
+                        "Also compare both images averaged over N x N pixel blocks (4 separates energy errors "
+                        "from sub-texel misplacement)")
+        ->check(CLI::Range(1, 4096))
+        ->capture_default_str();
     return [args] { return run_compare(*args); };
 }
 
