@@ -2,21 +2,24 @@
 
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/render/blackboard_keys.hpp"
+#include "passes/caustic_layer.hpp"
 #include "passes/lighting_inputs.hpp"
 #include "passes/receiver_draws.hpp"
 
 namespace vkw::passes {
 
-void add_floor_pass(fg::FrameGraph& graph) {
+void add_floor_pass(fg::FrameGraph& graph, bool caustic_layer) {
     struct Data {
         fg::ImageHandle hdr;
         fg::ImageHandle depth;
         LightingInputs lighting;
+        CausticLayerTarget layer;
     };
     const auto& data = graph.add_pass<Data>(
         "floor", fg::PassKind::Graphics,
         [&](fg::PassBuilder& builder, Data& d) {
             d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
+            if (caustic_layer) d.layer.create(builder, "caustic layer", {VK_FORMAT_R32G32B32A32_SFLOAT});
             d.depth = builder.create_image("scene depth", {VK_FORMAT_D32_SFLOAT});
             d.depth = builder.depth_stencil_attachment(d.depth, fg::LoadOp::Clear, {.depth = 0.0f});
             d.lighting.declare(builder, graph.blackboard());
@@ -24,7 +27,7 @@ void add_floor_pass(fg::FrameGraph& graph) {
         [](const Data& d, fg::PassContext& context) {
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "receivers/floor.vert";
-            desc.fragment_shader = d.lighting.shader("receivers/receiver.frag");
+            desc.fragment_shader = d.lighting.shader("receivers/receiver.frag") + d.layer.variant();
             d.lighting.add_layout(desc.layout.bindings);
             desc.layout.push_constant_bytes = sizeof(ReceiverPush);
             desc.depth_test = true;
@@ -38,6 +41,7 @@ void add_floor_pass(fg::FrameGraph& graph) {
         });
     graph.blackboard().put(keys::kHdrColor, data.hdr);
     graph.blackboard().put(keys::kSceneDepth, data.depth);
+    data.layer.publish(graph.blackboard());
 }
 
 }  // namespace vkw::passes

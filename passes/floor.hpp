@@ -8,6 +8,7 @@
 
 namespace vkw::passes {
 
-void add_floor_pass(fg::FrameGraph& graph);
+// caustic_layer: also create and write the caustic layer (passes/caustic_layer.hpp).
+void add_floor_pass(fg::FrameGraph& graph, bool caustic_layer = false);
 
 }  // namespace vkw::passes

@@ -2,10 +2,10 @@
 
 namespace vkw::passes {
 
-GraphicsPipelineDesc receiver_mesh_pipeline(const LightingInputs& lighting) {
+GraphicsPipelineDesc receiver_mesh_pipeline(const LightingInputs& lighting, const std::string& variant_suffix) {
     GraphicsPipelineDesc desc;
     desc.vertex_shader = "receivers/mesh.vert";
-    desc.fragment_shader = lighting.shader("receivers/receiver.frag");
+    desc.fragment_shader = lighting.shader("receivers/receiver.frag") + variant_suffix;
     lighting.add_layout(desc.layout.bindings);
     desc.layout.push_constant_bytes = sizeof(ReceiverPush);
     desc.vertex_bindings = {{0, 6 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX}};

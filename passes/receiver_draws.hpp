@@ -18,9 +18,9 @@ struct ReceiverPush {
     glm::vec4 view{0.0f};
 };
 
-// receivers/mesh.vert + receivers/receiver.frag in the lighting inputs' variant, depth
-// tested and written.
-GraphicsPipelineDesc receiver_mesh_pipeline(const LightingInputs& lighting);
+// receivers/mesh.vert + receivers/receiver.frag in the lighting inputs' variant (plus
+// `variant_suffix`, e.g. the caustic layer's "_layer"), depth tested and written.
+GraphicsPipelineDesc receiver_mesh_pipeline(const LightingInputs& lighting, const std::string& variant_suffix = "");
 
 // Binds the meshes' buffers and draws each mesh with its albedo and `view`.
 void draw_receiver_meshes(const fg::PassContext& context, const Pipeline& pipeline, const ReceiverMeshes& meshes,

@@ -2,6 +2,7 @@
 
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/render/blackboard_keys.hpp"
+#include "passes/caustic_layer.hpp"
 #include "passes/receiver_draws.hpp"
 
 namespace vkw::passes {
@@ -11,6 +12,7 @@ void add_receivers_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes) {
         fg::BufferHandle vertices, indices;
         fg::ImageHandle hdr, depth;
         LightingInputs lighting;
+        CausticLayerTarget layer;
     };
     const auto& data = graph.add_pass<Data>(
         "receivers", fg::PassKind::Graphics,
@@ -18,11 +20,12 @@ void add_receivers_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes) {
             d.vertices = builder.vertex_buffer(meshes.import_vertices(graph));
             d.indices = builder.index_buffer(meshes.import_indices(graph));
             d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
+            d.layer.load(builder, graph.blackboard());
             d.depth = builder.depth_stencil_attachment(graph.blackboard().get(keys::kSceneDepth), fg::LoadOp::Load);
             d.lighting.declare(builder, graph.blackboard(), /*with_caustics=*/true);
         },
         [&meshes](const Data& d, fg::PassContext& context) {
-            const GraphicsPipelineDesc desc = receiver_mesh_pipeline(d.lighting);
+            const GraphicsPipelineDesc desc = receiver_mesh_pipeline(d.lighting, d.layer.variant());
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
             std::vector<fg::DescriptorBinding> bindings;
             d.lighting.add_bindings(context, bindings);
@@ -31,6 +34,7 @@ void add_receivers_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes) {
         });
     graph.blackboard().put(keys::kHdrColor, data.hdr);
     graph.blackboard().put(keys::kSceneDepth, data.depth);
+    data.layer.publish(graph.blackboard());
 }
 
 }  // namespace vkw::passes

@@ -1,6 +1,8 @@
 #include "passes/scene_view.hpp"
 
 #include "engine/framegraph/pass_context.hpp"
+#include "engine/render/blackboard_keys.hpp"
+#include "passes/caustic_layer.hpp"
 #include "passes/receiver_draws.hpp"
 
 #include <string>
@@ -19,6 +21,7 @@ fg::ImageHandle add_scene_view_pass(fg::FrameGraph& graph, const ReceiverMeshes&
         fg::BufferHandle vertices, indices;
         fg::ImageHandle target, depth;
         LightingInputs lighting;
+        CausticLayerTarget layer;
     };
     const auto& data = graph.add_pass<Data>(
         spec.name, fg::PassKind::Graphics,
@@ -30,13 +33,14 @@ fg::ImageHandle add_scene_view_pass(fg::FrameGraph& graph, const ReceiverMeshes&
             const fg::ImageInfo target{VK_FORMAT_R32G32B32A32_SFLOAT, fg::SizeClass::OutputRelative, kGuardBand};
             d.target = builder.color_attachment(builder.create_image(std::string(spec.name) + " target", target),
                                                 fg::LoadOp::Clear);
+            if (spec.caustic_layer && !spec.camera_side) d.layer.create(builder, std::string(spec.name) + " caustic", target);
             const fg::ImageInfo depth{VK_FORMAT_D32_SFLOAT, fg::SizeClass::OutputRelative, kGuardBand};
             d.depth = builder.depth_stencil_attachment(builder.create_image(std::string(spec.name) + " depth", depth),
                                                        fg::LoadOp::Clear, {.depth = 0.0f});
             d.lighting.declare(builder, graph.blackboard(), /*with_caustics=*/true, /*with_camera_medium=*/false);
         },
         [&meshes, spec](const Data& d, fg::PassContext& context) {
-            const GraphicsPipelineDesc desc = receiver_mesh_pipeline(d.lighting);
+            const GraphicsPipelineDesc desc = receiver_mesh_pipeline(d.lighting, d.layer.variant());
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
             std::vector<fg::DescriptorBinding> bindings;
             d.lighting.add_bindings(context, bindings);
@@ -44,6 +48,7 @@ fg::ImageHandle add_scene_view_pass(fg::FrameGraph& graph, const ReceiverMeshes&
             const glm::vec4 view(spec.mirrored ? 1.0f : 0.0f, spec.camera_side ? 1.0f : -1.0f, spec.clip_margin, 0.0f);
             draw_receiver_meshes(context, pipeline, meshes, d.vertices, d.indices, view);
         });
+    if (data.layer.image) graph.blackboard().put(keys::kRefractionViewCaustic, *data.layer.image);
     return data.target;
 }
 

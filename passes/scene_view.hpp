@@ -24,6 +24,9 @@ struct SceneViewSpec {
     bool mirrored;         // seen from the camera's mirror image in the mean water plane
     bool camera_side;      // keeps the camera's side of the surface (false: the other side)
     float clip_margin;     // m beyond the mean level
+    // The other side's view only: also keep its caustic layer, published as
+    // keys::kRefractionViewCaustic (passes/caustic_layer.hpp).
+    bool caustic_layer = false;
 };
 
 // Renders the view; returns its RGBA32F target (radiance, distance; 0 where empty), 1.5

@@ -2,6 +2,7 @@
 
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/render/blackboard_keys.hpp"
+#include "passes/caustic_layer.hpp"
 #include "passes/lighting_inputs.hpp"
 
 namespace vkw::passes {
@@ -30,6 +31,8 @@ void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uin
         LightingInputs lighting;
         // Bound at 8 and 9; a missing one is stood in for by the other (its lookup is off).
         std::optional<fg::ImageHandle> reflection_view, refraction_view;
+        CausticLayerTarget layer;
+        std::optional<fg::ImageHandle> refraction_view_caustic;  // bound at 10 with the layer and the views
     };
     const auto& data = graph.add_pass<Data>(
         "water", fg::PassKind::Graphics,
@@ -38,20 +41,29 @@ void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uin
             d.surface = builder.read_storage(surface, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT);
             d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
             d.depth = builder.depth_stencil_attachment(graph.blackboard().get(keys::kSceneDepth), fg::LoadOp::Load);
+            d.layer.load(builder, graph.blackboard());
             d.lighting.declare(builder, graph.blackboard());
             constexpr VkPipelineStageFlags2 fragment = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
             if (lookups.reflection_view) d.reflection_view = builder.sample(*lookups.reflection_view, fragment);
             if (lookups.refraction_view) d.refraction_view = builder.sample(*lookups.refraction_view, fragment);
+            if (d.layer.image && d.refraction_view && graph.blackboard().has(keys::kRefractionViewCaustic)) {
+                d.refraction_view_caustic = builder.sample(graph.blackboard().get(keys::kRefractionViewCaustic), fragment);
+            }
         },
         [grid_resolution, lookups](const Data& d, fg::PassContext& context) {
             const bool views = d.reflection_view || d.refraction_view;
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "water_shading/water_surface.vert";
-            desc.fragment_shader = d.lighting.shader("water_shading/water_surface.frag") + (views ? "_views" : "");
+            desc.fragment_shader =
+                d.lighting.shader("water_shading/water_surface.frag") + (views ? "_views" : "") + d.layer.variant();
+            const bool layer_of_views = views && d.layer.image;
             desc.layout.bindings = {{2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT}};
             if (views) {
                 desc.layout.bindings.push_back({8, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
                 desc.layout.bindings.push_back({9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
+            }
+            if (layer_of_views) {
+                desc.layout.bindings.push_back({10, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
             }
             desc.layout.push_constant_bytes = sizeof(WaterPush);
             d.lighting.add_layout(desc.layout.bindings);
@@ -64,6 +76,12 @@ void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uin
                 const fg::ImageHandle either = d.reflection_view ? *d.reflection_view : *d.refraction_view;
                 bindings.push_back(context.sampled(8, d.reflection_view.value_or(either)));
                 bindings.push_back(context.sampled(9, d.refraction_view.value_or(either)));
+            }
+            // Without a refraction view the shader never reads binding 10 (its lookup is off):
+            // any image of the views stands in.
+            if (layer_of_views) {
+                const fg::ImageHandle either = d.reflection_view ? *d.reflection_view : *d.refraction_view;
+                bindings.push_back(context.sampled(10, d.refraction_view_caustic.value_or(either)));
             }
             context.bind(pipeline, bindings);
             const WaterPush push{grid_resolution,
@@ -78,6 +96,7 @@ void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uin
         });
     graph.blackboard().put(keys::kHdrColor, data.hdr);
     graph.blackboard().put(keys::kSceneDepth, data.depth);
+    data.layer.publish(graph.blackboard());
 }
 
 }  // namespace vkw::passes

@@ -16,6 +16,10 @@ inline constexpr fg::BlackboardKey<fg::BufferHandle> kSceneOptics{"scene optics"
 // while the stencil split runs; passes/water_volume_stencil.hpp).
 inline constexpr fg::BlackboardKey<fg::ImageHandle> kCameraMedium{"camera medium"};
 inline constexpr fg::BlackboardKey<passes::CausticMap> kCausticMap{"caustic map"};
+// RGBA32F, output size: the caustic layer (passes/caustic_layer.hpp), only when asked for.
+inline constexpr fg::BlackboardKey<fg::ImageHandle> kCausticLayer{"caustic layer"};
+// RGBA32F, the refraction scene view's size: its caustic layer, while both are drawn.
+inline constexpr fg::BlackboardKey<fg::ImageHandle> kRefractionViewCaustic{"refraction view caustic layer"};
 // Published only while the scene has receiver meshes and the sun is up (passes/sun_shadow.hpp).
 inline constexpr fg::BlackboardKey<passes::SunShadowMap> kSunShadow{"sun shadow map"};
 

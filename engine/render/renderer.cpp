@@ -56,7 +56,7 @@ bool casts_sun_shadows(const Scene& scene, const passes::ReceiverMeshes* receive
 // The scene views the water's reflected and refracted rays look the receiver meshes up in
 // (passes/scene_view.hpp), as the frame's needs and the scene's methods ask.
 passes::WaterSceneLookups scene_lookups(fg::FrameGraph& graph, const Scene& scene,
-                                        const passes::ReceiverMeshes* receivers) {
+                                        const passes::ReceiverMeshes* receivers, bool caustic_layer) {
     passes::WaterSceneLookups lookups;
     if (!receivers || receivers->empty()) return lookups;
     const EffectSettings& reflection = scene.effects[fg::Effect::Reflection];
@@ -70,7 +70,7 @@ passes::WaterSceneLookups scene_lookups(fg::FrameGraph& graph, const Scene& scen
     }
     if (graph.needs().needs(fg::Effect::Refraction)) {
         lookups.refraction_view =
-            passes::add_scene_view_pass(graph, *receivers, {"refraction view", false, false, clip_margin});
+            passes::add_scene_view_pass(graph, *receivers, {"refraction view", false, false, clip_margin, caustic_layer});
     }
     lookups.reflection_method = reflection.method;
     lookups.refraction_method = refraction.method;
@@ -86,7 +86,8 @@ passes::WaterSceneLookups scene_lookups(fg::FrameGraph& graph, const Scene& scen
 
 void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
                        uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
-                       const passes::ReceiverMeshes* receivers, const FrameOutput* output) {
+                       const passes::ReceiverMeshes* receivers, const FrameOutput* output, VkBuffer caustic_readback) {
+    const bool caustic_layer = caustic_readback != VK_NULL_HANDLE && !output;
     passes::add_frame_constants_upload(graph, constants);
     passes::add_scene_optics_pass(graph);
     // The sun shadow map first: the caustic photons are traced against it.
@@ -142,11 +143,11 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
     }
     // The sky after the stencil split: a ray from the water that meets nothing sees nothing.
     passes::add_sky_pass(graph);
-    passes::add_floor_pass(graph);
+    passes::add_floor_pass(graph, caustic_layer);
     if (receivers && !receivers->empty()) passes::add_receivers_pass(graph, *receivers);
     if (surface) {
         passes::add_water_shading_pass(graph, *surface, scene.water->grid_resolution,
-                                       scene_lookups(graph, scene, receivers));
+                                       scene_lookups(graph, scene, receivers, caustic_layer));
     }
     // Godrays only with a decision, as the frame constants' analytic in-scatter switch has it.
     const fg::EffectDecision* godrays = graph.needs().find(fg::Effect::VolumeCaustics);
@@ -160,12 +161,17 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
         return;
     }
     passes::add_readback_pass(graph, graph.blackboard().get(keys::kHdrColor), readback, hdr_bytes(width, height));
+    if (caustic_layer) {
+        passes::add_readback_pass(graph, graph.blackboard().get(keys::kCausticLayer), caustic_readback,
+                                  hdr_bytes(width, height), "caustic layer readback");
+    }
 }
 
 // Everything that depends on the configuration; destroyed in reverse order.
 struct Renderer::CompiledFrame {
     std::string configuration;
     Buffer readback;
+    Buffer caustic_readback;  // RenderOptions::caustic_layer only
     std::unique_ptr<fg::FrameGraph> graph;
     std::unique_ptr<fg::FrameExecutor> executor;
 };
@@ -251,6 +257,15 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options) 
     result.image.height = static_cast<int>(options.height);
     result.image.rgba.resize(size_t{options.width} * options.height * 4);
     std::memcpy(result.image.rgba.data(), frame.readback.mapped(), result.image.rgba.size() * sizeof(float));
+    if (options.caustic_layer) {
+        // RGBA on the device, RGB in the image's layer (the alpha holds nothing).
+        const auto* rgba = static_cast<const float*>(frame.caustic_readback.mapped());
+        ExtraLayer layer{"caustic", std::vector<float>(size_t{options.width} * options.height * 3)};
+        for (size_t i = 0; i < size_t{options.width} * options.height; ++i) {
+            for (int c = 0; c < 3; ++c) layer.rgb[3 * i + c] = rgba[4 * i + c];
+        }
+        result.image.layers.push_back(std::move(layer));
+    }
     return result;
 }
 
@@ -300,7 +315,8 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
                                       std::to_string(options.height) + " " +
                                       needs.key() + " " + std::to_string(int(options.recording)) + " " +
                                       std::to_string(int(options.check_finite)) + " " +
-                                      std::to_string(int(options.timing)) + " " +
+                                      std::to_string(int(options.timing)) + " layer " +
+                                      std::to_string(int(options.caustic_layer)) + " " +
                                       passes::godray_configuration(scene.effects.godrays) + " output " +
                                       (output ? output->key : std::string("readback"));
     *constants_ = make_frame_constants(scene, options.width, options.height);
@@ -319,11 +335,16 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
         if (!output) {
             frame->readback = Buffer(context_, {hdr_bytes(options.width, options.height), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
                                      "HDR readback");
+            if (options.caustic_layer) {
+                frame->caustic_readback =
+                    Buffer(context_, {hdr_bytes(options.width, options.height), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
+                           "caustic layer readback");
+            }
         }
         frame->graph = std::make_unique<fg::FrameGraph>(std::move(needs));
         frame->graph->set_default_recording(options.recording);
         build_frame_graph(*frame->graph, scene, constants_.get(), options.width, options.height,
-                          frame->readback.handle(), ocean, receivers, output);
+                          frame->readback.handle(), ocean, receivers, output, frame->caustic_readback.handle());
         frame->graph->compile(options.width, options.height);
         ++compile_count_;
         frame->executor = std::make_unique<fg::FrameExecutor>(context_, *frame->graph, pipelines_,

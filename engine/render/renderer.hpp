@@ -28,6 +28,8 @@ struct RenderOptions {
     // Tests use None: one submission, which synchronization validation can check whole.
     fg::TimingMode timing = fg::TimingMode::Auto;
     fg::RecordingKind recording = fg::RecordingKind::DynamicRendering;
+    // Also render the caustic layer (passes/caustic_layer.hpp) into the image's layer "caustic".
+    bool caustic_layer = false;
 };
 
 struct RenderResult {
@@ -52,10 +54,13 @@ struct FrameOutput {
 // The readback target is `readback` (VK_NULL_HANDLE when the graph is only printed);
 // `ocean` is the device copy of an FFT ocean's spectrum (nullptr for other waves);
 // `receivers` the scene's receiver meshes on the device (nullptr when it has none);
-// `output`, when given, ends the frame instead of the readback (which is then unused).
+// `output`, when given, ends the frame instead of the readback (which is then unused);
+// `caustic_readback`, when given (and no `output`), receives the caustic layer
+// (passes/caustic_layer.hpp), which the frame then renders.
 void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
                        uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
-                       const passes::ReceiverMeshes* receivers, const FrameOutput* output = nullptr);
+                       const passes::ReceiverMeshes* receivers, const FrameOutput* output = nullptr,
+                       VkBuffer caustic_readback = VK_NULL_HANDLE);
 
 class Renderer {
 public:

@@ -6,8 +6,9 @@
 // below it. Seen from a camera in the water, the view path attenuates and scatters. In a
 // scene view (passes/scene_view.hpp) it keeps one side of the water plane and writes what
 // leaves the receiver with its distance from the view's eye; the water adds the path.
-// Variants (shaders/CMakeLists.txt): VKWATER_PER_PIXEL_MEDIUM (the stencil split's mask)
-// and VKWATER_CAUSTICS (the caustic map).
+// Variants (shaders/CMakeLists.txt): VKWATER_PER_PIXEL_MEDIUM (the stencil split's mask),
+// VKWATER_CAUSTICS (the caustic map), and VKWATER_CAUSTIC_LAYER (a second output: the sun's
+// irradiance on the receiver under the water, 0 above it; passes/caustic_layer.hpp).
 #include "common/medium.glsl"
 #include "receivers/receiver_push.glsl"
 #include "scene_view/scene_view.glsl"
@@ -20,6 +21,9 @@ layout(location = 0) in vec3 in_world_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) flat in vec3 in_albedo;
 layout(location = 0) out vec4 out_radiance;
+#ifdef VKWATER_CAUSTIC_LAYER
+layout(location = 1) out vec4 out_caustic;
+#endif
 
 void main() {
     vec3 p = in_world_position;
@@ -29,6 +33,9 @@ void main() {
     // Lambertian surfaces are lit on the side the eye sees.
     if (dot(normal, eye - p) < 0.0) normal = -normal;
     vec3 radiance = lambert_radiance(in_albedo, receiver_irradiance(p, normal, optics));
+#ifdef VKWATER_CAUSTIC_LAYER
+    out_caustic = vec4(caustic_layer_value(p, normal, optics), 1.0);
+#endif
     if (in_scene_view()) {
         // What leaves the receiver, and how far it is: the water's shader adds the path.
         out_radiance = vec4(radiance, distance(eye, p));

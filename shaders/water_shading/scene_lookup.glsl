@@ -19,6 +19,10 @@
 // The camera's side of the surface (reflected rays) and the other side (refracted rays).
 layout(set = 0, binding = 8) uniform sampler2D reflection_view;
 layout(set = 0, binding = 9) uniform sampler2D refraction_view;
+#ifdef VKWATER_CAUSTIC_LAYER
+// The refraction view's caustic layer: the sun's irradiance on the receiver each texel holds.
+layout(set = 0, binding = 10) uniform sampler2D refraction_view_caustic;
+#endif
 
 const uint SCENE_LOOKUP_OFF = 0u;
 const uint SCENE_LOOKUP_PROJECTIVE = 1u;
@@ -36,6 +40,7 @@ const float SCENE_LOOKUP_THICKNESS = 0.05;
 struct SceneHit {
     vec3 radiance;   // leaving the receiver toward the ray's origin
     float distance;  // from the ray's origin, m
+    vec2 uv;         // the centre of the view's texel that holds it
 };
 
 // The view's texel under uv (nearest: the distances must not blend across edges), and
@@ -48,7 +53,7 @@ vec4 scene_view_texel(sampler2D view, vec2 uv, out vec2 texel_uv) {
 }
 
 bool projective_lookup(sampler2D view, bool mirrored, vec3 p, vec3 d, int max_steps, out SceneHit hit) {
-    hit = SceneHit(vec3(0.0), 0.0);
+    hit = SceneHit(vec3(0.0), 0.0, vec2(0.0));
     vec2 uv, texel_uv;
     if (!scene_view_uv(p, mirrored, uv)) return false;
     vec4 texel = scene_view_texel(view, uv, texel_uv);
@@ -63,7 +68,7 @@ bool projective_lookup(sampler2D view, bool mirrored, vec3 p, vec3 d, int max_st
         s = next;
         if (converged) break;
     }
-    hit = SceneHit(texel.rgb, s);
+    hit = SceneHit(texel.rgb, s, texel_uv);
     return true;
 }
 
@@ -79,7 +84,7 @@ float screen_space_step(vec3 h, vec3 d, vec2 view_size) {
 
 // max_distance: how far along the ray to look (the floor's distance, or the scene's size).
 bool screen_space_lookup(sampler2D view, vec3 p, vec3 d, float max_distance, int max_steps, out SceneHit hit) {
-    hit = SceneHit(vec3(0.0), 0.0);
+    hit = SceneHit(vec3(0.0), 0.0, vec2(0.0));
     vec3 eye = frame.camera_position.xyz;
     vec2 view_size = vec2(textureSize(view, 0));
     float s = 0.0, previous = 0.0;
@@ -102,7 +107,7 @@ bool screen_space_lookup(sampler2D view, vec3 p, vec3 d, float max_distance, int
                 if (behind) hi = mid; else lo = mid;
             }
             scene_view_uv(p + hi * d, false, uv);
-            hit = SceneHit(scene_view_texel(view, uv, texel_uv).rgb, hi);
+            hit = SceneHit(scene_view_texel(view, uv, texel_uv).rgb, hi, texel_uv);
             return true;
         }
         previous = s;
@@ -116,7 +121,7 @@ bool screen_space_lookup(sampler2D view, vec3 p, vec3 d, float max_distance, int
 }
 
 bool scene_lookup(uint method, bool reflected, vec3 p, vec3 d, float max_distance, int max_steps, out SceneHit hit) {
-    hit = SceneHit(vec3(0.0), 0.0);
+    hit = SceneHit(vec3(0.0), 0.0, vec2(0.0));
     if (method == SCENE_LOOKUP_PROJECTIVE) {
         // Reflected rays read the mirrored view; refracted rays the camera's view of the other side.
         return reflected ? projective_lookup(reflection_view, true, p, d, max_steps, hit)

@@ -30,7 +30,7 @@ bool point_under_water(vec3 p) {
 //   the map sees along t (the shadow map's beam half) reads nothing;
 // - the stand-in is shadowed by objects under the water along t (the beam half) and by objects
 //   above it where the beam enters the flat surface (the sun half).
-vec3 receiver_irradiance_under_water(vec3 p, vec3 normal, SceneOptics optics) {
+vec3 sun_irradiance_under_water(vec3 p, vec3 normal, SceneOptics optics) {
     float depth = max(0.0, frame.water.x - p.y);
     vec3 sigma_t = frame.medium_sigma_t.rgb;
     float cos_receiver = max(0.0, -dot(optics.refracted_sun.xyz, normal));
@@ -46,8 +46,19 @@ vec3 receiver_irradiance_under_water(vec3 p, vec3 normal, SceneOptics optics) {
 #endif
     if (cos_receiver > 0.0) sun *= beam_visibility_under_water(p, cos_receiver);
 #endif
-    vec3 sky = PI * frame.sky_average.rgb * optics.transmission.x * exp(-sigma_t * depth);
-    return sun + sky;
+    return sun;
+}
+
+vec3 receiver_irradiance_under_water(vec3 p, vec3 normal, SceneOptics optics) {
+    float depth = max(0.0, frame.water.x - p.y);
+    vec3 sky = PI * frame.sky_average.rgb * optics.transmission.x * exp(-frame.medium_sigma_t.rgb * depth);
+    return sun_irradiance_under_water(p, normal, optics) + sky;
+}
+
+// The caustic layer's value at a receiver point (EXR channels caustic.R/G/B, as the reference
+// writes them): the sun's irradiance there when it lies under the water, 0 above it.
+vec3 caustic_layer_value(vec3 p, vec3 normal, SceneOptics optics) {
+    return point_under_water(p) ? sun_irradiance_under_water(p, normal, optics) : vec3(0.0);
 }
 
 vec3 receiver_irradiance(vec3 p, vec3 normal, SceneOptics optics) {
@@ -55,16 +66,22 @@ vec3 receiver_irradiance(vec3 p, vec3 normal, SceneOptics optics) {
                                 : receiver_irradiance_above_water(p, normal);
 }
 
-// Where a ray from p in direction d (in the water) meets the floor plane, and the
-// floor's radiance there; false when it does not meet the floor within its extent.
-bool floor_along(vec3 p, vec3 d, SceneOptics optics, out float distance_to_floor, out vec3 radiance) {
+// Where a ray from p in direction d (in the water) meets the floor plane, the floor's radiance
+// there and its caustic layer value; false when it does not meet the floor within its extent.
+bool floor_along(vec3 p, vec3 d, SceneOptics optics, out float distance_to_floor, out vec3 radiance,
+                 out vec3 caustic) {
     radiance = vec3(0.0);
+    caustic = vec3(0.0);
     distance_to_floor = 0.0;
     if (d.y > -1e-6) return false;
     distance_to_floor = (p.y - frame.floor_plane.x) / -d.y;
     vec3 hit = p + distance_to_floor * d;
     if (abs(hit.x) > frame.floor_plane.y || abs(hit.z) > frame.floor_plane.y) return false;
-    radiance = lambert_radiance(frame.floor_albedo.rgb, receiver_irradiance(hit, vec3(0.0, 1.0, 0.0), optics));
+    const vec3 up = vec3(0.0, 1.0, 0.0);
+    radiance = lambert_radiance(frame.floor_albedo.rgb, receiver_irradiance(hit, up, optics));
+#ifdef VKWATER_CAUSTIC_LAYER
+    caustic = caustic_layer_value(hit, up, optics);
+#endif
     return true;
 }
 

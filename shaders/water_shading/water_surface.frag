@@ -8,7 +8,9 @@
 // VKWATER_PER_PIXEL_MEDIUM (the stencil split's mask), VKWATER_CAUSTICS (the floor seen
 // through the water reads the caustic map) and VKWATER_SCENE_VIEWS (reflected and refracted
 // rays also meet the receiver meshes, through the scene views: water_shading/scene_lookup.glsl;
-// the floor and the sky stay exact).
+// the floor and the sky stay exact). VKWATER_CAUSTIC_LAYER adds a second output: the sun's
+// irradiance on the receiver the refracted view ray meets (0 for a camera in the water, whose
+// pixels on the surface see the air or a reflection), as the reference's caustic layer.
 #include "common/camera_ray.glsl"
 #include "common/fresnel.glsl"
 #include "common/medium.glsl"
@@ -38,9 +40,10 @@ const float SCREEN_SPACE_FRESNEL_SKIP = 0.01;
 // The receiver mesh a reflected (or refracted) ray from p meets before `limit`, if any;
 // `weight` is the ray's Fresnel weight (R or T).
 bool object_along(bool reflected, vec3 p, vec3 d, float limit, float weight, out vec3 radiance,
-                  out float distance_to_object) {
+                  out float distance_to_object, out vec2 object_uv) {
     radiance = vec3(0.0);
     distance_to_object = 0.0;
+    object_uv = vec2(0.0);
 #ifdef VKWATER_SCENE_VIEWS
     // The views keep the sides of the frame's camera medium; pixels whose ray starts on
     // the other side (the camera crossing the surface) keep the exact lookups alone.
@@ -52,6 +55,7 @@ bool object_along(bool reflected, vec3 p, vec3 d, float limit, float weight, out
     if (scene_lookup(method, reflected, p, d, limit, steps, hit) && hit.distance < limit) {
         radiance = hit.radiance;
         distance_to_object = hit.distance;
+        object_uv = hit.uv;
         return true;
     }
 #endif
@@ -61,20 +65,30 @@ bool object_along(bool reflected, vec3 p, vec3 d, float limit, float weight, out
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 0) out vec4 out_radiance;
+#ifdef VKWATER_CAUSTIC_LAYER
+layout(location = 1) out vec4 out_caustic;
+#endif
 
 // Radiance arriving at p along d inside the water: the floor or object it meets,
 // attenuated, plus the sun's beam scattered along the way. `reflected`: d is the
 // reflection of a ray from the water (else the refraction of one from the air).
-vec3 radiance_in_water(vec3 p, vec3 d, bool reflected, float weight, out float length_in_water) {
+// `caustic`: the caustic layer's value at what it meets (VKWATER_CAUSTIC_LAYER; else 0).
+vec3 radiance_in_water(vec3 p, vec3 d, bool reflected, float weight, out float length_in_water, out vec3 caustic) {
     vec3 behind;
-    bool floor_hit = floor_along(p, d, optics, length_in_water, behind);
+    bool floor_hit = floor_along(p, d, optics, length_in_water, behind, caustic);
     if (!floor_hit) length_in_water = 0.0;
     vec3 object;
     float distance_to_object;
+    vec2 object_uv;
     if (object_along(reflected, p, d, floor_hit ? length_in_water : params.scene_size, weight, object,
-                     distance_to_object)) {
+                     distance_to_object, object_uv)) {
         behind = object;
         length_in_water = distance_to_object;
+#if defined(VKWATER_CAUSTIC_LAYER) && defined(VKWATER_SCENE_VIEWS)
+        caustic = reflected ? vec3(0.0)
+                            : texelFetch(refraction_view_caustic,
+                                         ivec2(object_uv * vec2(textureSize(refraction_view_caustic, 0))), 0).rgb;
+#endif
     }
     return water_path_radiance(analytic_inscatter_sigma_s(), frame.medium_sigma_t.rgb, frame.medium_sigma_s.w,
                                max(0.0, frame.water.x - p.y), length_in_water, d, optics.refracted_sun.xyz,
@@ -95,39 +109,51 @@ void main() {
         vec3 reflected = sky_radiance(reflected_direction);
         vec3 object;
         float distance_to_object;
-        if (object_along(true, p, reflected_direction, params.scene_size, f.R, object, distance_to_object)) {
+        vec2 object_uv;
+        if (object_along(true, p, reflected_direction, params.scene_size, f.R, object, distance_to_object,
+                         object_uv)) {
             reflected = object;
         }
         vec3 refracted_direction;
         vec3 transmitted = vec3(0.0);
+        vec3 caustic = vec3(0.0);
         if (refract_direction(v, normal, 1.0 / n, refracted_direction)) {
             float refracted_length;
-            transmitted = radiance_in_water(p, refracted_direction, false, f.T, refracted_length) / (n * n);
+            transmitted = radiance_in_water(p, refracted_direction, false, f.T, refracted_length, caustic) / (n * n);
 #ifdef VKWATER_SCENE_VIEWS
             // Seed 002: in very shallow water the screen-space refraction fades to what lies
             // straight behind the surface, by the water's depth along the view ray (a chosen
             // approximation: it hides the march's misses where the water thins out; off by default).
             if (params.refraction_method == SCENE_LOOKUP_SCREEN_SPACE && params.shallow_blend > 0.0) {
                 float direct_length;
-                vec3 direct = radiance_in_water(p, v, false, f.T, direct_length) / (n * n);
+                vec3 direct_caustic;
+                vec3 direct = radiance_in_water(p, v, false, f.T, direct_length, direct_caustic) / (n * n);
                 transmitted = mix(direct, transmitted, clamp(direct_length / params.shallow_blend, 0.0, 1.0));
             }
 #endif
         }
         out_radiance = vec4(f.R * reflected + f.T * transmitted, 1.0);
+#ifdef VKWATER_CAUSTIC_LAYER
+        out_caustic = vec4(caustic, 1.0);
+#endif
         return;
     }
     // From the water: total internal reflection outside Snell's window.
     vec3 water_side = -normal;
     Fresnel f = fresnel_exact(max(0.0, dot(v, normal)), n, 1.0);
     float reflected_length;
-    vec3 at_surface = f.R * radiance_in_water(p, reflect(v, water_side), true, f.R, reflected_length);
+    vec3 reflected_caustic;  // not in the layer: the reference records the first receiver only
+    vec3 at_surface =
+        f.R * radiance_in_water(p, reflect(v, water_side), true, f.R, reflected_length, reflected_caustic);
     vec3 to_air;
     if (!f.total_internal_reflection && refract_direction(v, water_side, n, to_air)) {
         vec3 above = sky_radiance(to_air);
         vec3 object;
         float distance_to_object;
-        if (object_along(false, p, to_air, params.scene_size, f.T, object, distance_to_object)) above = object;
+        vec2 object_uv;
+        if (object_along(false, p, to_air, params.scene_size, f.T, object, distance_to_object, object_uv)) {
+            above = object;
+        }
         at_surface += f.T * n * n * above;
     }
     float camera_depth = max(0.0, frame.water.x - eye.y);
@@ -135,4 +161,7 @@ void main() {
                                             frame.medium_sigma_s.w, camera_depth, distance(eye, p), v,
                                             optics.refracted_sun.xyz, optics.e_perp0.rgb, at_surface),
                         1.0);
+#ifdef VKWATER_CAUSTIC_LAYER
+    out_caustic = vec4(0.0);
+#endif
 }

@@ -151,7 +151,7 @@ TEST(cli, CompareAnImageWithItselfGivesZeroErrors) {
 }
 
 TEST(cli, CompareDownsampledAndCausticLayer) {
-    // The reference writes the caustic layer, the real-time render (so far) does not.
+    // Both write the caustic layer; `render --no-caustic-layer` leaves it out.
     const std::string calm = std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json";
     const fs::path reference = scratch("compare_layer_ref.exr"), render = scratch("compare_layer_rt.exr");
     ASSERT_EQ(run_vkwater("reference " + calm + " --width 32 --height 24 --out " + reference.string()).exit_code, 0);
@@ -162,6 +162,13 @@ TEST(cli, CompareDownsampledAndCausticLayer) {
         EXPECT_NE(same.output.find(line), std::string::npos) << line << " missing in:\n" << same.output;
     }
     ASSERT_EQ(run_vkwater("render " + calm + " --width 32 --height 24 --out " + render.string()).exit_code, 0);
+    const CommandRun layered = run_vkwater("compare " + render.string() + " " + reference.string());
+    EXPECT_EQ(layered.exit_code, 0) << layered.output;
+    EXPECT_NE(layered.output.find("\ncaustic relMSE "), std::string::npos) << layered.output;
+    EXPECT_EQ(layered.output.find("caustic relMSE n/a"), std::string::npos) << layered.output;
+    ASSERT_EQ(run_vkwater("render " + calm + " --width 32 --height 24 --no-caustic-layer --out " + render.string())
+                  .exit_code,
+              0);
     const CommandRun no_layer = run_vkwater("compare " + render.string() + " " + reference.string());
     EXPECT_EQ(no_layer.exit_code, 0) << no_layer.output;
     EXPECT_NE(no_layer.output.find("\ncaustic relMSE n/a (the test image has no layer 'caustic')\n"), std::string::npos)

@@ -8,6 +8,7 @@
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
 #include "tools/metrics/metrics.hpp"
+#include "tools/metrics/reference_errors.hpp"
 #include "tools/vkwater/commands.hpp"
 
 #include <chrono>
@@ -26,6 +27,7 @@ struct RenderArgs {
     bool half = false;
     bool png = false;
     bool check_finite = false;
+    bool no_caustic_layer = false;
     uint32_t repeat = 1;
     std::string recording = "dynamic";
     std::vector<std::string> overrides;
@@ -58,6 +60,7 @@ int run_render(const RenderArgs& args) {
     options.width = args.width;
     options.height = args.height;
     options.check_finite = args.check_finite;
+    options.caustic_layer = !args.no_caustic_layer;
     options.recording =
         args.recording == "renderpass" ? fg::RecordingKind::RenderPassObject : fg::RecordingKind::DynamicRendering;
     RenderResult result;
@@ -86,8 +89,10 @@ int run_render(const RenderArgs& args) {
         const ImageRGBA32F reference = read_exr(args.reference);
         const metrics::Metrics error = metrics::compare_images(result.image, reference);
         std::printf("time: %.2f ms per frame (%s)\n", result.timing.total_ms, result.timing.method_name().c_str());
-        std::printf("error against %s: relMSE %.6g, FLIP %.6g, bias %.6g, L*u*v* %.6g\n", args.reference.c_str(),
-                    error.rel_mse, error.flip_mean, error.bias, error.luv_mean);
+        const metrics::LayerRelMse caustic = metrics::layer_rel_mse(result.image, reference, metrics::kCausticLayer);
+        std::printf("error against %s: relMSE %.6g, FLIP %.6g, bias %.6g, L*u*v* %.6g, caustic relMSE %s\n",
+                    args.reference.c_str(), error.rel_mse, error.flip_mean, error.bias, error.luv_mean,
+                    caustic.text().c_str());
     }
     const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::printf("total %.1f ms (whole command)\n", total);
@@ -115,6 +120,9 @@ Run add_render_command(CLI::App& app) {
                         "compilation of shader variants on first use")
         ->check(CLI::Range(1u, 10000u))
         ->capture_default_str();
+    command->add_flag("--no-caustic-layer", args->no_caustic_layer,
+                      "Leave out the EXR layer caustic.R/G/B (the sun's irradiance on the receiver each pixel sees "
+                      "under the water), and the second colour target its passes write");
     command->add_flag("--check-finite", args->check_finite,
                       "After each pass, scan every float target it wrote for NaN/Inf and name the first");
     command->add_option("--recording", args->recording, "Graphics pass recording: dynamic or renderpass")
