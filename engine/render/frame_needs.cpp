@@ -15,6 +15,12 @@ std::string format(const char* pattern, double a, double b) {
     return text;
 }
 
+std::string format(const char* pattern, double a) {
+    char text[160];
+    std::snprintf(text, sizeof text, pattern, a);
+    return text;
+}
+
 // True unless all eight corners of the box lie outside one clip plane (a conservative
 // frustum test: it may keep a box that is just outside a corner of the frustum).
 bool box_may_be_visible(const glm::dmat4& view_proj, const glm::dvec3& lo, const glm::dvec3& hi) {
@@ -139,6 +145,7 @@ fg::FrameNeeds decide_frame_needs(const Scene& scene, double aspect) {
         decide(needs, scene, fg::Effect::Water, false, "the scene has no water");
         decide(needs, scene, fg::Effect::UnderwaterView, false, "the scene has no water");
         decide(needs, scene, fg::Effect::SurfaceCaustics, false, "the scene has no water");
+        decide(needs, scene, fg::Effect::CausticBlur, false, "the scene has no water");
         decide(needs, scene, fg::Effect::Reflection, false, "the scene has no water");
         decide(needs, scene, fg::Effect::Refraction, false, "the scene has no water");
         decide(needs, scene, fg::Effect::VolumeCaustics, false, "the scene has no water");
@@ -181,6 +188,14 @@ fg::FrameNeeds decide_frame_needs(const Scene& scene, double aspect) {
                            : format("the sun is up and receiver meshes reach under the water (down to y = %.3g m, "
                                     "crest %.3g m)",
                                     meshes.lowest, bounds.hi.y));
+    // The blur feeds nothing but the caustic map: needed when the map is and its radius is not 0.
+    const fg::EffectDecision* caustics = needs.find(fg::Effect::SurfaceCaustics);
+    const bool caustics_run = caustics && caustics->needed;
+    const double blur_radius = scene.effects.caustic_blur.radius;
+    decide(needs, scene, fg::Effect::CausticBlur, caustics_run && blur_radius > 0.0,
+           !caustics_run       ? "the caustic passes do not run"
+           : blur_radius > 0.0 ? format("the caustic map runs and caustic_blur.radius = %.3g texels", blur_radius)
+                               : "caustic_blur.radius = 0 (no blur)");
     decide_godrays(needs, scene, bounds, water_visible, sun_up);
 
     const bool underwater = over_water && lowest < bounds.hi.y && highest > bounds.lo.y;

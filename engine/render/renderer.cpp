@@ -9,6 +9,7 @@
 #include "passes/floor.hpp"
 #include "passes/frame_constants_upload.hpp"
 #include "passes/godrays.hpp"
+#include "passes/caustics_blur.hpp"
 #include "passes/readback.hpp"
 #include "passes/receiver_meshes.hpp"
 #include "passes/receivers.hpp"
@@ -133,12 +134,12 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
             caustics.jitter = scene.effects.caustics.jitter;
             caustics.kernel = scene.effects.caustics.kernel;
             caustics.map_width = caustics.map_height = caustic_map_texels(water.grid_resolution);
-            graph.blackboard().put(keys::kCausticMap,
-                                   passes::add_caustic_resolve_pass(
-                                       graph,
-                                       passes::add_caustic_photon_pass(graph, caustics,
-                                                                       sun_shadow ? &*sun_shadow : nullptr),
-                                       caustics));
+            passes::CausticMap map = passes::add_caustic_resolve_pass(
+                graph, passes::add_caustic_photon_pass(graph, caustics, sun_shadow ? &*sun_shadow : nullptr), caustics);
+            if (graph.needs().needs(fg::Effect::CausticBlur)) {
+                map = passes::add_caustic_blur_pass(graph, map, caustics, scene.effects.caustic_blur.radius);
+            }
+            graph.blackboard().put(keys::kCausticMap, map);
         }
     }
     // The sky after the stencil split: a ray from the water that meets nothing sees nothing.
@@ -195,7 +196,7 @@ std::string Renderer::water_configuration(const Scene& scene) {
     // The photon pass captures its sampling and its splat kernel at declaration.
     const CausticSettings& caustics = scene.effects.caustics;
     key += " photons " + std::to_string(caustics.sub_photons) + "/" + std::to_string(int(caustics.jitter)) + "/" +
-           std::to_string(int(caustics.kernel));
+           std::to_string(int(caustics.kernel)) + " blur " + std::to_string(scene.effects.caustic_blur.radius);
     // The water pass and the scene views capture the lookup methods at declaration.
     for (const fg::Effect effect : {fg::Effect::Reflection, fg::Effect::Refraction}) {
         key += " " + std::to_string(int(scene.effects[effect].method)) + "/" + std::to_string(scene.effects[effect].max_steps) +

@@ -1,5 +1,6 @@
 // The settings of "effects.caustics" beside its mode (effects_json.cpp reads the mode): whether
-// flat water keeps the exact stand-in, the photons per water cell, and their splat kernel.
+// flat water keeps the exact stand-in, the photons per water cell, and their splat kernel; and
+// of "effects.caustic_blur": its radius.
 #include "engine/scene/scene_json.hpp"
 
 #include <array>
@@ -24,6 +25,14 @@ CausticSettings read_caustic_settings(FieldReader& fields) {
     caustics.kernel = fields.choice("kernel", kKernels, defaults.kernel);
     fields.finish();
     return caustics;
+}
+
+CausticBlurSettings read_caustic_blur_settings(FieldReader& fields) {
+    const CausticBlurSettings defaults;
+    CausticBlurSettings blur;
+    blur.radius = fields.number("radius", Range::closed(0.0, 4.0, "texels"), defaults.radius);
+    fields.finish();
+    return blur;
 }
 
 }  // namespace vkw

@@ -69,6 +69,14 @@ EffectsSettings read_effects(FieldReader& fields) {
             });
             continue;
         }
+        if (effect.value == fg::Effect::CausticBlur) {  // and their blur
+            effects[effect.value] = fields.object(effect.name, Presence::optional, [&](FieldReader& blur) {
+                const EffectSettings mode = read_effect(blur);
+                effects.caustic_blur = read_caustic_blur_settings(blur);
+                return mode;
+            });
+            continue;
+        }
         const auto reader = effect.value == fg::Effect::Reflection   ? read_scene_lookup_effect
                             : effect.value == fg::Effect::Refraction ? read_refraction_effect
                                                                      : read_effect;

@@ -25,6 +25,7 @@ Medium read_medium(FieldReader& fields);          // medium_json.cpp
 EffectsSettings read_effects(FieldReader& fields);  // effects_json.cpp
 GodraySettings read_godray_settings(FieldReader& fields);  // godrays_json.cpp: effects.godrays but its mode
 CausticSettings read_caustic_settings(FieldReader& fields);  // caustics_json.cpp: effects.caustics but its mode
+CausticBlurSettings read_caustic_blur_settings(FieldReader& fields);  // caustics_json.cpp: effects.caustic_blur but its mode
 // `base_dir`: the scene file's folder, against which glTF file names are resolved.
 Receiver read_receiver(FieldReader& fields, const std::filesystem::path& base_dir);  // receiver_json.cpp
 

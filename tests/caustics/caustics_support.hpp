@@ -8,6 +8,7 @@
 #include "engine/vk/resources.hpp"
 #include "engine/water/surface.hpp"
 #include "passes/caustics_bands.hpp"
+#include "passes/caustics_blur.hpp"
 #include "passes/caustics_photons.hpp"
 #include "passes/caustics_resolve.hpp"
 #include "passes/readback.hpp"
@@ -37,7 +38,8 @@ struct ProbeGrid {
 
 struct CausticRun {
     std::vector<uint64_t> flux;     // the fixed-point buffer, header included
-    std::vector<float> irradiance;  // W x H x RGBA, the resolved map
+    std::vector<float> irradiance;  // W x H x RGBA, the resolved map (blurred, when run with a blur)
+    std::vector<float> unblurred;   // W x H x RGBA, the resolved map before the blur (with a blur only)
     std::vector<float> probes;      // count_x x count_z x RGBA: caustic_irradiance at the probes
 
     uint64_t lost(int c) const { return flux[c]; }
@@ -108,7 +110,12 @@ inline passes::SunShadowInputs caustic_shadow_inputs(const passes::CausticInputs
 // submission with validation. With meshes, their sun shadow map (caustic_shadow_inputs) too.
 inline CausticRun run_caustics(Context& context, const passes::WaterSurfaceInputs& surface,
                                passes::CausticInputs caustics, const ProbeGrid& probes = {},
-                               const passes::ReceiverMeshes* meshes = nullptr, double floor_half_extent = 10.0) {
+                               const passes::ReceiverMeshes* meshes = nullptr, double floor_half_extent = 10.0,
+                               double blur_radius = -1.0) {
+    // The surface's own grid and extent (before the fit, which sizes the readbacks).
+    caustics.grid_resolution = surface.grid_resolution;
+    caustics.water_level = surface.level;
+    caustics.half_extent = surface.half_extent;
     // The map's own size: the requested W x H plus the margin the waves' crests need.
     const passes::CausticMapFrame frame = passes::fit_caustic_map(caustics);
     const VkDeviceSize flux_bytes = passes::caustic_flux_bytes(frame.width, frame.height);
@@ -116,21 +123,23 @@ inline CausticRun run_caustics(Context& context, const passes::WaterSurfaceInput
     const VkDeviceSize probe_bytes = std::max<VkDeviceSize>(16, VkDeviceSize{probes.count_x} * probes.count_z * 16);
     Buffer flux_host(context, {flux_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "caustic flux readback");
     Buffer image_host(context, {image_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "caustic map readback");
+    Buffer unblurred_host(context, {image_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "unblurred map readback");
     Buffer probe_host(context, {probe_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "caustic probe readback");
     {
         fg::PipelineStore pipelines;
         fg::FrameGraph graph;
         caustics.surface = passes::add_water_surface_pass(graph, surface);
-        caustics.grid_resolution = surface.grid_resolution;
-        caustics.water_level = surface.level;
-        caustics.half_extent = surface.half_extent;
         std::optional<passes::SunShadowMap> shadow;
         if (meshes) {
             shadow = passes::add_sun_shadow_pass(graph, *meshes,
                                                  caustic_shadow_inputs(caustics, *meshes, floor_half_extent, surface.level));
         }
         const fg::BufferHandle flux = passes::add_caustic_photon_pass(graph, caustics, shadow ? &*shadow : nullptr);
-        const passes::CausticMap map = passes::add_caustic_resolve_pass(graph, flux, caustics);
+        passes::CausticMap map = passes::add_caustic_resolve_pass(graph, flux, caustics);
+        if (blur_radius >= 0.0) {
+            passes::add_readback_pass(graph, map.irradiance, unblurred_host.handle(), image_bytes, "unblurred readback");
+            map = passes::add_caustic_blur_pass(graph, map, caustics, blur_radius);
+        }
         passes::add_readback_pass(graph, flux, flux_host.handle(), flux_bytes, "flux readback");
         passes::add_readback_pass(graph, map.irradiance, image_host.handle(), image_bytes, "map readback");
         if (probes.count_x * probes.count_z > 0) add_probe_pass(graph, map, probes, probe_host.handle(), probe_bytes);
@@ -143,6 +152,10 @@ inline CausticRun run_caustics(Context& context, const passes::WaterSurfaceInput
     std::memcpy(run.flux.data(), flux_host.mapped(), flux_bytes);
     run.irradiance.resize(image_bytes / 4);
     std::memcpy(run.irradiance.data(), image_host.mapped(), image_bytes);
+    if (blur_radius >= 0.0) {
+        run.unblurred.resize(image_bytes / 4);
+        std::memcpy(run.unblurred.data(), unblurred_host.mapped(), image_bytes);
+    }
     run.probes.resize(VkDeviceSize{probes.count_x} * probes.count_z * 4);
     std::memcpy(run.probes.data(), probe_host.mapped(), run.probes.size() * 4);
     return run;

@@ -105,6 +105,19 @@ TEST_F(WaterRule, CulledWaterImageEqualsForcedOnImage) {
     EXPECT_EQ(culled.image.rgba, forced_on.image.rgba);
 }
 
+TEST_F(WaterRule, CulledCausticBlurImageEqualsForcedOnImage) {
+    // caustic_blur.radius = 0 (the default): the rule culls the blur. Forced on, its two passes
+    // run with every width h = 1, the identity (each texel keeps its value times 1 / 1), so the
+    // images are equal exactly.
+    Renderer renderer(context());
+    const RenderResult culled = renderer.render(builtin("pool.json"), {kWidth, kHeight, true, fg::TimingMode::None});
+    const size_t pipelines_culled = renderer.pipelines().size();
+    const RenderResult forced_on = renderer.render(builtin("pool.json", {"effects.caustic_blur.mode=on"}),
+                                                   {kWidth, kHeight, true, fg::TimingMode::None});
+    EXPECT_GT(renderer.pipelines().size(), pipelines_culled) << "forcing the blur on created no pipeline";
+    EXPECT_EQ(culled.image.rgba, forced_on.image.rgba);
+}
+
 TEST_F(WaterRule, CulledCausticsImageEqualsForcedOnImage) {
     // The sun below the horizon: the rule culls the caustic passes. Forced on, they trace
     // photons that all drop (no sunlight), and the map replaces a stand-in that is 0 too:

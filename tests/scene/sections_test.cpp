@@ -94,6 +94,13 @@ TEST(scene_effects, CausticSettingsDefaultsReadAndRanges) {
     const std::string sub = error_with("effects.caustics.sub_photons=9");
     EXPECT_NE(sub.find("effects.caustics.sub_photons"), std::string::npos) << sub;
     EXPECT_NE(sub.find("8"), std::string::npos) << sub;
+
+    // effects.caustic_blur.radius: 0 by default (no blur), texels in [0, 4].
+    EXPECT_EQ(with({}).effects.caustic_blur.radius, 0.0);
+    EXPECT_EQ(with({"effects.caustic_blur.radius=1.5"}).effects.caustic_blur.radius, 1.5);
+    const std::string radius = error_with("effects.caustic_blur.radius=5");
+    EXPECT_NE(radius.find("effects.caustic_blur.radius"), std::string::npos) << radius;
+    EXPECT_NE(radius.find("texels"), std::string::npos) << radius;
 }
 
 TEST(scene_overrides, ArrayElementsByIndex) {
