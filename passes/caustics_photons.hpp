@@ -10,7 +10,8 @@
 // (caustics_light_space.hpp gives the LSB and the headroom), so two runs are bit-identical.
 // Dropped photons: the cell faces away from the sun, the refracted ray points up
 // (t.y > -1e-6), the surface lies below the floor, the sun is not above the horizon, or (with the
-// sun shadow map) an object above the water shadows the entry point. No jitter.
+// sun shadow map) an object above the water shadows the entry point; non-finite flux (dropped at
+// its producer, so nothing downstream sees a NaN).
 // Receivers: the floor plane, exactly; with the sun shadow map, also the receiver meshes under
 // the water as its beam half sees them along the flat-water refracted sun (the caustic map's own
 // direction), found by shaders/caustics/caustic_receiver_hit.glsl. A photon whose ray leaves that
