@@ -42,6 +42,22 @@ TEST(reference_manifest, EveryEntryMatchesItsSceneFileAndImage) {
     }
 }
 
+TEST(reference_manifest, EveryBuiltInSceneHasAReference) {
+    // Issue 10: a 400x300 reference of every built-in scene (scenes/*.json).
+    const nlohmann::json entries = manifest();
+    int scenes = 0;
+    for (const auto& file : std::filesystem::directory_iterator(kReferences / "../../scenes")) {
+        if (file.path().extension() != ".json") continue;
+        ++scenes;
+        const std::string name = file.path().filename().string();
+        EXPECT_TRUE(entries.contains(name)) << name << " has no reference; render it with\n  vkwater reference scenes/"
+                                            << name << " --out tests/references/"
+                                            << file.path().stem().string() << ".exr --manifest "
+                                            << "tests/references/manifest.json";
+    }
+    EXPECT_GT(scenes, 0);
+}
+
 TEST(reference_manifest, TheReferenceRendererReproducesEveryCommittedImage) {
     const nlohmann::json entries = manifest();  // items() must not outlive the json it walks
     for (const auto& [name, entry] : entries.items()) {
