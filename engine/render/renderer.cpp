@@ -34,7 +34,12 @@ namespace {
 // per side, plus the fit's one-texel border), so that each texel receives about one
 // photon on flat water and the 2x2 splat kernel leaves no holes between photons (the
 // photon-density sizing of the splat, seed 000's point size regulation, comes later).
-uint32_t caustic_map_texels(uint32_t grid_resolution) { return std::clamp(grid_resolution + 2, 16u, 16384u); }
+// The caustic map's texels per side: map_scale texels per water cell, plus a texel of border on
+// each side (scale 1: texel = cell, passes/caustics_light_space.hpp).
+uint32_t caustic_map_texels(uint32_t grid_resolution, double map_scale) {
+    const auto texels = static_cast<uint32_t>(std::lround(grid_resolution * map_scale));
+    return std::clamp(texels + 2, 16u, 16384u);
+}
 
 VkDeviceSize hdr_bytes(uint32_t width, uint32_t height) { return VkDeviceSize{width} * height * 4 * sizeof(float); }
 
@@ -133,7 +138,8 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
             caustics.sub_photons = scene.effects.caustics.sub_photons;
             caustics.jitter = scene.effects.caustics.jitter;
             caustics.kernel = scene.effects.caustics.kernel;
-            caustics.map_width = caustics.map_height = caustic_map_texels(water.grid_resolution);
+            caustics.map_width = caustics.map_height =
+                caustic_map_texels(water.grid_resolution, scene.effects.caustics.map_scale);
             passes::CausticMap map = passes::add_caustic_resolve_pass(
                 graph, passes::add_caustic_photon_pass(graph, caustics, sun_shadow ? &*sun_shadow : nullptr), caustics);
             if (graph.needs().needs(fg::Effect::CausticBlur)) {
@@ -196,7 +202,8 @@ std::string Renderer::water_configuration(const Scene& scene) {
     // The photon pass captures its sampling and its splat kernel at declaration.
     const CausticSettings& caustics = scene.effects.caustics;
     key += " photons " + std::to_string(caustics.sub_photons) + "/" + std::to_string(int(caustics.jitter)) + "/" +
-           std::to_string(int(caustics.kernel)) + " blur " + std::to_string(scene.effects.caustic_blur.radius);
+           std::to_string(int(caustics.kernel)) + "/" + std::to_string(caustics.map_scale) + " blur " +
+           std::to_string(scene.effects.caustic_blur.radius);
     // The water pass and the scene views capture the lookup methods at declaration.
     for (const fg::Effect effect : {fg::Effect::Reflection, fg::Effect::Refraction}) {
         key += " " + std::to_string(int(scene.effects[effect].method)) + "/" + std::to_string(scene.effects[effect].max_steps) +

@@ -23,6 +23,7 @@ CausticSettings read_caustic_settings(FieldReader& fields) {
         fields.integer("sub_photons", Range::closed(1.0, 8.0, "photons per cell side"), defaults.sub_photons));
     caustics.jitter = fields.boolean("jitter", defaults.jitter);
     caustics.kernel = fields.choice("kernel", kKernels, defaults.kernel);
+    caustics.map_scale = fields.number("map_scale", Range::closed(0.25, 4.0, "texels per water cell"), defaults.map_scale);
     fields.finish();
     return caustics;
 }

@@ -145,6 +145,10 @@ struct CausticSettings {
     uint32_t sub_photons = 1;  // S: S x S photons per cell of the water grid, in [1, 8]
     bool jitter = false;       // each photon at a hashed point of its sub-cell instead of its centre
     CausticKernel kernel = CausticKernel::Adaptive;
+    // The light-space map's texels per water cell along each side, in [0.25, 4]: 1 puts one photon
+    // per texel (S = 1) on the texel centres under flat water; more resolves finer caustics with
+    // fewer photons per texel (the adaptive kernel then widens to fill), less averages more.
+    double map_scale = 1.0;
 };
 
 // The settings of effects.caustic_blur beside its mode (scenes/README.md).

@@ -75,6 +75,10 @@ TEST(scene_effects, CausticSettingsDefaultsReadAndRanges) {
     EXPECT_EQ(defaults.sub_photons, 1u);
     EXPECT_FALSE(defaults.jitter);
     EXPECT_EQ(defaults.kernel, CausticKernel::Adaptive);
+    EXPECT_EQ(defaults.map_scale, 1.0);
+    EXPECT_EQ(with({"effects.caustics.map_scale=2"}).effects.caustics.map_scale, 2.0);
+    EXPECT_NE(test::user_error_of([] { with({"effects.caustics.map_scale=8"}); }).find("effects.caustics.map_scale"),
+              std::string::npos);
 
     const CausticSettings set = with({"effects.caustics.analytic_flat=false", "effects.caustics.sub_photons=4",
                                       "effects.caustics.jitter=true", "effects.caustics.kernel=bilinear"})
