@@ -72,12 +72,10 @@ TEST(metrics_committed_sweeps, PoolReferenceIsATenthOfTheSweepsSmallestError) {
     expect_reference_a_tenth_of_the_sweep("pool");
 }
 
-// Fails today, and is therefore left out of ctest until the reference is regenerated: lake's
-// estimated error is 0.0102 (its meshes' caustics change 10% RMS from M/2 to M cells), while
-// the sweep's smallest relMSE is 0.0374 (grid 512, screen-space lookups), so a tenth of it is
-// 0.0037. Run it with --gtest_also_run_disabled_tests once tests/references/lake.exr is rebuilt
-// at a finer beam map (an estimate below 0.0037) and drop the prefix.
-TEST(metrics_committed_sweeps, DISABLED_LakeReferenceIsATenthOfTheSweepsSmallestError) {
+// lake.exr is rendered at 64 surface cells per shortest wavelength (vkwater reference
+// --cells-per-wavelength 64): its meshes' caustics change 2.5% RMS from M/2 to M cells, an
+// estimate of 6.4e-4 (at 32 cells it was 0.010, above a tenth of the sweep).
+TEST(metrics_committed_sweeps, LakeReferenceIsATenthOfTheSweepsSmallestError) {
     expect_reference_a_tenth_of_the_sweep("lake");
 }
 

@@ -49,13 +49,16 @@ struct Options {
     std::vector<uint32_t> grids{128, 256, 512, 1024, 2048};
     int runs = 5;
     bool validate = false;
+    CausticKernel kernel = CausticKernel::Bilinear;  // the scatter kernels mirror the bilinear one's atomics
 };
 
 [[noreturn]] void usage_error(const std::string& message) {
     std::fprintf(stderr,
-                 "caustics_bench: %s\nusage: caustics_bench [--grids R,R,...] [--runs N] [--validate]\n"
+                 "caustics_bench: %s\nusage: caustics_bench [--grids R,R,...] [--runs N] [--kernel K] [--validate]\n"
                  "  --grids  photon grids per side, each in [%u, %u] (default 128,256,512,1024,2048)\n"
-                 "  --runs   timed frames per grid (median), in [1, %d] (default 5)\n",
+                 "  --runs   timed frames per grid (median), in [1, %d] (default 5)\n"
+                 "  --kernel the photon pass's splat: bilinear (default; 12 atomics per photon, as the scatter\n"
+                 "           kernels) or adaptive\n",
                  message.c_str(), kMinGrid, kMaxGrid, kMaxRuns);
     std::exit(2);
 }
@@ -91,6 +94,10 @@ Options parse(int argc, char** argv) {
                 usage_error("--runs: " + std::to_string(runs) + " is outside [1, " + std::to_string(kMaxRuns) + "]");
             }
             options.runs = int(runs);
+        } else if (arg == "--kernel" && has_value) {
+            const std::string kernel = argv[++i];
+            if (kernel != "bilinear" && kernel != "adaptive") usage_error("--kernel: '" + kernel + "' is not bilinear or adaptive");
+            options.kernel = kernel == "adaptive" ? CausticKernel::Adaptive : CausticKernel::Bilinear;
         } else if (arg == "--validate") {
             options.validate = true;
         } else {
@@ -134,9 +141,10 @@ struct GridFigures {
     vkwbench::NativeScatterTimes native;  // zero when the device has no native float atomics
 };
 
-GridFigures measure(Context& context, uint32_t grid, int runs, bool native_float) {
+GridFigures measure(Context& context, uint32_t grid, int runs, bool native_float, CausticKernel kernel) {
     const passes::WaterSurfaceInputs surface = bench_surface(grid);
     passes::CausticInputs in = bench_caustics(surface);
+    in.kernel = kernel;
     const passes::CausticMapFrame frame = passes::fit_caustic_map(in);
     fg::PipelineStore pipelines;
     fg::FrameGraph graph;
@@ -227,10 +235,12 @@ int main(int argc, char** argv) {
             log = context.shared_validation_log();
             native_missing = vkwbench::native_float_atomics_missing(context);
             std::printf("device: %s; timing: one submission per pass, fence-timed on the CPU clock; %d runs per "
-                        "grid after one warm-up%s\n",
-                        context.device_name().c_str(), options.runs, options.validate ? "; validation on" : "");
+                        "grid after one warm-up; %s splat kernel%s\n",
+                        context.device_name().c_str(), options.runs,
+                        options.kernel == CausticKernel::Adaptive ? "adaptive" : "bilinear",
+                        options.validate ? "; validation on" : "");
             for (const uint32_t grid : options.grids) {
-                all.push_back(measure(context, grid, options.runs, native_missing.empty()));
+                all.push_back(measure(context, grid, options.runs, native_missing.empty(), options.kernel));
                 std::fprintf(stderr, "grid %u done\n", grid);
             }
         }
