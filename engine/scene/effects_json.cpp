@@ -53,28 +53,25 @@ EffectSettings read_refraction_effect(FieldReader& fields) {
 EffectsSettings read_effects(FieldReader& fields) {
     EffectsSettings effects;
     for (const Named<fg::Effect>& effect : kEffects) {
-        if (effect.value == fg::Effect::VolumeCaustics) {  // godrays: their settings beside the mode
-            effects[effect.value] = fields.object(effect.name, Presence::optional, [&](FieldReader& godrays) {
-                const EffectSettings mode = read_effect(godrays);  // first: the settings' reader finishes
-                effects.godrays = read_godray_settings(godrays);
+        // Effects with settings of their own beside the mode: the mode is read first, then their
+        // reader takes the rest (and finishes the object, refusing unknown fields).
+        const auto with_settings = [&](auto read_settings, auto& settings) {
+            effects[effect.value] = fields.object(effect.name, Presence::optional, [&](FieldReader& object) {
+                const EffectSettings mode = read_effect(object);
+                settings = read_settings(object);
                 return mode;
             });
+        };
+        if (effect.value == fg::Effect::VolumeCaustics) {
+            with_settings(read_godray_settings, effects.godrays);
             continue;
         }
-        if (effect.value == fg::Effect::SurfaceCaustics) {  // likewise the caustics
-            effects[effect.value] = fields.object(effect.name, Presence::optional, [&](FieldReader& caustics) {
-                const EffectSettings mode = read_effect(caustics);
-                effects.caustics = read_caustic_settings(caustics);
-                return mode;
-            });
+        if (effect.value == fg::Effect::SurfaceCaustics) {
+            with_settings(read_caustic_settings, effects.caustics);
             continue;
         }
-        if (effect.value == fg::Effect::CausticBlur) {  // and their blur
-            effects[effect.value] = fields.object(effect.name, Presence::optional, [&](FieldReader& blur) {
-                const EffectSettings mode = read_effect(blur);
-                effects.caustic_blur = read_caustic_blur_settings(blur);
-                return mode;
-            });
+        if (effect.value == fg::Effect::CausticBlur) {
+            with_settings(read_caustic_blur_settings, effects.caustic_blur);
             continue;
         }
         const auto reader = effect.value == fg::Effect::Reflection   ? read_scene_lookup_effect
