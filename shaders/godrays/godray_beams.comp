@@ -5,14 +5,15 @@
 // refraction, the drop rules) with no extinction, so that its energy times E_s is Phi0, the flux
 // just below the surface (PHYSICS.md section 6). The beam runs from the entry point along t to
 // the floor, or to max_depth below the mean level. Variant VKWATER_SUN_SHADOW: objects above the
-// water block the photon at its entry point (the sun shadow map).
+// water block the photon at its entry point, and receiver meshes under the water end its beam
+// where the caustic photons end (the sun shadow map's beam half, caustics/caustic_receiver_hit.glsl).
 #extension GL_GOOGLE_include_directive : require
 
 #include "caustics/caustic_photon.glsl"
 #include "common/frame_constants.glsl"
 #include "godrays/godray_beam.glsl"
 #ifdef VKWATER_SUN_SHADOW
-#include "receivers/sun_shadow.glsl"
+#include "caustics/caustic_receiver_hit.glsl"  // and receivers/sun_shadow.glsl: bindings 6 and 7
 #endif
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -73,7 +74,16 @@ void main() {
     vec3 t;
     refract_direction(frame.sun_direction.xyz, normalize(caustic_patch_normal(cell, vec2(0.5))), 1.0 / n, t);
     const float deepest = frame.water.x - pc.max_depth;
-    const float length_in_water = min((entry.y - floor_y) / -t.y, max(0.0, (entry.y - deepest) / -t.y));
+    float length_in_water = min((entry.y - floor_y) / -t.y, max(0.0, (entry.y - deepest) / -t.y));
+#ifdef VKWATER_SUN_SHADOW
+    // The first receiver mesh along the beam ends it, as it ends the caustic photon (searched
+    // against the meshes as the map sees them along the flat-water refracted sun t0).
+    vec3 t0;
+    refract_direction(frame.sun_direction.xyz, vec3(0.0, 1.0, 0.0), 1.0 / n, t0);
+    photon.entry = entry;
+    photon.direction = t;
+    length_in_water = min(length_in_water, receiver_path(photon, t0, floor_y, (entry.y - floor_y) / -t.y));
+#endif
     if (!(length_in_water > 0.0)) return;
     vec3 flux = frame.sun_irradiance.rgb * photon.energy;
 #ifdef VKWATER_SUN_SHADOW
