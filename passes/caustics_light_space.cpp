@@ -83,7 +83,9 @@ CausticMapFrame fit_caustic_map(const CausticInputs& in) {
     const glm::dvec2 reach = in.max_amplitude * glm::abs(shear) + glm::dvec2(in.fit_margin);
     // The adaptive kernel reaches up to kMaxSplatHalfWidth texels from its photon, the bilinear
     // one a texel (the border below): the difference is added so edge photons keep all their taps.
-    const uint32_t kernel_reach = in.kernel == CausticKernel::Adaptive ? kMaxSplatHalfWidth - 1 : 0;
+    const uint32_t kernel_reach = in.kernel == CausticKernel::Bilinear  ? 0
+                                  : in.kernel == CausticKernel::Adaptive ? kMaxSplatHalfWidth - 1
+                                                                         : kMaxFootprintTexels - 1;
     const glm::uvec2 extra(std::ceil(reach.x / texel - 1e-9) + kernel_reach,
                            std::ceil(reach.y / texel - 1e-9) + kernel_reach);
     f.width = in.map_width + 2 * extra.x;

@@ -14,7 +14,8 @@
 //   normal to t is A_ls = texel_x texel_z cos(theta_t).
 // - fit: the water's extent, plus as many texels on each side as the crests' shift along t
 //   (max_amplitude |t.xz / t.y|) and fit_margin need, plus a border as wide as the splat
-//   kernel reaches (one texel for the bilinear 2x2, kMaxSplatHalfWidth for the adaptive one),
+//   kernel reaches (one texel for the bilinear 2x2, kMaxSplatHalfWidth for the adaptive one,
+//   kMaxFootprintTexels for the footprint),
 //   so the kernel of an edge photon stays on the map. The map is therefore wider than the requested
 //   W x H when the water has waves (CausticMapFrame::width, height).
 // - fixed point: the map accumulates flux in uint64 units of LSB_c (per channel c), with
@@ -37,8 +38,10 @@
 
 namespace vkw::passes {
 
-// The adaptive splat's largest half-width, texels (kMaxSplatHalfWidth of caustic_splat.glsl).
+// The adaptive splat's largest half-width, texels (kMaxSplatHalfWidth of caustic_splat.glsl), and
+// the footprint splat's largest extent per axis (kMaxFootprintTexels of caustic_footprint.glsl).
 constexpr uint32_t kMaxSplatHalfWidth = 4;
+constexpr uint32_t kMaxFootprintTexels = 8;
 
 struct CausticInputs {
     fg::BufferHandle surface;             // the vertex grid of add_water_surface_pass

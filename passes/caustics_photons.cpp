@@ -23,7 +23,7 @@ struct CausticPhotonPush {
     CausticLightSpacePush space;
     float deposit_scale[4];
     float sigma_t[4];
-    uint32_t resolution, sub, first_row, rows, band_first, band_rows, jitter, adaptive;
+    uint32_t resolution, sub, first_row, rows, band_first, band_rows, jitter, kernel;
 };
 static_assert(sizeof(CausticPhotonPush) == 128, "the push-constant size every device supports");
 
@@ -38,7 +38,7 @@ CausticPhotonPush photon_push(const CausticInputs& in) {
     push.resolution = in.grid_resolution;
     push.sub = in.sub_photons;
     push.jitter = in.jitter ? 1u : 0u;
-    push.adaptive = in.kernel == CausticKernel::Adaptive ? 1u : 0u;
+    push.kernel = in.kernel == CausticKernel::Bilinear ? 0u : in.kernel == CausticKernel::Adaptive ? 1u : 2u;
     return push;
 }
 

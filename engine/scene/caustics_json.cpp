@@ -8,9 +8,10 @@
 namespace vkw {
 namespace {
 
-constexpr std::array<Named<CausticKernel>, 2> kKernels = {{
+constexpr std::array<Named<CausticKernel>, 3> kKernels = {{
     {"adaptive", CausticKernel::Adaptive},
     {"bilinear", CausticKernel::Bilinear},
+    {"footprint", CausticKernel::Footprint},
 }};
 
 }  // namespace

@@ -135,6 +135,7 @@ struct GodraySettings {
 enum class CausticKernel : uint8_t {
     Bilinear,  // a tent one texel wide: the 2x2 bilinear splat
     Adaptive,  // a tent as wide as the photon's neighbours land apart (1 to 4 texels per axis)
+    Footprint, // the photon's sub-cell's footprint, by area (seed 004's area ratio; up to 8 texels per axis)
 };
 
 // The settings of effects.caustics beside its mode (scenes/README.md).

@@ -5,14 +5,16 @@
 // shadow map). One invocation per photon: sub-cell (a, b) of cell (i, j),
 // invocation (i S + a, j_local S + b). Each photon's flux, in units of the map's LSB, is rounded
 // once to an integer q and split over its splat kernel (caustic_splat.glsl: a tent one texel
-// wide, the bilinear 2x2, or as wide as its neighbours' spacing) by cumulative rounding, so the
-// taps sum to q exactly (a normalised kernel with no rounding drift) and integer addition makes
-// the result independent of the order the atomics land in.
+// wide, the bilinear 2x2, or as wide as its neighbours' spacing; caustic_footprint.glsl: its
+// sub-cell's footprint, by area) by cumulative rounding, so the taps sum to q exactly (a
+// normalised kernel with no rounding drift) and integer addition makes the result independent of
+// the order the atomics land in.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_shader_atomic_int64 : require
 
 #include "caustics/caustic_photon.glsl"
+#include "caustics/caustic_footprint.glsl"
 #include "caustics/caustic_splat.glsl"
 #ifdef VKWATER_SUN_SHADOW
 #include "caustics/caustic_receiver_hit.glsl"  // bindings 6 and 7: the sun shadow map
@@ -39,7 +41,8 @@ layout(push_constant) uniform Push {
     uint band_first;     // first map row of this band
     uint band_rows;      // map rows in this band
     uint jitter;         // 1: each photon leaves from a hashed point of its sub-cell
-    uint adaptive;       // 1: the splat's half-width from the neighbours' spacing; 0: bilinear
+    uint kernel;         // 0: bilinear; 1: adaptive (the tent's half-width from the neighbours' spacing);
+                         // 2: footprint (the sub-cell's footprint, the adaptive tent where it cannot)
 } pc;
 
 // A point of [0, 1)^2 from the photon's index (two rounds of a 32-bit integer hash, after
@@ -83,6 +86,33 @@ uint64_t axis_share(uint64_t q, SplatAxis axis, float total, int k, inout float 
     return s;
 }
 
+// The footprint kernel: the photon's flux spread over its sub-cell's footprint by area, each
+// channel split by cumulative rounding over the footprint's texels in row order; false (nothing
+// deposited) where the footprint cannot be used.
+bool deposit_footprint(CausticCell c, vec2 uv0, vec2 uv1, CausticPhoton photon, vec3 q) {
+    vec2 corner[4];
+    if (!footprint_corners(c, uv0, uv1, photon, pc.space, corner)) return false;
+    ivec2 first, size;
+    float weight[64];
+    float total;
+    if (!footprint_weights(corner, first, size, weight, total)) return false;
+    for (uint ch = 0u; ch < 3u; ++ch) {
+        const uint64_t amount = uint64_t(q[ch] + 0.5);
+        float partial = 0.0;
+        uint64_t given = 0ul;
+        for (int j = 0; j < size.y; ++j) {
+            for (int i = 0; i < size.x; ++i) {
+                partial += weight[j * kMaxFootprintTexels + i];
+                const bool last = j == size.y - 1 && i == size.x - 1;
+                const uint64_t upto = last ? amount : share(amount, partial / total);
+                deposit(first + ivec2(i, j), ch, upto - given);
+                given = upto;
+            }
+        }
+    }
+    return true;
+}
+
 void main() {
     const uint S = pc.sub;
     const uvec2 g = gl_GlobalInvocationID.xy;
@@ -113,7 +143,8 @@ void main() {
         for (uint ch = 0u; ch < 3u; ++ch) deposit(ivec2(-2), ch, uint64_t(q[ch] + 0.5));
         return;
     }
-    const vec2 half_width = pc.adaptive != 0u ? splat_half_width(c, at, 1.0 / float(S), photon, pc.space) : vec2(1.0);
+    if (pc.kernel == 2u && deposit_footprint(c, uv0, uv1, photon, q)) return;
+    const vec2 half_width = pc.kernel != 0u ? splat_half_width(c, at, 1.0 / float(S), photon, pc.space) : vec2(1.0);
     const SplatAxis x_axis = splat_axis(coord.x, half_width.x), y_axis = splat_axis(coord.y, half_width.y);
     const float x_total = splat_total(x_axis), y_total = splat_total(y_axis);
     for (uint ch = 0u; ch < 3u; ++ch) {

@@ -53,9 +53,9 @@ using caustics_energy = GpuTest;
 
 TEST_F(caustics_energy, DepositedFluxEqualsSection4Integral) {
     double worst = 0.0;
-    // Both splat kernels: the adaptive one's taps are split by cumulative rounding, so it must
-    // deposit exactly what the bilinear one does.
-    for (const CausticKernel kernel : {CausticKernel::Bilinear, CausticKernel::Adaptive}) {
+    // Every splat kernel: the adaptive and footprint ones' taps are split by cumulative rounding,
+    // so they must deposit exactly what the bilinear one does.
+    for (const CausticKernel kernel : {CausticKernel::Bilinear, CausticKernel::Adaptive, CausticKernel::Footprint}) {
     for (const double zenith : {0.0, 60.0}) {
         for (const double slope : {0.1, 0.3}) {
             const passes::WaterSurfaceInputs surface = sine_surface(slope, 512);
@@ -75,7 +75,10 @@ TEST_F(caustics_energy, DepositedFluxEqualsSection4Integral) {
             }
             std::printf("%s zenith %4.1f slope %.1f: deposited %.7g %.7g %.7g W, section 4 %.7g %.7g %.7g W, "
                         "relative error %.2e %.2e %.2e\n",
-                        kernel == CausticKernel::Adaptive ? "adaptive" : "bilinear", zenith, slope, got.x, got.y, got.z, expected.x, expected.y, expected.z,
+                        kernel == CausticKernel::Adaptive    ? "adaptive"
+                        : kernel == CausticKernel::Footprint ? "footprint"
+                                                             : "bilinear",
+                        zenith, slope, got.x, got.y, got.z, expected.x, expected.y, expected.z,
                         got.x / expected.x - 1.0, got.y / expected.y - 1.0, got.z / expected.z - 1.0);
         }
     }

@@ -118,10 +118,11 @@ TEST_F(caustics_flat, FloorIrradianceMatchesSection3) {
 
 // (b) n = 1, no jitter, vertical sun, one and four photons per cell, photon lattice aligned with
 // the texels: every interior texel equal.
-// Both kernels: under flat water the adaptive kernel's half-width is one texel (neighbours land
-// one photon spacing apart, at most a texel), so it must be exactly as uniform as the bilinear one.
+// Every kernel: under flat water the adaptive kernel's half-width is one texel (neighbours land
+// one photon spacing apart, at most a texel) and a photon's footprint is its sub-cell, inside its
+// texel, so both must be exactly as uniform as the bilinear one.
 TEST_F(caustics_flat, RefractionFreeMapIsUniform) {
-    for (const CausticKernel kernel : {CausticKernel::Bilinear, CausticKernel::Adaptive})
+    for (const CausticKernel kernel : {CausticKernel::Bilinear, CausticKernel::Adaptive, CausticKernel::Footprint})
     for (const uint32_t sub : {1u, 2u}) {
         passes::CausticInputs in = flat_caustics(0.0, 1.0);
         in.sigma_t = glm::dvec3(0.0);
@@ -155,14 +156,15 @@ TEST_F(caustics_flat, RefractionFreeMapIsUniform) {
 
 // (c) Sparse photons: 16 cells on a 64-texel map, n = 1, vertical sun: photons land 4 texels
 // apart. The adaptive kernel sizes its tent from the neighbours' spacing, half-width 4 texels,
-// and tents of half-width h spaced h apart sum to one everywhere: the covered interior is
-// uniform and equal to E_s, to rounding. The bilinear kernel leaves the texels between photons
-// empty (spread 1), which is what shows this test can fail.
+// and tents of half-width h spaced h apart sum to one everywhere; the footprint kernel spreads
+// each photon over its cell's 4 x 4 texels: either way the covered interior is uniform and equal
+// to E_s, to rounding. The bilinear kernel leaves the texels between photons empty (spread 1),
+// which is what shows this test can fail.
 TEST_F(caustics_flat, AdaptiveKernelFillsBetweenSparsePhotons) {
     constexpr uint32_t kCells = 16;
     passes::WaterSurfaceInputs surface = flat_surface();
     surface.grid_resolution = kCells;
-    for (const CausticKernel kernel : {CausticKernel::Adaptive, CausticKernel::Bilinear}) {
+    for (const CausticKernel kernel : {CausticKernel::Adaptive, CausticKernel::Footprint, CausticKernel::Bilinear}) {
         passes::CausticInputs in = flat_caustics(0.0, 1.0);
         in.sigma_t = glm::dvec3(0.0);
         in.grid_resolution = kCells;
@@ -187,8 +189,9 @@ TEST_F(caustics_flat, AdaptiveKernelFillsBetweenSparsePhotons) {
             // and the LSB rounding of at most 64 taps of 1e-9.
             const double coord = 2.0 * kE + 8.0 * frame.texel.x;
             const double bound = 2.0 * 4.0 * 2.0 * 8.0 * kUnit * coord / frame.texel.x + 16.0 * kUnit + 64e-9;
-            std::printf("adaptive channel %d: E in [%.9g, %.9g] (E_s %.3g), spread %.3e, bound %.3e\n", c, lo, hi,
-                        in.sun_irradiance[c], spread, bound);
+            std::printf("%s channel %d: E in [%.9g, %.9g] (E_s %.3g), spread %.3e, bound %.3e\n",
+                        kernel == CausticKernel::Adaptive ? "adaptive" : "footprint", c, lo, hi, in.sun_irradiance[c],
+                        spread, bound);
             EXPECT_LE(spread, bound) << "channel " << c;
             EXPECT_NEAR(hi / in.sun_irradiance[c], 1.0, bound) << "channel " << c;
         }

@@ -71,10 +71,10 @@ TEST_F(caustics_photon_count, MeanFloorIrradianceIndependentOfPhotonCount) {
         glm::dvec3 mean(0.0), bound(0.0);
         std::vector<double> row;
         for (int c = 0; c < 3; ++c) {
-            for (int i = window.first; i <= window.last; ++i) mean[c] += map_column_mean(run, frame, i, c) / texels;
+            for (int i = window.first; i <= window.last; ++i) mean[c] += map_column_mean(run, frame, i, c, scene.half_extent) / texels;
             bound[c] = mean_error_bound(scene, sine, columns, texels, exact[c], c);
         }
-        for (int i = window.first; i <= window.last; ++i) row.push_back(map_column_mean(run, frame, i, 1));
+        for (int i = window.first; i <= window.last; ++i) row.push_back(map_column_mean(run, frame, i, 1, scene.half_extent));
         means.push_back(mean);
         bounds.push_back(bound);
         green_rows.push_back(row);

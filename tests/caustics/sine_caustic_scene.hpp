@@ -85,12 +85,21 @@ inline MapColumns map_columns(const passes::CausticMapFrame& frame) {
     return {frame.corner.x, frame.texel.x, int(frame.width)};
 }
 
-// The mean of map column i over the texel rows 2 .. H - 3 (rows 0 and H - 1 are the border, rows
-// 1 and H - 2 miss the photons beyond the water's edge), channel c, W m^-2.
-inline double map_column_mean(const CausticRun& run, const passes::CausticMapFrame& frame, int i, int c) {
+// The mean of map column i over the texel rows whose centres lie within E - 1.5 texels of the
+// middle (E the water's half extent: the bilinear map's rows 2 .. H - 3; the rows outside are the
+// border the kernel needs, and the rows next to it miss the photons beyond the water's edge),
+// channel c, W m^-2.
+inline double map_column_mean(const CausticRun& run, const passes::CausticMapFrame& frame, int i, int c,
+                              double half_extent) {
     double sum = 0.0;
-    for (uint32_t y = 2; y + 2 < frame.height; ++y) sum += run.irradiance[4 * (size_t(y) * frame.width + i) + c];
-    return sum / double(frame.height - 4);
+    int rows = 0;
+    for (uint32_t y = 0; y < frame.height; ++y) {
+        const double z = frame.corner.y + (y + 0.5) * frame.texel.y;
+        if (std::abs(z) > half_extent - 1.5 * frame.texel.y + 1e-9) continue;
+        sum += run.irradiance[4 * (size_t(y) * frame.width + i) + c];
+        ++rows;
+    }
+    return sum / double(rows);
 }
 
 // The texels whose centres lie in [x0, x1).

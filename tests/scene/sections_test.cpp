@@ -92,7 +92,7 @@ TEST(scene_effects, CausticSettingsDefaultsReadAndRanges) {
         return test::user_error_of([&] { with({override}); });
     };
     EXPECT_NE(error_with("effects.caustics.kernel=gaussian").find("effects.caustics.kernel: unknown value \"gaussian\" "
-                                                                   "(accepted: one of adaptive, bilinear)"),
+                                                                   "(accepted: one of adaptive, bilinear, footprint)"),
               std::string::npos)
         << error_with("effects.caustics.kernel=gaussian");
     const std::string sub = error_with("effects.caustics.sub_photons=9");
