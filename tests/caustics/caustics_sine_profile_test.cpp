@@ -30,6 +30,7 @@
 #include "tests/support/gpu_test.hpp"
 
 #include <cstdio>
+#include <vector>
 
 namespace vkw::test {
 namespace {
@@ -70,27 +71,50 @@ double lattice_error_bound(const SineCausticScene& scene, const SineFloor& sine,
 
 class caustics_sine_profile : public GpuTest, public ::testing::WithParamInterface<double> {};
 
-TEST_P(caustics_sine_profile, FloorRowMatchesSection5) {
-    SineCausticScene scene = profile_scene(GetParam());
-    const passes::CausticInputs in = scene.caustics();
-    const passes::CausticMapFrame frame = passes::fit_caustic_map(in);
-    const MapColumns columns = map_columns(frame);
-    // The crest on the centre of the texel that starts at x = 0 (a texel average about a maximum
-    // is then symmetric): k x_c + phase = pi / 2 at x_c = h / 2.
-    scene.phase = 0.5 * std::numbers::pi - kSineWavenumber * 0.5 * columns.h;
-    const SineFloor sine = scene.cpu();
-    const CausticRun run = run_caustics(context(), scene.surface(), in);
+// One depth's run: the scene (its crest on the centre of the texel that starts at x = 0, so a
+// texel average about a maximum is symmetric: k x_c + phase = pi / 2 at x_c = h / 2), the map,
+// its columns, the CPU model, and the window of one whole wavelength of texels about x = 0.
+// The window's kernels reach h further, and the light there comes from surface points at most
+// max|X - x| away: all inside the water (checked), so the window is fully lit.
+struct ProfileRun {
+    SineCausticScene scene;
+    passes::CausticInputs in;
+    passes::CausticMapFrame frame;
+    MapColumns columns;
+    SineFloor sine;
+    CausticRun run;
+    ColumnRange window;
+    std::vector<glm::dvec3> box;  // the CPU profile, box-filtered per texel
+};
 
-    // The window: one whole wavelength of texels about x = 0. Its kernels reach h further, and
-    // the light there comes from surface points at most max|X - x| away: all inside the water
-    // (checked), so the window is fully lit.
-    const ColumnRange window = columns_centred_in(columns, -0.5 * kSineWavelength, 0.5 * kSineWavelength);
-    ASSERT_EQ(window.last - window.first + 1, int(std::lround(kSineWavelength / columns.h)));
-    ASSERT_LT(0.5 * kSineWavelength + 2.0 * columns.h + sine.max_reach(), scene.half_extent)
+ProfileRun run_profile(Context& context, double depth_factor, CausticKernel kernel) {
+    ProfileRun p{profile_scene(depth_factor)};
+    p.in = p.scene.caustics();
+    p.in.kernel = kernel;
+    p.frame = passes::fit_caustic_map(p.in);
+    p.columns = map_columns(p.frame);
+    p.scene.phase = 0.5 * std::numbers::pi - kSineWavenumber * 0.5 * p.columns.h;
+    p.sine = p.scene.cpu();
+    p.run = run_caustics(context, p.scene.surface(), p.in);
+    p.window = columns_centred_in(p.columns, -0.5 * kSineWavelength, 0.5 * kSineWavelength);
+    EXPECT_EQ(p.window.last - p.window.first + 1, int(std::lround(kSineWavelength / p.columns.h)));
+    EXPECT_LT(0.5 * kSineWavelength + 2.0 * p.columns.h + p.sine.max_reach(), p.scene.half_extent)
         << "the window is not fully lit";
+    const double e = p.scene.half_extent;
+    p.box = sine_floor_profile(p.sine, -e, e, p.columns.corner, p.columns.h, p.columns.count, TexelFilter::Box);
+    return p;
+}
 
+TEST_P(caustics_sine_profile, FloorRowMatchesSection5) {
+    const ProfileRun p = run_profile(context(), GetParam(), CausticKernel::Bilinear);
+    const SineCausticScene& scene = p.scene;
+    const passes::CausticMapFrame& frame = p.frame;
+    const MapColumns& columns = p.columns;
+    const SineFloor& sine = p.sine;
+    const CausticRun& run = p.run;
+    const ColumnRange& window = p.window;
+    const auto& box = p.box;
     const double e = scene.half_extent;
-    const auto box = sine_floor_profile(sine, -e, e, columns.corner, columns.h, columns.count, TexelFilter::Box);
     const auto tent = sine_floor_profile(sine, -e, e, columns.corner, columns.h, columns.count, TexelFilter::Tent);
 
     for (int c = 0; c < 3; ++c) {
@@ -152,25 +176,15 @@ TEST_P(caustics_sine_profile, FloorRowMatchesSection5) {
 // and the issue's 2% against the box-filtered profile applies at every depth, the cusp's included
 // (the footprints there are thin, folded quads whose flux the clipping puts in the right texels).
 TEST_P(caustics_sine_profile, FootprintKernelRowMatchesBoxFilteredSection5) {
-    SineCausticScene scene = profile_scene(GetParam());
-    passes::CausticInputs in = scene.caustics();
-    in.kernel = CausticKernel::Footprint;
-    const passes::CausticMapFrame frame = passes::fit_caustic_map(in);
-    const MapColumns columns = map_columns(frame);
-    scene.phase = 0.5 * std::numbers::pi - kSineWavenumber * 0.5 * columns.h;
-    const SineFloor sine = scene.cpu();
-    const CausticRun run = run_caustics(context(), scene.surface(), in);
-    const ColumnRange window = columns_centred_in(columns, -0.5 * kSineWavelength, 0.5 * kSineWavelength);
-    const double e = scene.half_extent;
-    const auto box = sine_floor_profile(sine, -e, e, columns.corner, columns.h, columns.count, TexelFilter::Box);
+    const ProfileRun p = run_profile(context(), GetParam(), CausticKernel::Footprint);
     for (int c = 0; c < 3; ++c) {
         double to_box = 0.0, box_sum = 0.0;
-        for (int i = window.first; i <= window.last; ++i) {
-            to_box += std::abs(map_column_mean(run, frame, i, c, scene.half_extent) - box[i][c]);
-            box_sum += box[i][c];
+        for (int i = p.window.first; i <= p.window.last; ++i) {
+            to_box += std::abs(map_column_mean(p.run, p.frame, i, c, p.scene.half_extent) - p.box[i][c]);
+            box_sum += p.box[i][c];
         }
         std::printf("footprint kernel, d = %.2f d*, channel %d: L1 to the box-filtered profile %.3e (issue: %.0e)\n",
-                    scene.depth_factor, c, to_box / box_sum, kIssueL1);
+                    p.scene.depth_factor, c, to_box / box_sum, kIssueL1);
         EXPECT_LE(to_box / box_sum, kIssueL1) << "channel " << c;
     }
 }
