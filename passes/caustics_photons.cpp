@@ -23,7 +23,7 @@ struct CausticPhotonPush {
     CausticLightSpacePush space;
     float deposit_scale[4];
     float sigma_t[4];
-    uint32_t resolution, sub, first_row, rows, band_first, band_rows, jitter, kernel;
+    uint32_t resolution, sub, first_row, rows, band_first, band_rows, jitter, pad;
 };
 static_assert(sizeof(CausticPhotonPush) == 128, "the push-constant size every device supports");
 
@@ -38,7 +38,6 @@ CausticPhotonPush photon_push(const CausticInputs& in) {
     push.resolution = in.grid_resolution;
     push.sub = in.sub_photons;
     push.jitter = in.jitter ? 1u : 0u;
-    push.kernel = in.kernel == CausticKernel::Bilinear ? 0u : in.kernel == CausticKernel::Adaptive ? 1u : 2u;
     return push;
 }
 
@@ -70,9 +69,13 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
                 d.shadow_space = builder.uniform_buffer(shadow->space, stage);
             }
         },
-        [push](const Data& d, fg::PassContext& context) {
+        [push, kernel_variant = inputs.kernel](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
-            desc.shader = std::string("caustics/caustic_photons.comp.") + (d.shadow_map ? "shadow" : "plain");
+            // The variant: the kernel, then with the sun shadow map or without (shaders/CMakeLists.txt).
+            const char* kernel = kernel_variant == CausticKernel::Bilinear   ? "bilinear"
+                                 : kernel_variant == CausticKernel::Adaptive ? "adaptive"
+                                                                             : "footprint";
+            desc.shader = std::string("caustics/caustic_photons.comp.") + kernel + (d.shadow_map ? "_shadow" : "");
             desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
                                     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
                                     {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};

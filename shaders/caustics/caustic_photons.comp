@@ -2,7 +2,10 @@
 // Photon grid -> light-space caustic flux, accumulated deterministically in 64-bit fixed point
 // (passes/caustics_photons.hpp). Variants: plain (the floor plane is the receiver) and
 // VKWATER_SUN_SHADOW (receiver meshes under the water and occluders above it, from the sun
-// shadow map). One invocation per photon: sub-cell (a, b) of cell (i, j),
+// shadow map); the splat kernel is a variant too (VKWATER_SPLAT_BILINEAR, _ADAPTIVE,
+// _FOOTPRINT): llvmpipe's compiled code for one kernel doubles in time when the others' code
+// sits in the same shader, even behind a uniform branch (measured: 104 ms against 223 ms for the
+// bilinear kernel's 1024^2 photons). One invocation per photon: sub-cell (a, b) of cell (i, j),
 // invocation (i S + a, j_local S + b). Each photon's flux, in units of the map's LSB, is rounded
 // once to an integer q and split over its splat kernel (caustic_splat.glsl: a tent one texel
 // wide, the bilinear 2x2, or as wide as its neighbours' spacing; caustic_footprint.glsl: its
@@ -14,7 +17,9 @@
 #extension GL_EXT_shader_atomic_int64 : require
 
 #include "caustics/caustic_photon.glsl"
+#ifdef VKWATER_SPLAT_FOOTPRINT
 #include "caustics/caustic_footprint.glsl"
+#endif
 #include "caustics/caustic_splat.glsl"
 #ifdef VKWATER_SUN_SHADOW
 #include "caustics/caustic_receiver_hit.glsl"  // bindings 6 and 7: the sun shadow map
@@ -41,8 +46,7 @@ layout(push_constant) uniform Push {
     uint band_first;     // first map row of this band
     uint band_rows;      // map rows in this band
     uint jitter;         // 1: each photon leaves from a hashed point of its sub-cell
-    uint kernel;         // 0: bilinear; 1: adaptive (the tent's half-width from the neighbours' spacing);
-                         // 2: footprint (the sub-cell's footprint, the adaptive tent where it cannot)
+    uint pad;
 } pc;
 
 // A point of [0, 1)^2 from the photon's index (two rounds of a 32-bit integer hash, after
@@ -86,6 +90,44 @@ uint64_t axis_share(uint64_t q, SplatAxis axis, float total, int k, inout float 
     return s;
 }
 
+// The one-texel tent (the bilinear 2x2 splat) at texel coordinates `coord` (integers: centres),
+// written out.
+void deposit_bilinear(vec2 coord, vec3 q) {
+    const vec2 base = floor(coord);
+    const vec2 f = coord - base;
+    const ivec2 t0 = ivec2(base);
+    for (uint ch = 0u; ch < 3u; ++ch) {
+        const uint64_t total = uint64_t(q[ch] + 0.5);
+        const uint64_t x0 = share(total, 1.0 - f.x), x1 = total - x0;
+        const uint64_t x0y0 = share(x0, 1.0 - f.y), x1y0 = share(x1, 1.0 - f.y);
+        deposit(t0, ch, x0y0);
+        deposit(t0 + ivec2(0, 1), ch, x0 - x0y0);
+        deposit(t0 + ivec2(1, 0), ch, x1y0);
+        deposit(t0 + ivec2(1, 1), ch, x1 - x1y0);
+    }
+}
+
+// A tent of the given half-widths (at least one texel), split over its taps.
+void deposit_tent(vec2 coord, vec2 half_width, vec3 q) {
+    const SplatAxis x_axis = splat_axis(coord.x, half_width.x), y_axis = splat_axis(coord.y, half_width.y);
+    const float x_total = splat_total(x_axis), y_total = splat_total(y_axis);
+    for (uint ch = 0u; ch < 3u; ++ch) {
+        const uint64_t total = uint64_t(q[ch] + 0.5);
+        float x_partial = 0.0;
+        uint64_t x_given = 0ul;
+        for (int i = 0; i < x_axis.count; ++i) {
+            const uint64_t column = axis_share(total, x_axis, x_total, i, x_partial, x_given);
+            float y_partial = 0.0;
+            uint64_t y_given = 0ul;
+            for (int j = 0; j < y_axis.count; ++j) {
+                const uint64_t tap = axis_share(column, y_axis, y_total, j, y_partial, y_given);
+                deposit(ivec2(x_axis.first + i, y_axis.first + j), ch, tap);
+            }
+        }
+    }
+}
+
+#ifdef VKWATER_SPLAT_FOOTPRINT
 // The footprint kernel: the photon's flux spread over its sub-cell's footprint by area, each
 // channel split by cumulative rounding over the footprint's texels in row order; false (nothing
 // deposited) where the footprint cannot be used.
@@ -112,6 +154,7 @@ bool deposit_footprint(CausticCell c, vec2 uv0, vec2 uv1, CausticPhoton photon, 
     }
     return true;
 }
+#endif
 
 void main() {
     const uint S = pc.sub;
@@ -143,22 +186,12 @@ void main() {
         for (uint ch = 0u; ch < 3u; ++ch) deposit(ivec2(-2), ch, uint64_t(q[ch] + 0.5));
         return;
     }
-    if (pc.kernel == 2u && deposit_footprint(c, uv0, uv1, photon, q)) return;
-    const vec2 half_width = pc.kernel != 0u ? splat_half_width(c, at, 1.0 / float(S), photon, pc.space) : vec2(1.0);
-    const SplatAxis x_axis = splat_axis(coord.x, half_width.x), y_axis = splat_axis(coord.y, half_width.y);
-    const float x_total = splat_total(x_axis), y_total = splat_total(y_axis);
-    for (uint ch = 0u; ch < 3u; ++ch) {
-        const uint64_t total = uint64_t(q[ch] + 0.5);
-        float x_partial = 0.0;
-        uint64_t x_given = 0ul;
-        for (int i = 0; i < x_axis.count; ++i) {
-            const uint64_t column = axis_share(total, x_axis, x_total, i, x_partial, x_given);
-            float y_partial = 0.0;
-            uint64_t y_given = 0ul;
-            for (int j = 0; j < y_axis.count; ++j) {
-                const uint64_t tap = axis_share(column, y_axis, y_total, j, y_partial, y_given);
-                deposit(ivec2(x_axis.first + i, y_axis.first + j), ch, tap);
-            }
-        }
-    }
+#if defined(VKWATER_SPLAT_BILINEAR)
+    deposit_bilinear(coord, q);
+#else
+#if defined(VKWATER_SPLAT_FOOTPRINT)
+    if (deposit_footprint(c, uv0, uv1, photon, q)) return;
+#endif
+    deposit_tent(coord, splat_half_width(c, at, 1.0 / float(S), photon, pc.space), q);
+#endif
 }
