@@ -2,7 +2,8 @@
 # Regenerates the committed sweeps docs/sweeps/{calm,pool,lake}.{csv,svg}: `vkwater bench` at the
 # references' size (400x300) against tests/references/<scene>.exr, over the water (= photon)
 # grid, the caustics (off: the flat-surface stand-in; on with the bilinear or the adaptive splat
-# kernel) and the godrays (off, or a 32 or 128 beam grid; 128 is the default).
+# kernel, or the footprint kernel: seed 004's area ratio) and the godrays (off, or a 32 or 128 beam
+# grid; 128 is the default).
 # Usage: docs/sweeps/run.sh [BUILD_DIR] [FRAMES] [SCENE...]
 #   (defaults: build, 30 timed frames per setting, calm pool lake pool-map-scale)
 # Run it on a quiet machine: the times are medians of wall-clock frame times.
@@ -18,7 +19,7 @@ scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 
 godrays='effects.godrays.mode=off|effects.godrays.grid=32|effects.godrays.grid=128'
-caustics='effects.caustics.mode=off|effects.caustics.kernel=bilinear|effects.caustics.kernel=adaptive'
+caustics='effects.caustics.mode=off|effects.caustics.kernel=bilinear|effects.caustics.kernel=adaptive|effects.caustics.kernel=footprint'
 
 sweep() {  # scene, then bench's sweep arguments
     local scene=$1
