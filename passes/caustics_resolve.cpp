@@ -4,6 +4,7 @@
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/vk/context.hpp"
 #include "passes/caustics_bands.hpp"
+#include "passes/caustics_map_frame.hpp"
 
 namespace vkw::passes {
 namespace {
@@ -20,22 +21,10 @@ struct ResolvePush {
 
 CausticMap add_caustic_resolve_pass(fg::FrameGraph& graph, fg::BufferHandle flux, const CausticInputs& inputs) {
     const CausticMapFrame frame = fit_caustic_map(inputs);
-    const CausticLightSpacePush space = caustic_light_space_push(frame, inputs);
     ResolvePush push{};
     for (int c = 0; c < 3; ++c) push.factor[c] = float(frame.lsb[c] / frame.texel_area);
     push.width = frame.width;
-
-    struct Upload {
-        fg::BufferHandle frame;
-    };
-    const auto& upload = graph.add_pass<Upload>(
-        "caustic map frame", fg::PassKind::Transfer,
-        [&](fg::PassBuilder& builder, Upload& d) {
-            d.frame = builder.copy_destination(builder.create_buffer("caustic map frame", {sizeof space}));
-        },
-        [space](const Upload& d, fg::PassContext& context) {
-            vkCmdUpdateBuffer(context.cmd(), context.buffer(d.frame), 0, sizeof space, &space);
-        });
+    const fg::BufferHandle frame_buffer = add_caustic_map_frame_pass(graph, inputs);
 
     struct Data {
         fg::BufferHandle flux;
@@ -79,7 +68,7 @@ CausticMap add_caustic_resolve_pass(fg::FrameGraph& graph, fg::BufferHandle flux
                               (band.rows + kGroupSide - 1) / kGroupSide, 1);
             }
         });
-    return {data.irradiance, upload.frame};
+    return {data.irradiance, frame_buffer};
 }
 
 }  // namespace vkw::passes

@@ -10,6 +10,7 @@
 #include "passes/frame_constants_upload.hpp"
 #include "passes/godrays.hpp"
 #include "passes/caustics_blur.hpp"
+#include "passes/caustics_procedural.hpp"
 #include "passes/readback.hpp"
 #include "passes/receiver_meshes.hpp"
 #include "passes/receivers.hpp"
@@ -140,8 +141,12 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
             caustics.kernel = scene.effects.caustics.kernel;
             caustics.map_width = caustics.map_height =
                 caustic_map_texels(water.grid_resolution, scene.effects.caustics.map_scale);
-            passes::CausticMap map = passes::add_caustic_resolve_pass(
-                graph, passes::add_caustic_photon_pass(graph, caustics, sun_shadow ? &*sun_shadow : nullptr), caustics);
+            passes::CausticMap map =
+                scene.effects.caustics.method == CausticMethod::Procedural
+                    ? passes::add_caustic_procedural_pass(graph, caustics)
+                    : passes::add_caustic_resolve_pass(
+                          graph, passes::add_caustic_photon_pass(graph, caustics, sun_shadow ? &*sun_shadow : nullptr),
+                          caustics);
             if (graph.needs().needs(fg::Effect::CausticBlur)) {
                 map = passes::add_caustic_blur_pass(graph, map, caustics, scene.effects.caustic_blur.radius);
             }
@@ -201,7 +206,7 @@ std::string Renderer::water_configuration(const Scene& scene) {
            std::to_string(scene.medium.sigma_t().z);
     // The photon pass captures its sampling and its splat kernel at declaration.
     const CausticSettings& caustics = scene.effects.caustics;
-    key += " photons " + std::to_string(caustics.sub_photons) + "/" + std::to_string(int(caustics.jitter)) + "/" +
+    key += " photons " + std::to_string(int(caustics.method)) + "/" + std::to_string(caustics.sub_photons) + "/" + std::to_string(int(caustics.jitter)) + "/" +
            std::to_string(int(caustics.kernel)) + "/" + std::to_string(caustics.map_scale) + " blur " +
            std::to_string(scene.effects.caustic_blur.radius);
     // The water pass and the scene views capture the lookup methods at declaration.

@@ -14,11 +14,17 @@ constexpr std::array<Named<CausticKernel>, 3> kKernels = {{
     {"footprint", CausticKernel::Footprint},
 }};
 
+constexpr std::array<Named<CausticMethod>, 2> kMethods = {{
+    {"photons", CausticMethod::Photons},
+    {"procedural", CausticMethod::Procedural},
+}};
+
 }  // namespace
 
 CausticSettings read_caustic_settings(FieldReader& fields) {
     const CausticSettings defaults;
     CausticSettings caustics;
+    caustics.method = fields.choice("method", kMethods, defaults.method);
     caustics.analytic_flat = fields.boolean("analytic_flat", defaults.analytic_flat);
     caustics.sub_photons = static_cast<uint32_t>(
         fields.integer("sub_photons", Range::closed(1.0, 8.0, "photons per cell side"), defaults.sub_photons));

@@ -138,8 +138,15 @@ enum class CausticKernel : uint8_t {
     Footprint, // the photon's sub-cell's footprint, by area (seed 004's area ratio; up to 8 texels per axis)
 };
 
+// effects.caustics.method: what produces the caustic map.
+enum class CausticMethod : uint8_t {
+    Photons,     // the photon grid (passes/caustics_photons.hpp)
+    Procedural,  // seed 003's backward ray and sun lobe, a baseline (passes/caustics_procedural.hpp)
+};
+
 // The settings of effects.caustics beside its mode (scenes/README.md).
 struct CausticSettings {
+    CausticMethod method = CausticMethod::Photons;
     // Flat water: the flat-surface stand-in is exact there, so the photon passes are left out
     // unless this is false (then they run and reproduce it up to the map's resolution).
     bool analytic_flat = true;
