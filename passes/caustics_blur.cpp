@@ -2,6 +2,7 @@
 #include "passes/caustics_blur.hpp"
 
 #include "engine/framegraph/pass_context.hpp"
+#include "passes/caustics_map_frame.hpp"
 
 namespace vkw::passes {
 namespace {
@@ -28,11 +29,7 @@ CausticMap add_caustic_blur_pass(fg::FrameGraph& graph, const CausticMap& map, c
     // A sun whose flat-water light is 0 (night, or a black sun) leaves nothing to blur; any
     // positive unit keeps the shader's arithmetic finite.
     if (!(flat_sum > 0.0)) flat_sum = 1.0;
-    fg::ImageInfo info;
-    info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
-    info.size_class = fg::SizeClass::Absolute;
-    info.width = frame.width;
-    info.height = frame.height;
+    const fg::ImageInfo info = caustic_map_image(frame);
 
     fg::ImageHandle image = map.irradiance;
     for (const bool first : {true, false}) {

@@ -20,4 +20,13 @@ fg::BufferHandle add_caustic_map_frame_pass(fg::FrameGraph& graph, const Caustic
     return upload.frame;
 }
 
+fg::ImageInfo caustic_map_image(const CausticMapFrame& frame) {
+    fg::ImageInfo info;
+    info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+    info.size_class = fg::SizeClass::Absolute;
+    info.width = frame.width;
+    info.height = frame.height;
+    return info;
+}
+
 }  // namespace vkw::passes

@@ -50,12 +50,8 @@ CausticMap add_caustic_procedural_pass(fg::FrameGraph& graph, const CausticInput
         [&](fg::PassBuilder& builder, Data& d) {
             const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
             d.surface = builder.read_storage(inputs.surface, stage);
-            fg::ImageInfo info;
-            info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
-            info.size_class = fg::SizeClass::Absolute;
-            info.width = frame.width;
-            info.height = frame.height;
-            d.irradiance = builder.write_storage(builder.create_image("caustic irradiance", info), stage);
+            d.irradiance =
+                builder.write_storage(builder.create_image("caustic irradiance", caustic_map_image(frame)), stage);
         },
         [push](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
