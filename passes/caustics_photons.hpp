@@ -1,11 +1,12 @@
-// The photon grid of the surface caustics (issue 7 items 2-4, the floor plane as the receiver):
+// The photon grid of the surface caustics (issue 7 items 2-4):
 // one compute pass that traces S x S photons per cell of the GPU water grid (S = 1: one photon per
 // cell, its intercepted area the cell's true vector area; shaders/caustics/caustic_photon.glsl),
 // refracts them with the exact Fresnel of common/fresnel.glsl, carries them to the floor plane,
 // and splats each photon's flux
 //   Phi = E_s max(0, -s.a) T(theta_i) exp(-sigma_t l)      (a: the sub-cell's vector area)
-// with a tent kernel (caustic_splat.glsl: the 2x2 bilinear one, or as wide as the photon's
-// neighbours land apart; its taps sum to the photon's flux exactly, in integers) into the light-space
+// with its kernel (caustic_splat.glsl: the 2x2 bilinear tent, or one as wide as the photon's
+// neighbours land apart; caustic_footprint.glsl: its sub-cell's footprint by area; each a shader
+// variant; the taps sum to the photon's flux exactly, in integers) into the light-space
 // caustic flux map of fit_caustic_map, accumulated with uint64 fixed-point atomics
 // (caustics_light_space.hpp gives the LSB and the headroom), so two runs are bit-identical.
 // Dropped photons: the cell faces away from the sun, the refracted ray points up

@@ -4,15 +4,14 @@
 
 namespace vkw::passes {
 
-void LightingInputs::declare(fg::PassBuilder& builder, const fg::Blackboard& blackboard, bool with_caustics,
-                             bool with_camera_medium) {
+void LightingInputs::declare(fg::PassBuilder& builder, const fg::Blackboard& blackboard, bool with_camera_medium) {
     constants = builder.uniform_buffer(blackboard.get(keys::kFrameConstants),
                                        VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
     optics = builder.read_storage(blackboard.get(keys::kSceneOptics));
     if (with_camera_medium && blackboard.has(keys::kCameraMedium)) {
         camera_medium = builder.sample(blackboard.get(keys::kCameraMedium), VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
     }
-    if (with_caustics && blackboard.has(keys::kCausticMap)) {
+    if (blackboard.has(keys::kCausticMap)) {
         const CausticMap& caustics = blackboard.get(keys::kCausticMap);
         caustic_frame = builder.uniform_buffer(caustics.frame, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
         caustic_map = builder.sample(caustics.irradiance, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);

@@ -23,12 +23,10 @@ struct LightingInputs {
     std::optional<fg::ImageHandle> sun_shadow_map;   // binding 6: the sun's depth of the objects
     std::optional<fg::BufferHandle> sun_shadow_space;  // binding 7: its light space
 
-    // Declares, as sampled/uniform reads of this pass, whichever the blackboard holds.
-    // The caustic map is traced to the floor plane: passes that light other receivers
-    // pass with_caustics = false and keep the flat-surface stand-in for them. Passes that
-    // do not draw the camera's pixels (the scene views) pass with_camera_medium = false.
-    void declare(fg::PassBuilder& builder, const fg::Blackboard& blackboard, bool with_caustics = true,
-                 bool with_camera_medium = true);
+    // Declares, as sampled/uniform reads of this pass, whichever the blackboard holds (the
+    // caustic map lights every receiver under the water, the floor and the meshes alike).
+    // Passes that do not draw the camera's pixels (the scene views) pass with_camera_medium = false.
+    void declare(fg::PassBuilder& builder, const fg::Blackboard& blackboard, bool with_camera_medium = true);
     // "<shader>.<variant>" for a shader compiled with the lighting variants.
     std::string shader(const std::string& base) const;
     void add_layout(std::vector<VkDescriptorSetLayoutBinding>& bindings) const;

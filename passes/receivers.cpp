@@ -22,7 +22,7 @@ void add_receivers_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes) {
             d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
             d.layer.load(builder, graph.blackboard());
             d.depth = builder.depth_stencil_attachment(graph.blackboard().get(keys::kSceneDepth), fg::LoadOp::Load);
-            d.lighting.declare(builder, graph.blackboard(), /*with_caustics=*/true);
+            d.lighting.declare(builder, graph.blackboard());
         },
         [&meshes](const Data& d, fg::PassContext& context) {
             const GraphicsPipelineDesc desc = receiver_mesh_pipeline(d.lighting, d.layer.variant());

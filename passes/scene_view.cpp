@@ -37,7 +37,7 @@ fg::ImageHandle add_scene_view_pass(fg::FrameGraph& graph, const ReceiverMeshes&
             const fg::ImageInfo depth{VK_FORMAT_D32_SFLOAT, fg::SizeClass::OutputRelative, kGuardBand};
             d.depth = builder.depth_stencil_attachment(builder.create_image(std::string(spec.name) + " depth", depth),
                                                        fg::LoadOp::Clear, {.depth = 0.0f});
-            d.lighting.declare(builder, graph.blackboard(), /*with_caustics=*/true, /*with_camera_medium=*/false);
+            d.lighting.declare(builder, graph.blackboard(), /*with_camera_medium=*/false);
         },
         [&meshes, spec](const Data& d, fg::PassContext& context) {
             const GraphicsPipelineDesc desc = receiver_mesh_pipeline(d.lighting, d.layer.variant());

@@ -1,7 +1,7 @@
 // Light under the water for Lambertian receivers (PHYSICS.md sections 1 and 3), and the
 // floor as the receiver that refracted view rays meet. The sun term is the caustic
-// irradiance when VKWATER_CAUSTICS is defined (the map of passes/caustics_*, traced to the floor
-// and the receiver meshes) and the flat-surface stand-in otherwise: one or the other, never both.
+// irradiance when VKWATER_CAUSTICS is defined (the map of passes/caustics_*, whose photons end on
+// the floor and the receiver meshes) and the flat-surface stand-in otherwise: one or the other, never both.
 #ifndef VKWATER_UNDERWATER_LIGHT_GLSL
 #define VKWATER_UNDERWATER_LIGHT_GLSL
 
