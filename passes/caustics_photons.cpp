@@ -20,34 +20,42 @@ constexpr uint32_t kMaxGroups = 65535;
 
 // Mirrors the push constants of shaders/caustics/caustic_photons.comp.
 struct CausticPhotonPush {
-    CausticLightSpacePush space;
-    float deposit_scale[4];
-    float sigma_t[4];
+    CausticPhotonSourcePush source;
     uint32_t resolution, sub, first_row, rows, band_first, band_rows, jitter, pad;
 };
 static_assert(sizeof(CausticPhotonPush) == 128, "the push-constant size every device supports");
 
-CausticPhotonPush photon_push(const CausticInputs& in) {
+}  // namespace
+
+CausticPhotonSourcePush caustic_photon_source(const CausticInputs& in) {
     const CausticMapFrame frame = fit_caustic_map(in);
-    CausticPhotonPush push{};
+    CausticPhotonSourcePush push{};
     push.space = caustic_light_space_push(frame, in);
     for (int c = 0; c < 3; ++c) {
         push.deposit_scale[c] = frame.sun_up ? float(in.sun_irradiance[c] / frame.lsb[c]) : 0.0f;
         push.sigma_t[c] = float(in.sigma_t[c]);
     }
-    push.resolution = in.grid_resolution;
-    push.sub = in.sub_photons;
-    push.jitter = in.jitter ? 1u : 0u;
     return push;
 }
 
-uint32_t groups(uint64_t invocations) { return static_cast<uint32_t>((invocations + kGroupSide - 1) / kGroupSide); }
+std::vector<RowBand> caustic_photon_chunks(const fg::PassContext& context, uint32_t resolution, uint32_t sub) {
+    const VkPhysicalDeviceLimits& limits = context.context().properties().limits;
+    // Cell rows j .. j + rows read vertex rows j .. j + rows: one extra row per chunk.
+    return row_bands(resolution, VkDeviceSize{resolution + 1} * kWaterVertexBytes, 0, 1, limits.maxStorageBufferRange,
+                     limits.minStorageBufferOffsetAlignment, kMaxGroups * kGroupSide / sub);
+}
 
-}  // namespace
+uint32_t caustic_photon_groups(uint64_t invocations) {
+    return static_cast<uint32_t>((invocations + kGroupSide - 1) / kGroupSide);
+}
 
 fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInputs& inputs,
                                          const SunShadowMap* shadow) {
-    const CausticPhotonPush push = photon_push(inputs);  // checks the inputs
+    CausticPhotonPush push{};
+    push.source = caustic_photon_source(inputs);  // checks the inputs
+    push.resolution = inputs.grid_resolution;
+    push.sub = inputs.sub_photons;
+    push.jitter = inputs.jitter ? 1u : 0u;
     const CausticMapFrame frame = fit_caustic_map(inputs);  // its size includes the margin for the waves
     const VkDeviceSize bytes = caustic_flux_bytes(frame.width, frame.height);
 
@@ -87,12 +95,9 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
             const VkPhysicalDeviceLimits& limits = context.context().properties().limits;
             const uint32_t r = push.resolution, s = push.sub;
-            // Cell rows j .. j + rows read vertex rows j .. j + rows: one extra row per chunk.
-            const auto chunks = row_bands(r, VkDeviceSize{r + 1} * kWaterVertexBytes, 0, 1,
-                                          limits.maxStorageBufferRange, limits.minStorageBufferOffsetAlignment,
-                                          kMaxGroups * kGroupSide / s);
-            const uint32_t width = static_cast<uint32_t>(push.space.u_axis[3]);
-            const uint32_t height = static_cast<uint32_t>(push.space.v_axis[3]);
+            const auto chunks = caustic_photon_chunks(context, r, s);
+            const uint32_t width = static_cast<uint32_t>(push.source.space.u_axis[3]);
+            const uint32_t height = static_cast<uint32_t>(push.source.space.v_axis[3]);
             const auto bands = row_bands(height, VkDeviceSize{width} * kCausticTexelBytes, kCausticFluxHeaderBytes, 0,
                                          limits.maxStorageBufferRange, limits.minStorageBufferOffsetAlignment, height);
             fg::DescriptorBinding lost = context.storage_buffer(2, d.flux);
@@ -118,7 +123,7 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
                     }
                     context.bind(pipeline, bindings);
                     context.push_constants(pipeline, p);
-                    vkCmdDispatch(context.cmd(), groups(uint64_t{r} * s), groups(uint64_t{chunk.rows} * s), 1);
+                    vkCmdDispatch(context.cmd(), caustic_photon_groups(uint64_t{r} * s), caustic_photon_groups(uint64_t{chunk.rows} * s), 1);
                 }
             }
         });

@@ -24,10 +24,32 @@
 #pragma once
 
 #include "engine/framegraph/frame_graph.hpp"
+#include "engine/framegraph/pass_context.hpp"
+#include "passes/caustics_bands.hpp"
 #include "passes/caustics_light_space.hpp"
 #include "passes/sun_shadow.hpp"
 
+#include <vector>
+
 namespace vkw::passes {
+
+// What the push constants of every photon kernel begin with (struct CausticPhotonSource of
+// shaders/caustics/caustic_grid_photon.glsl): the light-space frame, E_s / LSB and sigma_t.
+struct CausticPhotonSourcePush {
+    CausticLightSpacePush space;
+    float deposit_scale[4];
+    float sigma_t[4];
+};
+static_assert(sizeof(CausticPhotonSourcePush) == 96);
+
+// Throws vkw::InternalError for inputs out of range.
+CausticPhotonSourcePush caustic_photon_source(const CausticInputs& inputs);
+
+// The photon grid's dispatches: chunks of cell rows whose vertex rows fit one storage binding
+// and whose S x S photons per cell stay within 65535 groups of 8 per side.
+std::vector<RowBand> caustic_photon_chunks(const fg::PassContext& context, uint32_t resolution, uint32_t sub);
+// Groups of 8 (the kernels' local size per side) for `invocations`.
+uint32_t caustic_photon_groups(uint64_t invocations);
 
 // Adds the clear of the flux buffer (transfer) and the photon pass (compute) and returns the
 // flux buffer: caustic_flux_bytes(W, H) bytes, laid out as caustics_bands.hpp says, in units of

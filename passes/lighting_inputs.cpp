@@ -16,6 +16,11 @@ void LightingInputs::declare(fg::PassBuilder& builder, const fg::Blackboard& bla
         caustic_frame = builder.uniform_buffer(caustics.frame, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
         caustic_map = builder.sample(caustics.irradiance, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
     }
+    if (blackboard.has(keys::kCameraCaustics)) {
+        const CameraCaustics& caustics = blackboard.get(keys::kCameraCaustics);
+        camera_caustic_receivers = builder.sample(caustics.receivers, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+        camera_caustics = builder.sample(caustics.irradiance, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+    }
     if (blackboard.has(keys::kSunShadow)) {
         const SunShadowMap& shadow = blackboard.get(keys::kSunShadow);
         sun_shadow_map = builder.sample(shadow.depth, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
@@ -25,6 +30,7 @@ void LightingInputs::declare(fg::PassBuilder& builder, const fg::Blackboard& bla
 
 std::string LightingInputs::shader(const std::string& base) const {
     return base + (camera_medium ? ".per_pixel" : ".frame") + (caustic_map ? "_caustics" : "") +
+           (camera_caustics ? "_camera_caustics" : "") +
            (sun_shadow_map ? "_shadow" : "");
 }
 
@@ -34,6 +40,10 @@ void LightingInputs::add_layout(std::vector<VkDescriptorSetLayoutBinding>& bindi
     if (camera_medium) bindings.push_back({3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
     if (caustic_map) {
         bindings.push_back({4, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
+        bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
+    }
+    if (camera_caustics) {
+        bindings.push_back({4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
         bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
     }
     if (sun_shadow_map) {
@@ -49,6 +59,10 @@ void LightingInputs::add_bindings(const fg::PassContext& context, std::vector<fg
     if (caustic_map) {
         bindings.push_back(context.uniform_buffer(4, *caustic_frame));
         bindings.push_back(context.sampled(5, *caustic_map));
+    }
+    if (camera_caustics) {
+        bindings.push_back(context.sampled_nearest(4, *camera_caustic_receivers));
+        bindings.push_back(context.sampled_nearest(5, *camera_caustics));
     }
     if (sun_shadow_map) {
         bindings.push_back(context.sampled_nearest(6, *sun_shadow_map));

@@ -20,11 +20,15 @@ struct LightingInputs {
     std::optional<fg::ImageHandle> camera_medium;  // binding 3: the stencil split's mask
     std::optional<fg::BufferHandle> caustic_frame;  // binding 4: the caustic map's light space
     std::optional<fg::ImageHandle> caustic_map;     // binding 5: the caustic irradiance map
+    // Or the camera-space splats: binding 4 their receivers' view, binding 5 their irradiance.
+    std::optional<fg::ImageHandle> camera_caustic_receivers;
+    std::optional<fg::ImageHandle> camera_caustics;
     std::optional<fg::ImageHandle> sun_shadow_map;   // binding 6: the sun's depth of the objects
     std::optional<fg::BufferHandle> sun_shadow_space;  // binding 7: its light space
 
     // Declares, as sampled/uniform reads of this pass, whichever the blackboard holds (the
-    // caustic map lights every receiver under the water, the floor and the meshes alike).
+    // caustic map or the camera-space splats light every receiver under the water, the floor and
+    // the meshes alike).
     // Passes that do not draw the camera's pixels (the scene views) pass with_camera_medium = false.
     void declare(fg::PassBuilder& builder, const fg::Blackboard& blackboard, bool with_camera_medium = true);
     // "<shader>.<variant>" for a shader compiled with the lighting variants.

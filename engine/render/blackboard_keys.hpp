@@ -3,6 +3,7 @@
 
 #include "engine/framegraph/blackboard.hpp"
 #include "engine/framegraph/handles.hpp"
+#include "passes/caustics_camera_splats.hpp"
 #include "passes/caustics_resolve.hpp"
 #include "passes/sun_shadow.hpp"
 
@@ -16,6 +17,8 @@ inline constexpr fg::BlackboardKey<fg::BufferHandle> kSceneOptics{"scene optics"
 // while the stencil split runs; passes/water_volume_stencil.hpp).
 inline constexpr fg::BlackboardKey<fg::ImageHandle> kCameraMedium{"camera medium"};
 inline constexpr fg::BlackboardKey<passes::CausticMap> kCausticMap{"caustic map"};
+// The camera-space splats instead of the map (effects.caustics.splat = camera-space): never both.
+inline constexpr fg::BlackboardKey<passes::CameraCaustics> kCameraCaustics{"camera caustics"};
 // RGBA32F, output size: the caustic layer (passes/caustic_layer.hpp), only when asked for.
 inline constexpr fg::BlackboardKey<fg::ImageHandle> kCausticLayer{"caustic layer"};
 // RGBA32F, the refraction scene view's size: its caustic layer, while both are drawn.

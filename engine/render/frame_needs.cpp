@@ -188,12 +188,15 @@ fg::FrameNeeds decide_frame_needs(const Scene& scene, double aspect) {
                            : format("the sun is up and receiver meshes reach under the water (down to y = %.3g m, "
                                     "crest %.3g m)",
                                     meshes.lowest, bounds.hi.y));
-    // The blur feeds nothing but the caustic map: needed when the map is and its radius is not 0.
+    // The blur feeds nothing but the light-space caustic map: needed when the map is and its radius
+    // is not 0.
     const fg::EffectDecision* caustics = needs.find(fg::Effect::SurfaceCaustics);
     const bool caustics_run = caustics && caustics->needed;
     const double blur_radius = scene.effects.caustic_blur.radius;
-    decide(needs, scene, fg::Effect::CausticBlur, caustics_run && blur_radius > 0.0,
+    const bool camera_space = scene.effects.caustics.splat == CausticSplat::CameraSpace;
+    decide(needs, scene, fg::Effect::CausticBlur, caustics_run && !camera_space && blur_radius > 0.0,
            !caustics_run       ? "the caustic passes do not run"
+           : camera_space      ? "the caustics are splatted in camera space (effects.caustics.splat): no map to blur"
            : blur_radius > 0.0 ? format("the caustic map runs and caustic_blur.radius = %.3g texels", blur_radius)
                                : "caustic_blur.radius = 0 (no blur)");
     decide_godrays(needs, scene, bounds, water_visible, sun_up);

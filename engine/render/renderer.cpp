@@ -4,6 +4,8 @@
 #include "engine/render/blackboard_keys.hpp"
 #include "engine/render/frame_needs.hpp"
 #include "engine/vk/context.hpp"
+#include "passes/caustics_camera_receivers.hpp"
+#include "passes/caustics_camera_splats.hpp"
 #include "passes/caustics_photons.hpp"
 #include "passes/caustics_resolve.hpp"
 #include "passes/floor.hpp"
@@ -57,6 +59,12 @@ glm::dvec3 refracted_sun(const Scene& scene) {
     return glm::normalize(eta * s + (eta * cos_i - cos_t) * glm::dvec3(0.0, 1.0, 0.0));
 }
 
+// The views' clip planes (the scene views, the camera-space caustics' receivers): the waves'
+// amplitude and a millimetre beyond the mean level.
+float scene_view_clip_margin(const Scene& scene) {
+    return static_cast<float>(water_bounds(scene).hi.y - scene.water->level + 1e-3);
+}
+
 bool casts_sun_shadows(const Scene& scene, const passes::ReceiverMeshes* receivers) {
     return receivers && !receivers->empty() && scene.sun.direction.y < 0.0;
 }
@@ -68,8 +76,7 @@ passes::WaterSceneLookups scene_lookups(fg::FrameGraph& graph, const Scene& scen
     if (!receivers || receivers->empty()) return lookups;
     const EffectSettings& reflection = scene.effects[fg::Effect::Reflection];
     const EffectSettings& refraction = scene.effects[fg::Effect::Refraction];
-    // The views' clip planes: the waves' amplitude and a millimetre beyond the mean level.
-    const auto clip_margin = static_cast<float>(water_bounds(scene).hi.y - scene.water->level + 1e-3);
+    const float clip_margin = scene_view_clip_margin(scene);
     if (graph.needs().needs(fg::Effect::Reflection)) {
         const bool mirrored = reflection.method == SceneLookup::Projective;
         lookups.reflection_view = passes::add_scene_view_pass(
@@ -141,16 +148,27 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
             caustics.kernel = scene.effects.caustics.kernel;
             caustics.map_width = caustics.map_height =
                 caustic_map_texels(water.grid_resolution, scene.effects.caustics.map_scale);
-            passes::CausticMap map =
-                scene.effects.caustics.method == CausticMethod::Procedural
-                    ? passes::add_caustic_procedural_pass(graph, caustics)
-                    : passes::add_caustic_resolve_pass(
-                          graph, passes::add_caustic_photon_pass(graph, caustics, sun_shadow ? &*sun_shadow : nullptr),
-                          caustics);
-            if (graph.needs().needs(fg::Effect::CausticBlur)) {
-                map = passes::add_caustic_blur_pass(graph, map, caustics, scene.effects.caustic_blur.radius);
+            if (scene.effects.caustics.splat == CausticSplat::CameraSpace) {
+                // The photons onto the receivers the camera sees (the light-space map and its blur
+                // are left out: nothing reads them).
+                const passes::CameraCausticExtent extent = passes::camera_caustic_extent(width, height);
+                const fg::ImageHandle view =
+                    passes::add_caustic_receivers_pass(graph, receivers, extent, scene_view_clip_margin(scene));
+                graph.blackboard().put(keys::kCameraCaustics,
+                                       passes::add_caustic_camera_splat_passes(graph, caustics, view, extent,
+                                                                               sun_shadow ? &*sun_shadow : nullptr));
+            } else {
+                passes::CausticMap map =
+                    scene.effects.caustics.method == CausticMethod::Procedural
+                        ? passes::add_caustic_procedural_pass(graph, caustics)
+                        : passes::add_caustic_resolve_pass(
+                              graph, passes::add_caustic_photon_pass(graph, caustics, sun_shadow ? &*sun_shadow : nullptr),
+                              caustics);
+                if (graph.needs().needs(fg::Effect::CausticBlur)) {
+                    map = passes::add_caustic_blur_pass(graph, map, caustics, scene.effects.caustic_blur.radius);
+                }
+                graph.blackboard().put(keys::kCausticMap, map);
             }
-            graph.blackboard().put(keys::kCausticMap, map);
         }
     }
     // The sky after the stencil split: a ray from the water that meets nothing sees nothing.
@@ -207,6 +225,7 @@ std::string Renderer::water_configuration(const Scene& scene) {
     // The photon pass captures its sampling and its splat kernel at declaration.
     const CausticSettings& caustics = scene.effects.caustics;
     key += " photons " + std::to_string(int(caustics.method)) + "/" + std::to_string(caustics.sub_photons) + "/" + std::to_string(int(caustics.jitter)) + "/" +
+           std::to_string(int(caustics.splat)) + "/" +
            std::to_string(int(caustics.kernel)) + "/" + std::to_string(caustics.map_scale) + " blur " +
            std::to_string(scene.effects.caustic_blur.radius);
     // The water pass and the scene views capture the lookup methods at declaration.
@@ -319,6 +338,19 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
                             std::to_string(passes::water_surface_bytes(scene.water->grid_resolution) >> 20) +
                             " MiB of surface vertices (accepted on '" + context_.device_name() + "': up to about " +
                             std::to_string(largest_grid) + ")");
+        }
+    }
+    if (scene.water && scene.effects.caustics.splat == CausticSplat::CameraSpace) {
+        // The camera-space splats' flux buffer is one storage binding.
+        const passes::CameraCausticExtent extent = passes::camera_caustic_extent(options.width, options.height);
+        const VkDeviceSize range = context_.properties().limits.maxStorageBufferRange;
+        if (passes::camera_caustic_flux_bytes(extent) > range) {
+            throw UserError(scene.source.string() + ": effects.caustics.splat: camera-space splats at " +
+                            std::to_string(options.width) + "x" + std::to_string(options.height) + " need " +
+                            std::to_string(passes::camera_caustic_flux_bytes(extent) >> 20) +
+                            " MiB of flux in one storage binding (accepted on '" + context_.device_name() +
+                            "': up to " + std::to_string(range >> 20) +
+                            " MiB, about 2.3 million output pixels at 128 MiB; or splat light-space)");
         }
     }
     fg::FrameNeeds needs = decide_frame_needs(scene, double(options.width) / double(options.height));

@@ -1,5 +1,6 @@
 // The settings of "effects.caustics" beside its mode (effects_json.cpp reads the mode): whether
-// flat water keeps the exact stand-in, the photons per water cell, and their splat kernel; and
+// flat water keeps the exact stand-in, the photons per water cell, their splat kernel and where
+// they are splatted (the light-space map or the camera's view); and
 // of "effects.caustic_blur": its radius.
 #include "engine/scene/scene_json.hpp"
 
@@ -12,6 +13,11 @@ constexpr std::array<Named<CausticKernel>, 3> kKernels = {{
     {"adaptive", CausticKernel::Adaptive},
     {"bilinear", CausticKernel::Bilinear},
     {"footprint", CausticKernel::Footprint},
+}};
+
+constexpr std::array<Named<CausticSplat>, 2> kSplats = {{
+    {"light-space", CausticSplat::LightSpace},
+    {"camera-space", CausticSplat::CameraSpace},
 }};
 
 constexpr std::array<Named<CausticMethod>, 2> kMethods = {{
@@ -30,8 +36,13 @@ CausticSettings read_caustic_settings(FieldReader& fields) {
         fields.integer("sub_photons", Range::closed(1.0, 8.0, "photons per cell side"), defaults.sub_photons));
     caustics.jitter = fields.boolean("jitter", defaults.jitter);
     caustics.kernel = fields.choice("kernel", kKernels, defaults.kernel);
+    caustics.splat = fields.choice("splat", kSplats, defaults.splat);
     caustics.map_scale = fields.number("map_scale", Range::closed(0.25, 4.0, "texels per water cell"), defaults.map_scale);
     fields.finish();
+    if (caustics.splat == CausticSplat::CameraSpace && caustics.method != CausticMethod::Photons) {
+        fields.fail("splat", "camera-space splats gather the photons' flux, so they need method \"photons\"",
+                    "light-space with method \"procedural\"");
+    }
     return caustics;
 }
 

@@ -144,6 +144,13 @@ enum class CausticMethod : uint8_t {
     Procedural,  // seed 003's backward ray and sun lobe, a baseline (passes/caustics_procedural.hpp)
 };
 
+// effects.caustics.splat: where the photons' flux is gathered.
+enum class CausticSplat : uint8_t {
+    LightSpace,   // the light-space map along the refracted sun, read by every receiver (passes/caustics_photons.hpp)
+    CameraSpace,  // gaussians on the receivers the camera sees without the water (seed 002;
+                  // passes/caustics_camera_splats.hpp)
+};
+
 // The settings of effects.caustics beside its mode (scenes/README.md).
 struct CausticSettings {
     CausticMethod method = CausticMethod::Photons;
@@ -152,7 +159,8 @@ struct CausticSettings {
     bool analytic_flat = true;
     uint32_t sub_photons = 1;  // S: S x S photons per cell of the water grid, in [1, 8]
     bool jitter = false;       // each photon at a hashed point of its sub-cell instead of its centre
-    CausticKernel kernel = CausticKernel::Adaptive;
+    CausticKernel kernel = CausticKernel::Adaptive;  // the light-space map's splat
+    CausticSplat splat = CausticSplat::LightSpace;
     // The light-space map's texels per water cell along each side, in [0.25, 4]: 1 puts one photon
     // per texel (S = 1) on the texel centres under flat water; more resolves finer caustics with
     // fewer photons per texel (the adaptive kernel then widens to fill), less averages more.

@@ -46,6 +46,16 @@ vec3 caustic_patch_normal(CausticCell c, vec2 uv) {
     return mix(mix(c.v00.normal.xyz, c.v10.normal.xyz, uv.x), mix(c.v01.normal.xyz, c.v11.normal.xyz, uv.x), uv.y);
 }
 
+// The ray of a photon that would leave from point `at` of the patch: its entry point p and
+// refracted direction t; false where it does not enter (refracted up or too flat). The kernels
+// sized by where a photon's neighbours land trace these.
+bool caustic_patch_ray(CausticCell cell, vec2 at, CausticLightSpace space, out vec3 p, out vec3 t) {
+    p = caustic_patch_point(cell, at);
+    t = vec3(0.0, -1.0, 0.0);
+    return refract_direction(space.sun.xyz, normalize(caustic_patch_normal(cell, at)), 1.0 / space.sun.w, t) &&
+           t.y <= -kCausticUpEpsilon;
+}
+
 // Traces the photon of the sub-cell [uv0, uv1] of the patch. False when it carries nothing: the
 // sub-cell faces away from the sun (its projected area or the cosine at its centre is not
 // positive), the refracted ray points up, or the surface lies below the floor.

@@ -44,12 +44,8 @@ vec2 splat_half_width(CausticCell cell, vec2 at, float step, CausticPhoton photo
     vec2 spread = vec2(1.0);
     for (int axis = 0; axis < 2; ++axis) {
         const vec2 neighbour = at + (axis == 0 ? vec2(step, 0.0) : vec2(0.0, step));
-        const vec3 p = caustic_patch_point(cell, neighbour);
-        vec3 t;
-        if (!refract_direction(space.sun.xyz, normalize(caustic_patch_normal(cell, neighbour)), 1.0 / space.sun.w, t) ||
-            t.y > -kCausticUpEpsilon) {
-            return vec2(1.0);
-        }
+        vec3 p, t;
+        if (!caustic_patch_ray(cell, neighbour, space, p, t)) return vec2(1.0);
         spread = max(spread, abs(caustic_texel_coord(p + photon.path * t, space) - centre));
     }
     return clamp(spread, vec2(1.0), vec2(kMaxSplatHalfWidth));

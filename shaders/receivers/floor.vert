@@ -1,8 +1,10 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // The floor plane y = floor_plane.x, a square of half extent floor_plane.y, as two
-// triangles generated from the vertex index.
-#include "common/frame_constants.glsl"
+// triangles generated from the vertex index; seen from the camera or, in a view with the scene
+// views' guard band (the camera-space caustics' receivers), as that view sees it.
+#include "receivers/receiver_push.glsl"
+#include "scene_view/scene_view.glsl"
 
 layout(location = 0) out vec3 out_world_position;
 layout(location = 1) out vec3 out_normal;
@@ -15,5 +17,5 @@ void main() {
     out_world_position = world;
     out_normal = vec3(0.0, 1.0, 0.0);
     out_albedo = frame.floor_albedo.rgb;
-    gl_Position = frame.view_proj * vec4(world, 1.0);
+    gl_Position = in_scene_view() ? scene_view_clip(world, scene_view_mirrored()) : frame.view_proj * vec4(world, 1.0);
 }

@@ -1,7 +1,9 @@
 // Light under the water for Lambertian receivers (PHYSICS.md sections 1 and 3), and the
 // floor as the receiver that refracted view rays meet. The sun term is the caustic
-// irradiance when VKWATER_CAUSTICS is defined (the map of passes/caustics_*, whose photons end on
-// the floor and the receiver meshes) and the flat-surface stand-in otherwise: one or the other, never both.
+// irradiance when VKWATER_CAUSTICS (the light-space map of passes/caustics_*, whose photons end on
+// the floor and the receiver meshes) or VKWATER_CAMERA_CAUSTICS (the camera-space splats of
+// passes/caustics_camera_splats.hpp) is defined and the flat-surface stand-in otherwise: one or
+// the other at each point, never both.
 #ifndef VKWATER_UNDERWATER_LIGHT_GLSL
 #define VKWATER_UNDERWATER_LIGHT_GLSL
 
@@ -9,44 +11,57 @@
 #include "common/lambert.glsl"
 #include "water_shading/scene_optics.glsl"
 
-#ifdef VKWATER_CAUSTICS
+#if defined(VKWATER_CAUSTICS)
 // Bindings 4 and 5 of set 0 in every shader that lights receivers under the water.
 #define CAUSTIC_SET 0
 #define CAUSTIC_PARAMS_BINDING 4
 #define CAUSTIC_MAP_BINDING 5
 #include "caustics/caustic_lookup.glsl"
+#elif defined(VKWATER_CAMERA_CAUSTICS)
+#include "caustics/caustic_camera_lookup.glsl"  // bindings 4 and 5
 #endif
 
 bool point_under_water(vec3 p) {
     return frame.water.w > 0.5 && p.y < frame.water.x && abs(p.x) <= frame.water.z && abs(p.z) <= frame.water.z;
 }
 
-// The sun: the caustic irradiance (VKWATER_CAUSTICS), or the stand-in through the flat surface,
-// E_perp max(0, -t.N) exp(-sigma_t depth / cos_t); plus skylight pi L_sky_avg T_hemi
+// The sun: the caustic irradiance (VKWATER_CAUSTICS: the light-space map; VKWATER_CAMERA_CAUSTICS:
+// the camera-space splats, where the camera sees the point), or the stand-in through the flat
+// surface, E_perp max(0, -t.N) exp(-sigma_t depth / cos_t); plus skylight pi L_sky_avg T_hemi
 // exp(-sigma_t depth) (the vertical path of the model). With objects (VKWATER_SUN_SHADOW) the sun
 // is shadowed along the refracted beam t (PHYSICS.md section 1):
 // - the caustic photons were already stopped by objects above the water and ended on the first
-//   receiver along their ray, so the map needs only its depth test: a point behind the surface
-//   the map sees along t (the shadow map's beam half) reads nothing;
+//   receiver along their ray, so the light-space map needs only its depth test: a point behind the
+//   surface the map sees along t (the shadow map's beam half) reads nothing; the camera-space
+//   splats passed theirs against the camera's view when they were splatted;
 // - the stand-in is shadowed by objects under the water along t (the beam half) and by objects
 //   above it where the beam enters the flat surface (the sun half).
-vec3 sun_irradiance_under_water(vec3 p, vec3 normal, SceneOptics optics) {
+vec3 flat_surface_sun_under_water(vec3 p, vec3 normal, SceneOptics optics) {
     float depth = max(0.0, frame.water.x - p.y);
-    vec3 sigma_t = frame.medium_sigma_t.rgb;
     float cos_receiver = max(0.0, -dot(optics.refracted_sun.xyz, normal));
-#ifdef VKWATER_CAUSTICS
-    vec3 sun = caustic_irradiance(p, normal);
-#else
-    vec3 sun = optics.e_perp0.rgb * cos_receiver * exp(-sigma_t * (depth / optics.refracted_sun.w));
-#endif
+    vec3 sun = optics.e_perp0.rgb * cos_receiver * exp(-frame.medium_sigma_t.rgb * (depth / optics.refracted_sun.w));
 #ifdef VKWATER_SUN_SHADOW
-#ifndef VKWATER_CAUSTICS
     vec3 entry = p - (depth / optics.refracted_sun.w) * optics.refracted_sun.xyz;
     sun *= sun_visibility(entry, max(-frame.sun_direction.y, 1e-3));
-#endif
     if (cos_receiver > 0.0) sun *= beam_visibility_under_water(p, cos_receiver);
 #endif
     return sun;
+}
+
+vec3 sun_irradiance_under_water(vec3 p, vec3 normal, SceneOptics optics) {
+#if defined(VKWATER_CAUSTICS)
+    vec3 sun = caustic_irradiance(p, normal);
+#ifdef VKWATER_SUN_SHADOW
+    float cos_receiver = max(0.0, -dot(optics.refracted_sun.xyz, normal));
+    if (cos_receiver > 0.0) sun *= beam_visibility_under_water(p, cos_receiver);
+#endif
+    return sun;
+#elif defined(VKWATER_CAMERA_CAUSTICS)
+    vec3 sun;
+    return camera_caustic_irradiance(p, sun) ? sun : flat_surface_sun_under_water(p, normal, optics);
+#else
+    return flat_surface_sun_under_water(p, normal, optics);
+#endif
 }
 
 vec3 receiver_irradiance_under_water(vec3 p, vec3 normal, SceneOptics optics) {
