@@ -212,6 +212,8 @@ public:
     const std::vector<ResourceDecl>& resources() const { return resources_; }
     uint32_t image_width(uint32_t resource) const;
     uint32_t image_height(uint32_t resource) const;
+    // Bytes of a resource's texels or buffer (images: width x height x texel size, one mip level).
+    uint64_t resource_bytes(uint32_t resource) const;
 
     // Printable forms, for `vkwater passes` and golden tests.
     std::string describe() const;

@@ -9,6 +9,17 @@
 namespace vkw::fg {
 namespace {
 
+// Bytes in the unit that shows them: KiB below a MiB.
+std::string byte_size(uint64_t bytes) {
+    char text[32];
+    if (bytes < 1024 * 1024) {
+        std::snprintf(text, sizeof text, "%.1f KiB", static_cast<double>(bytes) / 1024.0);
+        return text;
+    }
+    std::snprintf(text, sizeof text, "%.2f MiB", static_cast<double>(bytes) / (1024.0 * 1024.0));
+    return text;
+}
+
 std::string megabytes(uint64_t bytes) {
     char text[32];
     std::snprintf(text, sizeof text, "%.2f MiB", static_cast<double>(bytes) / (1024.0 * 1024.0));
@@ -32,6 +43,12 @@ std::vector<std::string> pass_names_in_order(const FrameGraph& graph) {
 
 }  // namespace
 
+uint64_t FrameGraph::resource_bytes(uint32_t resource) const {
+    const ResourceDecl& decl = resources_[resource];
+    if (!decl.is_image) return decl.buffer.size;
+    return uint64_t{image_width(resource)} * image_height(resource) * format_texel_bytes(decl.image.format);
+}
+
 std::string FrameGraph::describe() const {
     const CompiledGraph& compiled = this->compiled();
     std::string text = "needs:\n";
@@ -44,13 +61,25 @@ std::string FrameGraph::describe() const {
     for (size_t position = 0; position < compiled.order.size(); ++position) {
         const PassDecl& pass = passes_[compiled.order[position]];
         text += "  " + std::to_string(position + 1) + ". " + pass.name + " [" + kind_name(pass.kind) + "]\n";
-        std::string reads, writes;
+        std::string reads, writes, creates;
+        uint64_t created_bytes = 0;
+        int created = 0;
         for (const ResourceUse& use : pass.uses) {
             std::string& list = use.version_written != use.version_read ? writes : reads;
             list += (list.empty() ? "" : ", ") + resources_[use.resource].name + " (" + use_name(use.use) + ")";
+            // The resources this pass brings into the frame: what its method costs in memory.
+            const ResourceDecl& resource = resources_[use.resource];
+            if (!resource.imported && use.version_read == 0 && use.version_written == 1) {
+                const uint64_t bytes = resource_bytes(use.resource);
+                created_bytes += bytes;
+                ++created;
+                creates += (creates.empty() ? "" : ", ") + resource.name + " " + byte_size(bytes);
+            }
         }
         if (!reads.empty()) text += "       reads:  " + reads + "\n";
         if (!writes.empty()) text += "       writes: " + writes + "\n";
+        if (created > 1) creates += " (" + byte_size(created_bytes) + " in all)";
+        if (!creates.empty()) text += "       creates: " + creates + "\n";
     }
     text += "culled passes:\n";
     if (compiled.culled.empty()) text += "  (none)\n";
