@@ -15,7 +15,14 @@ struct WaterPush {
     uint32_t reflection_steps, refraction_steps;
     float scene_size;
     float shallow_blend;
+    uint32_t fresnel;  // 0 exact, 1 Schlick, 2 seed 001's power term
+    float fresnel_power;
+    uint32_t depth_blend;  // 1: seed 001's depth colour
+    float blend_k;
+    float pad;  // water_colour is a vec4 at offset 48
+    float water_colour[4];
 };
+static_assert(sizeof(WaterPush) == 64);
 
 uint32_t lookup_code(const std::optional<fg::ImageHandle>& view, SceneLookup method) {
     if (!view) return 0;
@@ -23,8 +30,20 @@ uint32_t lookup_code(const std::optional<fg::ImageHandle>& view, SceneLookup met
 }
 }  // namespace
 
+WaterSurfaceShading water_surface_shading(const WaterShadingSettings& settings) {
+    WaterSurfaceShading shading;
+    shading.fresnel = settings.fresnel;
+    shading.fresnel_power = static_cast<float>(settings.fresnel_power);
+    if (settings.depth_blend) {
+        shading.depth_blend = true;
+        shading.water_colour = glm::vec3(settings.depth_blend->colour);
+        shading.blend_k = static_cast<float>(settings.depth_blend->k);
+    }
+    return shading;
+}
+
 void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uint32_t grid_resolution,
-                            const WaterSceneLookups& lookups) {
+                            const WaterSceneLookups& lookups, const WaterSurfaceShading& shading) {
     struct Data {
         fg::BufferHandle surface;
         fg::ImageHandle hdr, depth;
@@ -50,7 +69,7 @@ void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uin
                 d.refraction_view_caustic = builder.sample(graph.blackboard().get(keys::kRefractionViewCaustic), fragment);
             }
         },
-        [grid_resolution, lookups](const Data& d, fg::PassContext& context) {
+        [grid_resolution, lookups, shading](const Data& d, fg::PassContext& context) {
             const bool views = d.reflection_view || d.refraction_view;
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "water_shading/water_surface.vert";
@@ -90,7 +109,13 @@ void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uin
                                  static_cast<uint32_t>(lookups.reflection_steps),
                                  static_cast<uint32_t>(lookups.refraction_steps),
                                  lookups.scene_size,
-                                 lookups.shallow_blend};
+                                 lookups.shallow_blend,
+                                 static_cast<uint32_t>(shading.fresnel),
+                                 shading.fresnel_power,
+                                 shading.depth_blend ? 1u : 0u,
+                                 shading.blend_k,
+                                 0.0f,
+                                 {shading.water_colour.r, shading.water_colour.g, shading.water_colour.b, 0.0f}};
             context.push_constants(pipeline, push);
             vkCmdDraw(context.cmd(), 6 * grid_resolution * grid_resolution, 1, 0, 0);
         });

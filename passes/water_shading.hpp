@@ -23,7 +23,17 @@ struct WaterSceneLookups {
     float shallow_blend = 0.0f;  // m: screen-space refraction blends to the direct view under this much water
 };
 
+// The surface's shading model (effects.water): the Fresnel form and seed 001's depth colour.
+struct WaterSurfaceShading {
+    SurfaceFresnel fresnel = SurfaceFresnel::Exact;
+    float fresnel_power = 4.5f;
+    bool depth_blend = false;
+    glm::vec3 water_colour{0.0f, 0.2f, 0.1f};
+    float blend_k = 0.5f;
+};
+WaterSurfaceShading water_surface_shading(const WaterShadingSettings& settings);
+
 void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uint32_t grid_resolution,
-                            const WaterSceneLookups& lookups = {});
+                            const WaterSceneLookups& lookups = {}, const WaterSurfaceShading& shading = {});
 
 }  // namespace vkw::passes

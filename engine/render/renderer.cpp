@@ -177,7 +177,8 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
     if (receivers && !receivers->empty()) passes::add_receivers_pass(graph, *receivers);
     if (surface) {
         passes::add_water_shading_pass(graph, *surface, scene.water->grid_resolution,
-                                       scene_lookups(graph, scene, receivers, caustic_layer));
+                                       scene_lookups(graph, scene, receivers, caustic_layer),
+                                       passes::water_surface_shading(scene.effects.water));
     }
     // Godrays only with a decision, as the frame constants' analytic in-scatter switch has it.
     const fg::EffectDecision* godrays = graph.needs().find(fg::Effect::VolumeCaustics);
@@ -228,6 +229,13 @@ std::string Renderer::water_configuration(const Scene& scene) {
            std::to_string(int(caustics.splat)) + "/" +
            std::to_string(int(caustics.kernel)) + "/" + std::to_string(caustics.map_scale) + " blur " +
            std::to_string(scene.effects.caustic_blur.radius);
+    // The water pass captures its shading model at declaration.
+    const WaterShadingSettings& shading = scene.effects.water;
+    key += " shading " + std::to_string(int(shading.fresnel)) + "/" + std::to_string(shading.fresnel_power);
+    if (shading.depth_blend) {
+        key += "/" + std::to_string(shading.depth_blend->colour.x) + "," + std::to_string(shading.depth_blend->colour.y) +
+               "," + std::to_string(shading.depth_blend->colour.z) + "/" + std::to_string(shading.depth_blend->k);
+    }
     // The water pass and the scene views capture the lookup methods at declaration.
     for (const fg::Effect effect : {fg::Effect::Reflection, fg::Effect::Refraction}) {
         key += " " + std::to_string(int(scene.effects[effect].method)) + "/" + std::to_string(scene.effects[effect].max_steps) +

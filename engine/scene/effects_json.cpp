@@ -48,6 +48,32 @@ EffectSettings read_refraction_effect(FieldReader& fields) {
     return effect;
 }
 
+constexpr std::array<Named<SurfaceFresnel>, 3> kFresnels = {{
+    {"exact", SurfaceFresnel::Exact},
+    {"schlick", SurfaceFresnel::Schlick},
+    {"power", SurfaceFresnel::Power},
+}};
+
+DepthBlend read_depth_blend(FieldReader& fields) {
+    const DepthBlend defaults;
+    DepthBlend blend;
+    blend.colour = fields.vec3("colour", Range::closed(0.0, 1e6, "W m^-2 sr^-1"), defaults.colour);
+    blend.k = fields.number("k", Range::closed(0.0, 100.0, "1/m"), defaults.k);
+    return blend;
+}
+
+// water: the surface's shading (the Fresnel form, seed 001's depth colour).
+WaterShadingSettings read_water_shading(FieldReader& fields) {
+    const WaterShadingSettings defaults;
+    WaterShadingSettings shading;
+    shading.fresnel = fields.choice("fresnel", kFresnels, defaults.fresnel);
+    shading.fresnel_power = fields.number("fresnel_power", Range::closed(1.0, 10.0, "exponent q"), defaults.fresnel_power);
+    if (fields.has("depth_blend")) {
+        shading.depth_blend = fields.object("depth_blend", Presence::optional, read_depth_blend);
+    }
+    return shading;
+}
+
 }  // namespace
 
 EffectsSettings read_effects(FieldReader& fields) {
@@ -62,6 +88,10 @@ EffectsSettings read_effects(FieldReader& fields) {
                 return mode;
             });
         };
+        if (effect.value == fg::Effect::Water) {
+            with_settings(read_water_shading, effects.water);
+            continue;
+        }
         if (effect.value == fg::Effect::VolumeCaustics) {
             with_settings(read_godray_settings, effects.godrays);
             continue;

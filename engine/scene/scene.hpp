@@ -177,7 +177,30 @@ struct CausticBlurSettings {
     double radius = 0.0;
 };
 
+// effects.water.fresnel: how the surface splits light between reflection and refraction.
+enum class SurfaceFresnel : uint8_t {
+    Exact,    // the Fresnel equations (PHYSICS.md section 2), total internal reflection included
+    Schlick,  // Schlick's approximation, taken on the less dense side (common/fresnel.glsl)
+    Power,    // seed 001's power term F = (1 - E.N)^q; total internal reflection kept from the exact form
+};
+
+// effects.water.depth_blend: seed 001's depth colour, C_w + exp(-k d) (C - C_w), in place of the
+// medium's attenuation and in-scatter along refracted rays (d: their path in the water).
+struct DepthBlend {
+    glm::dvec3 colour{0.0, 0.2, 0.1};  // C_w, as radiance (the seed's table: a display colour)
+    double k = 0.5;                     // 1/m (the seed's table)
+};
+
+// The settings of effects.water beside its mode: the surface's shading. The defaults are the
+// model of PHYSICS.md section 1; the others are the seeds' approximations, there to be measured.
+struct WaterShadingSettings {
+    SurfaceFresnel fresnel = SurfaceFresnel::Exact;
+    double fresnel_power = 4.5;  // q of the power term, in [1, 10] (the seed's table: 4.5)
+    std::optional<DepthBlend> depth_blend;
+};
+
 struct EffectsSettings {
+    WaterShadingSettings water;
     GodraySettings godrays;
     CausticSettings caustics;
     CausticBlurSettings caustic_blur;

@@ -29,7 +29,30 @@ layout(push_constant) uniform Params {
     uint reflection_steps, refraction_steps;
     float scene_size;                     // m: how far a screen-space march looks when no floor bounds it
     float shallow_blend;                  // m: see below; 0 off
+    uint fresnel_model;                   // SURFACE_FRESNEL_* (effects.water.fresnel)
+    float fresnel_power;                  // q of seed 001's power term
+    uint depth_blend;                     // 1: seed 001's depth colour along refracted rays
+    float blend_k;                        // its k, 1/m
+    vec4 water_colour;                    // rgb: its C_w (radiance)
 } params;
+
+const uint SURFACE_FRESNEL_EXACT = 0u;
+const uint SURFACE_FRESNEL_SCHLICK = 1u;
+const uint SURFACE_FRESNEL_POWER = 2u;
+
+// The surface's Fresnel split as the scene chooses it (effects.water.fresnel): the exact equations
+// (the model, PHYSICS.md section 2); Schlick's approximation; or seed 001's power term
+// F = (1 - E.N)^q with E.N the cosine on the incoming side, which knows no total internal
+// reflection, so the exact form's is kept (R = 1 outside Snell's window from below).
+Fresnel surface_fresnel(float cos_i, float n_i, float n_t) {
+    Fresnel exact = fresnel_exact(cos_i, n_i, n_t);
+    if (params.fresnel_model == SURFACE_FRESNEL_SCHLICK) return fresnel_schlick(cos_i, n_i, n_t);
+    if (params.fresnel_model == SURFACE_FRESNEL_POWER && !exact.total_internal_reflection) {
+        float r = pow(1.0 - clamp(cos_i, 0.0, 1.0), params.fresnel_power);
+        return Fresnel(r, 1.0 - r, exact.cos_t, false);
+    }
+    return exact;
+}
 
 // Seed 002's saving: a screen-space march is skipped for a ray whose Fresnel weight is
 // below this (its object is then missed: an error of at most 1% of the object's radiance
@@ -90,6 +113,13 @@ vec3 radiance_in_water(vec3 p, vec3 d, bool reflected, float weight, out float l
                                          ivec2(object_uv * vec2(textureSize(refraction_view_caustic, 0))), 0).rgb;
 #endif
     }
+    if (params.depth_blend != 0u && !reflected) {
+        // Seed 001's depth colour in place of the medium along the refracted ray: what the ray
+        // meets fades to the water's colour C_w by exp(-k d), d its length in the water (a ray
+        // that meets nothing sees C_w).
+        float a = floor_hit || length_in_water > 0.0 ? exp(-params.blend_k * length_in_water) : 0.0;
+        return params.water_colour.rgb + a * (behind - params.water_colour.rgb);
+    }
     return water_path_radiance(analytic_inscatter_sigma_s(), frame.medium_sigma_t.rgb, frame.medium_sigma_s.w,
                                max(0.0, frame.water.x - p.y), length_in_water, d, optics.refracted_sun.xyz,
                                optics.e_perp0.rgb, behind);
@@ -104,7 +134,7 @@ void main() {
 
     if (!camera_in_water()) {
         // From the air. A wave's back face seen from above keeps a grazing cosine of 0.
-        Fresnel f = fresnel_exact(max(0.0, -dot(v, normal)), 1.0, n);
+        Fresnel f = surface_fresnel(max(0.0, -dot(v, normal)), 1.0, n);
         vec3 reflected_direction = reflect(v, normal);
         vec3 reflected = sky_radiance(reflected_direction);
         vec3 object;
@@ -140,7 +170,7 @@ void main() {
     }
     // From the water: total internal reflection outside Snell's window.
     vec3 water_side = -normal;
-    Fresnel f = fresnel_exact(max(0.0, dot(v, normal)), n, 1.0);
+    Fresnel f = surface_fresnel(max(0.0, dot(v, normal)), n, 1.0);
     float reflected_length;
     vec3 reflected_caustic;  // not in the layer: the reference records the first receiver only
     vec3 at_surface =
