@@ -176,12 +176,21 @@ inline glm::dvec3 sun_at(double zenith_deg, const glm::dvec3& azimuth) {
     return glm::normalize(glm::dvec3(0.0, -std::cos(a), 0.0) + std::sin(a) * azimuth);
 }
 
+// Where a section 4 integral counts photons: those landing on the floor with x in [x_lo, x_hi]
+// (the whole floor by default), over a strip of z_width metres (0: the whole square, 2E).
+struct LandingWindow {
+    double x_lo = -1e300, x_hi = 1e300;
+    double z_width = 0.0;
+};
+
 // PHYSICS.md section 4 over the grid's whole parameter square [-E, E]^2 of a surface that varies
 // only along x0 (a sine along x): per RGB, E_s * integral of max(0, -s.N) |dP/du x dP/dv|
-// T(theta_i) exp(-sigma_t l) dx0 dz0, midpoint rule with `samples` points along x0 in double.
+// T(theta_i) exp(-sigma_t l) dx0 dz0, midpoint rule with `samples` points along x0 in double,
+// restricted to the photons landing in `window` (a sun in the xy-plane keeps z: a strip in z is
+// its width times the integral along x0).
 // With `intercepted_only` the integrand stops at the intercepted flux (T = 1, no extinction).
 inline glm::dvec3 section4_flux(const WaterSurface& surface, const passes::CausticInputs& in, int samples,
-                                bool intercepted_only = false) {
+                                bool intercepted_only = false, const LandingWindow& window = {}) {
     const double e = in.half_extent, dx = 2.0 * e / samples;
     glm::dvec3 sum(0.0);
     for (int k = 0; k < samples; ++k) {
@@ -200,9 +209,11 @@ inline glm::dvec3 section4_flux(const WaterSurface& surface, const passes::Caust
         const glm::dvec3 t = eta * in.sun_direction + (eta * cos_i - cos_t) * p.normal;
         if (t.y > -1e-6) continue;
         const double l = (p.position.y - in.floor_height) / -t.y;
+        const double x_hit = p.position.x + l * t.x;
+        if (x_hit < window.x_lo || x_hit > window.x_hi) continue;
         sum += in.sun_irradiance * projected * t_factor * glm::exp(-in.sigma_t * l);
     }
-    return sum * dx * (2.0 * e);
+    return sum * dx * (window.z_width > 0.0 ? window.z_width : 2.0 * e);
 }
 
 }  // namespace vkw::test

@@ -5,7 +5,9 @@
 // - a tilted receiver: a 3 m square turned 30 and 20 degrees, under the water, seen through it;
 // - energy: from a camera in the water, the irradiance the shading reads integrated over the
 //   visible floor (each pixel's floor area from the camera's own rays) against the reference's,
-//   which under flat water is the flux of exactly the photons landing there (E_flat times that area).
+//   which under flat water is the flux of exactly the photons landing there (E_flat times that area);
+//   and under a sine wave, from straight above, against PHYSICS.md section 4's integral (CPU, double)
+//   restricted to the photons that land in the frame's footprint.
 // Where the comparisons look: pixels at least `margin` pixels from any edge in the reference (a
 // splat reaches at most 7.5 pixels of its level from its photon, kMaxSplatTaps = 16 x 16; closer
 // to a receiver's edge or a silhouette the splats are cut and renormalised, a kernel estimate's
@@ -14,6 +16,8 @@
 #include "engine/render/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tests/support/gpu_test.hpp"
+#include "engine/water/wave_sum_surface.hpp"
+#include "tests/caustics/caustics_support.hpp"
 #include "tools/reference/reference_renderer.hpp"
 
 #include <glm/glm.hpp>
@@ -195,6 +199,83 @@ TEST_F(CameraSpaceCaustics, EnergyOnTheVisibleFloorFromInTheWater) {
                 area, pixels, integral_got, integral_want, ratio);
     EXPECT_EQ(pixels, int(kWidth * kHeight)) << "every pixel sees the floor";
     EXPECT_NEAR(ratio, 1.0, kSplatTolerance);
+}
+
+TEST_F(CameraSpaceCaustics, EnergyUnderASineWaveAgainstSection4) {
+    // h = A sin(k x), A k = 0.3, wavelength 2 m, 2 m over the floor (before the focus at 4.2 m),
+    // the sun overhead (so photons keep their z), a camera 1.5 m above the floor looking straight
+    // down from in the water: its frame's footprint is a rectangle on the floor.
+    constexpr uint32_t kWidth = 64, kHeight = 48;
+    const char* json = R"({
+      "camera": {"position": [0.1, -0.5, 0.2], "direction": [0.0001, -1, 0], "fov_y_deg": 60},
+      "sun": {"elevation_deg": 90, "azimuth_deg": 0, "irradiance": [2, 3, 4]},
+      "sky": {"radiance": [0.4, 0.5, 0.6]},
+      "floor": {"height": -2, "half_extent": 4},
+      "water": {"level": 0, "half_extent": 4, "grid_resolution": 512,
+                "waves": {"model": "sum", "components": [{"amplitude": 0.0954929658551372, "wavelength": 2}]}},
+      "medium": {"sigma_a": [0.1, 0.05, 0.02], "sigma_s": [0, 0, 0]}
+    })";
+    const Scene scene = parse_scene(json, "sine.json", kCameraSpace);
+    Renderer renderer(context());
+    const RenderResult rendered = renderer.render(scene, with_layer(kWidth, kHeight));
+    const std::vector<float>& layer = caustic_of(rendered.image);
+
+    // The floor point a continuous pixel coordinate sees, and the frame's footprint.
+    auto on_floor = [&](double x, double y) {
+        const ref::Ray ray = ref::camera_ray(scene.camera, kWidth, kHeight, x, y);
+        return ray.origin + ((-2.0 - ray.origin.y) / ray.direction.y) * ray.direction;
+    };
+    double x_lo = 1e300, x_hi = -1e300, z_lo = 1e300, z_hi = -1e300;
+    for (const glm::dvec2 corner : {glm::dvec2(0, 0), glm::dvec2(kWidth, 0), glm::dvec2(0, kHeight),
+                                    glm::dvec2(kWidth, kHeight)}) {
+        const glm::dvec3 p = on_floor(corner.x, corner.y);
+        x_lo = std::min(x_lo, p.x), x_hi = std::max(x_hi, p.x), z_lo = std::min(z_lo, p.z), z_hi = std::max(z_hi, p.z);
+    }
+    // The camera-space integral: each pixel's irradiance times its footprint (the quadrilateral of
+    // its corner rays on the floor, exact for a plane).
+    glm::dvec3 integral(0.0);
+    double area = 0.0;
+    for (uint32_t y = 0; y < kHeight; ++y) {
+        for (uint32_t x = 0; x < kWidth; ++x) {
+            const glm::dvec3 a = on_floor(x, y), b = on_floor(x + 1, y), c = on_floor(x + 1, y + 1), d = on_floor(x, y + 1);
+            const double quad = 0.5 * std::abs((c.x - a.x) * (d.z - b.z) - (d.x - b.x) * (c.z - a.z));
+            for (int ch = 0; ch < 3; ++ch) integral[ch] += layer[3 * (size_t(y) * kWidth + x) + ch] * quad;
+            area += quad;
+        }
+    }
+    // Section 4 over the analytic surface, photons landing in the footprint.
+    const WaveSumSurface surface(scene.water->waves, 0.0, 0.0);
+    passes::CausticInputs in;
+    in.half_extent = 4.0;
+    in.sun_direction = scene.sun.direction;
+    in.sun_irradiance = scene.sun.irradiance;
+    in.ior = scene.water->ior;
+    in.floor_height = -2.0;
+    in.sigma_t = scene.medium.sigma_t();
+    const glm::dvec3 expected = section4_flux(surface, in, 400000, false, {x_lo, x_hi, z_hi - z_lo});
+    // The bound. Spreading the landing flux density E(x) with a kernel of variance sigma^2 moves
+    // a net (sigma^2 / 2) E'(x_e) per metre of edge across a straight edge at x_e (the constant
+    // term of E cancels by symmetry, the linear one gives this, the next is O(sigma^4) times E's
+    // third derivative), and nothing across the z-edges (E does not vary along z). sigma^2 here:
+    // the widest splat, 0.75 of the widest landing spacing (the cell 1.56 cm times the landing
+    // map's largest stretch, below 1.6 before the focus) or 0.7 of a view pixel (2.4 cm at 1.5 m),
+    // so (1.7 cm)^2; plus the bilinear reads, a tent one pixel of the coarsest level wide (8 view
+    // pixels, 19 cm): variance (19 cm)^2 / 6. E' at each x-edge from the same quadrature
+    // (densities 5 cm either side, in 5 cm bins); twice the sum allows the higher-order terms.
+    const double sigma2 = 0.017 * 0.017 + 0.19 * 0.19 / 6.0, z_width = z_hi - z_lo;
+    auto density = [&](double x) {
+        return section4_flux(surface, in, 400000, false, {x - 0.025, x + 0.025, z_width}) / (0.05 * z_width);
+    };
+    const glm::dvec3 slope_lo = (density(x_lo + 0.05) - density(x_lo - 0.05)) / 0.1;
+    const glm::dvec3 slope_hi = (density(x_hi + 0.05) - density(x_hi - 0.05)) / 0.1;
+    const glm::dvec3 band = 2.0 * (0.5 * sigma2) * (glm::abs(slope_lo) + glm::abs(slope_hi)) * z_width;
+    for (int ch = 0; ch < 3; ++ch) {
+        const double ratio = integral[ch] / expected[ch];
+        std::printf("sine, channel %d: %.6g W (camera-space) / %.6g W (section 4, photons landing in the %.2f m^2 "
+                    "footprint) = %.5f; bound %.4f\n",
+                    ch, integral[ch], expected[ch], area, ratio, band[ch] / expected[ch]);
+        EXPECT_NEAR(ratio, 1.0, band[ch] / expected[ch]);
+    }
 }
 
 TEST_F(CameraSpaceCaustics, BitIdenticalRunToRunAndFiniteWithMeshes) {
