@@ -443,7 +443,7 @@ FrameReport FrameExecutor::execute() {
             VkCommandBuffer cmd = begin_command_buffer(name);
             record_pass(cmd, position, checks);
             const double ms = submit_and_wait(cmd);
-            report.passes.push_back({name, ms});
+            report.passes.push_back({name, ms, graph_.created_bytes(compiled.order[position])});
             report.total_ms += ms;
             scan_finite_checks(checks);  // before the next pass, so the first offender is named
             checks.clear();
@@ -476,7 +476,8 @@ FrameReport FrameExecutor::execute() {
         for (uint32_t position = 0; position < count; ++position) {
             report.passes.push_back({graph_.passes()[compiled.order[position]].name,
                                      static_cast<double>(ticks[2 * position + 1] - ticks[2 * position]) * period_ns *
-                                         1e-6});
+                                         1e-6,
+                                     graph_.created_bytes(compiled.order[position])});
         }
     }
     return report;

@@ -31,6 +31,7 @@ struct ExecutorOptions {
 struct PassTime {
     std::string pass;
     double ms = 0.0;
+    uint64_t created_bytes = 0;  // the resources the pass brings into the frame (FrameGraph::created_bytes)
 };
 
 struct FrameReport {

@@ -214,6 +214,10 @@ public:
     uint32_t image_height(uint32_t resource) const;
     // Bytes of a resource's texels or buffer (images: width x height x texel size, one mip level).
     uint64_t resource_bytes(uint32_t resource) const;
+    // Whether `use` brings its resource into the frame (its first version, not imported), and the
+    // bytes of all that pass `pass` brings: a method's memory is the sum over its passes.
+    bool creates(const ResourceUse& use) const;
+    uint64_t created_bytes(uint32_t pass) const;
 
     // Printable forms, for `vkwater passes` and golden tests.
     std::string describe() const;

@@ -49,6 +49,18 @@ uint64_t FrameGraph::resource_bytes(uint32_t resource) const {
     return uint64_t{image_width(resource)} * image_height(resource) * format_texel_bytes(decl.image.format);
 }
 
+bool FrameGraph::creates(const ResourceUse& use) const {
+    return !resources_[use.resource].imported && use.version_read == 0 && use.version_written == 1;
+}
+
+uint64_t FrameGraph::created_bytes(uint32_t pass) const {
+    uint64_t bytes = 0;
+    for (const ResourceUse& use : passes_[pass].uses) {
+        if (creates(use)) bytes += resource_bytes(use.resource);
+    }
+    return bytes;
+}
+
 std::string FrameGraph::describe() const {
     const CompiledGraph& compiled = this->compiled();
     std::string text = "needs:\n";
@@ -61,25 +73,25 @@ std::string FrameGraph::describe() const {
     for (size_t position = 0; position < compiled.order.size(); ++position) {
         const PassDecl& pass = passes_[compiled.order[position]];
         text += "  " + std::to_string(position + 1) + ". " + pass.name + " [" + kind_name(pass.kind) + "]\n";
-        std::string reads, writes, creates;
+        std::string reads, writes, created;
         uint64_t created_bytes = 0;
-        int created = 0;
+        int created_count = 0;
         for (const ResourceUse& use : pass.uses) {
             std::string& list = use.version_written != use.version_read ? writes : reads;
             list += (list.empty() ? "" : ", ") + resources_[use.resource].name + " (" + use_name(use.use) + ")";
             // The resources this pass brings into the frame: what its method costs in memory.
             const ResourceDecl& resource = resources_[use.resource];
-            if (!resource.imported && use.version_read == 0 && use.version_written == 1) {
+            if (creates(use)) {
                 const uint64_t bytes = resource_bytes(use.resource);
                 created_bytes += bytes;
-                ++created;
-                creates += (creates.empty() ? "" : ", ") + resource.name + " " + byte_size(bytes);
+                ++created_count;
+                created += (created.empty() ? "" : ", ") + resource.name + " " + byte_size(bytes);
             }
         }
         if (!reads.empty()) text += "       reads:  " + reads + "\n";
         if (!writes.empty()) text += "       writes: " + writes + "\n";
-        if (created > 1) creates += " (" + byte_size(created_bytes) + " in all)";
-        if (!creates.empty()) text += "       creates: " + creates + "\n";
+        if (created_count > 1) created += " (" + byte_size(created_bytes) + " in all)";
+        if (!created.empty()) text += "       creates: " + created + "\n";
     }
     text += "culled passes:\n";
     if (compiled.culled.empty()) text += "  (none)\n";

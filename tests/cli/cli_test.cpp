@@ -70,6 +70,10 @@ TEST(cli, RenderDefaultSceneWithValidationSucceeds) {
     EXPECT_TRUE(fs::exists(out));
     EXPECT_TRUE(fs::exists(fs::path(out).replace_extension(".png")));
     EXPECT_NE(run.output.find("pass times"), std::string::npos) << run.output;
+    // Each pass's memory next to its time: the caustic map's flux buffer at least.
+    const size_t flux = run.output.find("caustic flux clear");
+    ASSERT_NE(flux, std::string::npos) << run.output;
+    EXPECT_NE(run.output.substr(flux, run.output.find('\n', flux) - flux).find("creates"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("wrote " + out.string()), std::string::npos) << run.output;
 }
 

@@ -70,7 +70,22 @@ int run_render(const RenderArgs& args) {
     }
 
     std::printf("pass times of frame %u of %u (%s):\n", args.repeat, args.repeat, result.timing.method_name().c_str());
-    for (const fg::PassTime& pass : result.timing.passes) std::printf("  %-24s %8.2f ms\n", pass.pass.c_str(), pass.ms);
+    // Each pass's time and the memory of what it creates (the targets and buffers of its method).
+    for (const fg::PassTime& pass : result.timing.passes) {
+        if (pass.created_bytes == 0) {
+            std::printf("  %-24s %8.2f ms\n", pass.pass.c_str(), pass.ms);
+        } else {
+            const double kib = static_cast<double>(pass.created_bytes) / 1024.0;
+            if (kib < 1.0) {
+                std::printf("  %-24s %8.2f ms  creates %llu B\n", pass.pass.c_str(), pass.ms,
+                            static_cast<unsigned long long>(pass.created_bytes));
+            } else if (kib < 1024.0) {
+                std::printf("  %-24s %8.2f ms  creates %.1f KiB\n", pass.pass.c_str(), pass.ms, kib);
+            } else {
+                std::printf("  %-24s %8.2f ms  creates %.2f MiB\n", pass.pass.c_str(), pass.ms, kib / 1024.0);
+            }
+        }
+    }
     std::printf("  %-24s %8.2f ms\n", "frame", result.timing.total_ms);
 
     context.reset();  // tear the device down now: teardown can report validation messages too
