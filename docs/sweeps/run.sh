@@ -2,8 +2,8 @@
 # Regenerates the committed sweeps docs/sweeps/{calm,pool,lake}.{csv,svg}: `vkwater bench` at the
 # references' size (400x300) against tests/references/<scene>.exr, over the water (= photon)
 # grid, the caustics (off: the flat-surface stand-in; on with the bilinear or the adaptive splat
-# kernel, or the baselines: the footprint kernel, seed 004's area ratio, and seed 003's procedural
-# caustic) and the godrays (off, or a 32 or 128 beam
+# kernel, or the baselines: the footprint kernel, seed 004's area ratio, seed 003's procedural
+# caustic, and seed 002's camera-space splats) and the godrays (off, or a 32 or 128 beam
 # grid; 128 is the default).
 # Usage: docs/sweeps/run.sh [BUILD_DIR] [FRAMES] [SCENE...]
 #   (defaults: build, 30 timed frames per setting, calm pool lake pool-map-scale)
@@ -20,7 +20,7 @@ scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 
 godrays='effects.godrays.mode=off|effects.godrays.grid=32|effects.godrays.grid=128'
-caustics='effects.caustics.mode=off|effects.caustics.kernel=bilinear|effects.caustics.kernel=adaptive|effects.caustics.kernel=footprint|effects.caustics.method=procedural'
+caustics='effects.caustics.mode=off|effects.caustics.kernel=bilinear|effects.caustics.kernel=adaptive|effects.caustics.kernel=footprint|effects.caustics.method=procedural|effects.caustics.splat=camera-space'
 
 sweep() {  # scene, then bench's sweep arguments
     local scene=$1
