@@ -173,6 +173,42 @@ bool ParameterPanel::draw_quality(Scene& scene) {
     return changed;
 }
 
+namespace {
+// A combo over the values 0 .. N-1 of an enum, named by `names`.
+template <class Enum, std::size_t N>
+bool enum_combo(const char* label, Enum& value, const char* const (&names)[N]) {
+    int index = static_cast<int>(value);
+    if (!ImGui::Combo(label, &index, names, static_cast<int>(N))) return false;
+    value = static_cast<Enum>(index);
+    return true;
+}
+}  // namespace
+
+// The methods the seeds compare (issue 8): the caustics' producer and splat, the surface's
+// Fresnel form and seed 001's depth colour, switched live to see what each changes.
+bool ParameterPanel::draw_methods(Scene& scene) {
+    if (!ImGui::CollapsingHeader("Methods")) return false;
+    static constexpr const char* kMethods[] = {"photons", "procedural (seed 003)"};
+    static constexpr const char* kKernels[] = {"bilinear", "adaptive", "footprint (seed 004)"};
+    static constexpr const char* kSplats[] = {"light-space map", "camera-space (seed 002)"};
+    static constexpr const char* kFresnels[] = {"exact", "Schlick", "power term (seed 001)"};
+    CausticSettings& caustics = scene.effects.caustics;
+    bool changed = enum_combo("caustics", caustics.method, kMethods);
+    changed |= enum_combo("splat kernel", caustics.kernel, kKernels);
+    changed |= enum_combo("splatted in", caustics.splat, kSplats);
+    // Camera-space splats gather photons: the procedural method has none (the scene schema refuses it).
+    if (caustics.splat == CausticSplat::CameraSpace && caustics.method != CausticMethod::Photons) {
+        caustics.method = CausticMethod::Photons;
+    }
+    changed |= enum_combo("Fresnel", scene.effects.water.fresnel, kFresnels);
+    bool blend = scene.effects.water.depth_blend.has_value();
+    if (ImGui::Checkbox("depth colour (seed 001)", &blend)) {
+        scene.effects.water.depth_blend = blend ? std::optional<DepthBlend>(DepthBlend{}) : std::nullopt;
+        changed = true;
+    }
+    return changed;
+}
+
 bool ParameterPanel::draw(Scene& scene, const fg::FrameNeeds* needs, ViewControls& controls) {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
@@ -183,6 +219,7 @@ bool ParameterPanel::draw(Scene& scene, const fg::FrameNeeds* needs, ViewControl
     changed |= draw_medium(scene);
     changed |= draw_effects(scene, needs);
     changed |= draw_quality(scene);
+    changed |= draw_methods(scene);
     if (ImGui::CollapsingHeader("Camera and time", ImGuiTreeNodeFlags_DefaultOpen)) {
         int mode = static_cast<int>(controls.camera_mode);
         ImGui::RadioButton("orbit", &mode, static_cast<int>(CameraMode::Orbit));

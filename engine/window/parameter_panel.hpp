@@ -41,6 +41,7 @@ private:
     bool draw_medium(Scene& scene);
     bool draw_effects(Scene& scene, const fg::FrameNeeds* needs);
     bool draw_quality(Scene& scene);
+    bool draw_methods(Scene& scene);
     void apply_wave_edits(Water& water) const;
     WaveSettings base_waves_;
     double amplitude_scale_ = 1.0;

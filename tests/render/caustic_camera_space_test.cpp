@@ -13,6 +13,7 @@
 // to a receiver's edge or a silhouette the splats are cut and renormalised, a kernel estimate's
 // boundary bias, documented in the README and not asserted here).
 #include "engine/core/errors.hpp"
+#include "engine/render/frame_needs.hpp"
 #include "engine/render/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tests/support/gpu_test.hpp"
@@ -295,6 +296,23 @@ TEST_F(CameraSpaceCaustics, BitIdenticalRunToRunAndFiniteWithMeshes) {
     double sum = 0.0;
     for (const float v : caustic_of(first.image)) sum += v;
     EXPECT_GT(sum, 1.0);
+}
+
+TEST_F(CameraSpaceCaustics, BlurRuleCullsItAndTheImageEqualsTheForcedOne) {
+    // The blur filters the light-space map only: with camera-space splats the rule leaves it out,
+    // saying why, and forcing it on changes nothing (no map to blur, no pass added).
+    const Scene culled = builtin("pool.json", {"water.grid_resolution=128", "effects.caustic_blur.radius=1"});
+    const fg::FrameNeeds needs = decide_frame_needs(culled, 4.0 / 3.0);
+    const fg::EffectDecision* blur = needs.find(fg::Effect::CausticBlur);
+    ASSERT_NE(blur, nullptr);
+    EXPECT_FALSE(blur->needed);
+    EXPECT_NE(blur->reason.find("camera space"), std::string::npos) << blur->reason;
+    const Scene forced = builtin("pool.json", {"water.grid_resolution=128", "effects.caustic_blur.radius=1",
+                                               "effects.caustic_blur.mode=on"});
+    Renderer renderer(context());
+    const RenderResult a = renderer.render(culled, with_layer(64, 48));
+    const RenderResult b = renderer.render(forced, with_layer(64, 48));
+    EXPECT_EQ(a.image.rgba, b.image.rgba);
 }
 
 TEST(CameraSpaceCausticsSchema, SplatNeedsThePhotonMethod) {

@@ -118,6 +118,26 @@ TEST_F(ViewWindow, ScriptedRunResizesCrossesTheSurfaceAndTogglesCausticsWithoutV
     EXPECT_TRUE(fs::exists(fs::path(last).replace_extension(".png")));
 }
 
+TEST_F(ViewWindow, SwitchingToTheSeedsMethodsLiveStaysValidationClean) {
+    // The methods the panel's "Methods" section switches: camera-space splats (their view and
+    // flux follow the window's size, so a resize rebuilds them), the procedural caustic, seed 001's
+    // surface shading, and back.
+    const fs::path script = write_text("methods.txt", "5: set effects.caustics.splat=camera-space\n"
+                                                      "15: resize 200 150\n"
+                                                      "25: set effects.water.fresnel=power\n"
+                                                      "30: set effects.water.depth_blend={}\n"
+                                                      "35: set effects.caustics.splat=light-space\n"
+                                                      "36: set effects.caustics.method=procedural\n");
+    const Outcome run = vkwater("view " + kScenes + "pool.json --set water.grid_resolution=64 --width 160 --height 120 "
+                                "--frames 45 --script " + script.string() + " --validation --pass-timing-every 5");
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    EXPECT_EQ(run.output.find("validation error"), std::string::npos) << run.output;
+    EXPECT_EQ(run.output.find("validation warning"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("frames: 45;"), std::string::npos) << run.output;
+    EXPECT_NE(summary_line(run.output, "camera caustic splats").find("(ran in"), std::string::npos) << run.output;
+    EXPECT_NE(summary_line(run.output, "caustic procedural"), "") << run.output;
+}
+
 TEST_F(ViewWindow, ScreenshotOfAStillFrameEqualsTheOffscreenRender) {
     const fs::path shot = scratch("still.exr"), rendered = scratch("rendered.exr");
     fs::remove(shot);
