@@ -352,13 +352,16 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
         // The camera-space splats' flux buffer is one storage binding.
         const passes::CameraCausticExtent extent = passes::camera_caustic_extent(options.width, options.height);
         const VkDeviceSize range = context_.properties().limits.maxStorageBufferRange;
+        const double bytes_per_pixel =
+            double(passes::camera_caustic_flux_bytes(extent)) / (double(options.width) * options.height);
         if (passes::camera_caustic_flux_bytes(extent) > range) {
             throw UserError(scene.source.string() + ": effects.caustics.splat: camera-space splats at " +
                             std::to_string(options.width) + "x" + std::to_string(options.height) + " need " +
                             std::to_string(passes::camera_caustic_flux_bytes(extent) >> 20) +
                             " MiB of flux in one storage binding (accepted on '" + context_.device_name() +
-                            "': up to " + std::to_string(range >> 20) +
-                            " MiB, about 2.3 million output pixels at 128 MiB; or splat light-space)");
+                            "': up to " + std::to_string(range >> 20) + " MiB, about " +
+                            std::to_string(static_cast<uint64_t>(double(range) / bytes_per_pixel / 1e3)) +
+                            " thousand output pixels; or splat light-space)");
         }
     }
     fg::FrameNeeds needs = decide_frame_needs(scene, double(options.width) / double(options.height));

@@ -77,6 +77,15 @@ TEST(cli, RenderDefaultSceneWithValidationSucceeds) {
     EXPECT_NE(run.output.find("wrote " + out.string()), std::string::npos) << run.output;
 }
 
+TEST(cli, CameraSpaceSplatsBeyondOneStorageBindingAreAUserError) {
+    // 4000x3000 needs 820 MiB of flux for the camera-space splats; lavapipe binds 128 MiB.
+    const CommandRun run = run_vkwater("render " + kPool + " --out " + scratch("big.exr").string() +
+                                       " --width 4000 --height 3000 --set effects.caustics.splat=camera-space");
+    EXPECT_EQ(run.exit_code, 1) << run.output;
+    EXPECT_NE(run.output.find("pool.json: effects.caustics.splat"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("or splat light-space"), std::string::npos) << run.output;
+}
+
 TEST(cli, RenderPassRecordingWithValidationSucceeds) {
     const CommandRun run = run_vkwater("render " + kPool + " --out " + scratch("rp.exr").string() +
                                 " --width 64 --height 48 --validation --recording renderpass");
