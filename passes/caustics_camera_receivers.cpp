@@ -63,10 +63,7 @@ fg::ImageHandle add_caustic_receivers_pass(fg::FrameGraph& graph, const Receiver
             vkCmdDraw(context.cmd(), 6, 1, 0, 0);
             if (!d.vertices) return;
             GraphicsPipelineDesc mesh_desc = desc;
-            const GraphicsPipelineDesc lit = receiver_mesh_pipeline(LightingInputs{});
-            mesh_desc.vertex_shader = lit.vertex_shader;
-            mesh_desc.vertex_bindings = lit.vertex_bindings;
-            mesh_desc.vertex_attributes = lit.vertex_attributes;
+            use_receiver_mesh_vertices(mesh_desc);
             const Pipeline& mesh = context.pipeline("caustic receivers meshes", mesh_desc);
             context.bind(mesh, {context.uniform_buffer(0, d.constants)});
             draw_receiver_meshes(context, mesh, *meshes, *d.vertices, *d.indices, view);

@@ -2,15 +2,19 @@
 
 namespace vkw::passes {
 
-GraphicsPipelineDesc receiver_mesh_pipeline(const LightingInputs& lighting, const std::string& variant_suffix) {
-    GraphicsPipelineDesc desc;
+void use_receiver_mesh_vertices(GraphicsPipelineDesc& desc) {
     desc.vertex_shader = "receivers/mesh.vert";
-    desc.fragment_shader = lighting.shader("receivers/receiver.frag") + variant_suffix;
-    lighting.add_layout(desc.layout.bindings);
-    desc.layout.push_constant_bytes = sizeof(ReceiverPush);
     desc.vertex_bindings = {{0, 6 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX}};
     desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
                               {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 3 * sizeof(float)}};
+}
+
+GraphicsPipelineDesc receiver_mesh_pipeline(const LightingInputs& lighting, const std::string& variant_suffix) {
+    GraphicsPipelineDesc desc;
+    use_receiver_mesh_vertices(desc);
+    desc.fragment_shader = lighting.shader("receivers/receiver.frag") + variant_suffix;
+    lighting.add_layout(desc.layout.bindings);
+    desc.layout.push_constant_bytes = sizeof(ReceiverPush);
     desc.depth_test = true;
     desc.depth_write = true;
     return desc;

@@ -18,6 +18,9 @@ struct ReceiverPush {
     glm::vec4 view{0.0f};
 };
 
+// receivers/mesh.vert and its vertex layout (position, normal: 6 floats), for any fragment shader.
+void use_receiver_mesh_vertices(GraphicsPipelineDesc& desc);
+
 // receivers/mesh.vert + receivers/receiver.frag in the lighting inputs' variant (plus
 // `variant_suffix`, e.g. the caustic layer's "_layer"), depth tested and written.
 GraphicsPipelineDesc receiver_mesh_pipeline(const LightingInputs& lighting, const std::string& variant_suffix = "");

@@ -220,7 +220,7 @@ void main() {
     int level = 0;
     while (level < last && splat_taps(box, level) > kMaxSplatTaps) ++level;
     if (splat_taps(box, level) > kMaxSplatTaps) {
-        // The coarsest level: shrink the gaussian until it fits (a few halvings at most).
+        // The coarsest level: shrink the gaussian by steps of 0.8 until it fits.
         float shrink = 1.0;
         while (splat_taps(box * shrink, level) > kMaxSplatTaps && shrink > 1e-3) shrink *= 0.8;
         covariance *= shrink * shrink;
