@@ -66,8 +66,7 @@ CameraCaustics add_caustic_camera_splat_passes(fg::FrameGraph& graph, const Caus
     struct SplatData {
         fg::BufferHandle constants, surface, flux;
         fg::ImageHandle receivers;
-        std::optional<fg::ImageHandle> shadow_map;
-        std::optional<fg::BufferHandle> shadow_space;
+        SunShadowReads shadow;
     };
     const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
     const auto& splats = graph.add_pass<SplatData>(
@@ -77,24 +76,18 @@ CameraCaustics add_caustic_camera_splat_passes(fg::FrameGraph& graph, const Caus
             d.surface = builder.read_storage(inputs.surface, stage);
             d.flux = builder.read_write_storage(cleared, stage);
             d.receivers = builder.sample(receivers, stage);
-            if (shadow) {
-                d.shadow_map = builder.sample(shadow->depth, stage);
-                d.shadow_space = builder.uniform_buffer(shadow->space, stage);
-            }
+            d.shadow.declare(builder, shadow, stage);
         },
         [push](const SplatData& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
-            desc.shader = std::string("caustics/caustic_camera_splats.comp.") + (d.shadow_map ? "shadow" : "plain");
+            desc.shader = std::string("caustics/caustic_camera_splats.comp.") + (d.shadow ? "shadow" : "plain");
             const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
             desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, compute},
                                     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
                                     {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
                                     {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
                                     {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute}};
-            if (d.shadow_map) {
-                desc.layout.bindings.push_back({6, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute});
-                desc.layout.bindings.push_back({7, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, compute});
-            }
+            d.shadow.add_layout(desc.layout.bindings, compute);
             desc.layout.push_constant_bytes = sizeof(CameraSplatPush);
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
             fg::DescriptorBinding lost = context.storage_buffer(3, d.flux);
@@ -109,10 +102,7 @@ CameraCaustics add_caustic_camera_splat_passes(fg::FrameGraph& graph, const Caus
                 surface.buffer.range = chunk.bytes;
                 std::vector<fg::DescriptorBinding> bindings{context.uniform_buffer(0, d.constants), surface, flux, lost,
                                                             context.sampled_nearest(5, d.receivers)};
-                if (d.shadow_map) {
-                    bindings.push_back(context.sampled_nearest(6, *d.shadow_map));
-                    bindings.push_back(context.uniform_buffer(7, *d.shadow_space));
-                }
+                d.shadow.add_bindings(context, bindings);
                 CameraSplatPush p = push;
                 p.first_row = chunk.first;
                 p.rows = chunk.rows;

@@ -63,8 +63,7 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
 
     struct Data {
         fg::BufferHandle surface, flux;
-        std::optional<fg::ImageHandle> shadow_map;
-        std::optional<fg::BufferHandle> shadow_space;
+        SunShadowReads shadow;
     };
     const auto& data = graph.add_pass<Data>(
         "caustic photons", fg::PassKind::Compute,
@@ -72,10 +71,7 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
             const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
             d.surface = builder.read_storage(inputs.surface, stage);
             d.flux = builder.read_write_storage(cleared, stage);
-            if (shadow) {
-                d.shadow_map = builder.sample(shadow->depth, stage);
-                d.shadow_space = builder.uniform_buffer(shadow->space, stage);
-            }
+            d.shadow.declare(builder, shadow, stage);
         },
         [push, kernel_variant = inputs.kernel](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
@@ -83,14 +79,11 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
             const char* kernel = kernel_variant == CausticKernel::Bilinear   ? "bilinear"
                                  : kernel_variant == CausticKernel::Adaptive ? "adaptive"
                                                                              : "footprint";
-            desc.shader = std::string("caustics/caustic_photons.comp.") + kernel + (d.shadow_map ? "_shadow" : "");
+            desc.shader = std::string("caustics/caustic_photons.comp.") + kernel + (d.shadow ? "_shadow" : "");
             desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
                                     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
                                     {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
-            if (d.shadow_map) {
-                desc.layout.bindings.push_back({6, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT});
-                desc.layout.bindings.push_back({7, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT});
-            }
+            d.shadow.add_layout(desc.layout.bindings, VK_SHADER_STAGE_COMPUTE_BIT);
             desc.layout.push_constant_bytes = sizeof(CausticPhotonPush);
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
             const VkPhysicalDeviceLimits& limits = context.context().properties().limits;
@@ -117,10 +110,7 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
                     p.band_first = band.first;
                     p.band_rows = band.rows;
                     std::vector<fg::DescriptorBinding> bindings{surface, flux, lost};
-                    if (d.shadow_map) {
-                        bindings.push_back(context.sampled_nearest(6, *d.shadow_map));
-                        bindings.push_back(context.uniform_buffer(7, *d.shadow_space));
-                    }
+                    d.shadow.add_bindings(context, bindings);
                     context.bind(pipeline, bindings);
                     context.push_constants(pipeline, p);
                     vkCmdDispatch(context.cmd(), caustic_photon_groups(uint64_t{r} * s), caustic_photon_groups(uint64_t{chunk.rows} * s), 1);

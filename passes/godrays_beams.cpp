@@ -78,8 +78,7 @@ fg::BufferHandle add_godray_beams_pass(fg::FrameGraph& graph, const GodrayBeamIn
 
     struct Data {
         fg::BufferHandle constants, surface, beams;
-        std::optional<fg::ImageHandle> shadow_map;
-        std::optional<fg::BufferHandle> shadow_space;
+        SunShadowReads shadow;
     };
     const auto& data = graph.add_pass<Data>(
         "godray beams", fg::PassKind::Compute,
@@ -89,23 +88,16 @@ fg::BufferHandle add_godray_beams_pass(fg::FrameGraph& graph, const GodrayBeamIn
             d.constants = builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants), stage);
             d.surface = builder.read_storage(inputs.surface, stage);
             d.beams = builder.write_storage(builder.create_buffer("godray beams", {bytes}), stage);
-            if (graph.blackboard().has(keys::kSunShadow)) {
-                const SunShadowMap& shadow = graph.blackboard().get(keys::kSunShadow);
-                d.shadow_map = builder.sample(shadow.depth, stage);
-                d.shadow_space = builder.uniform_buffer(shadow.space, stage);
-            }
+            if (graph.blackboard().has(keys::kSunShadow)) d.shadow.declare(builder, &graph.blackboard().get(keys::kSunShadow), stage);
         },
         [push](const Data& d, fg::PassContext& context) {
-            const bool shadow = d.shadow_map.has_value();
+            const bool shadow = static_cast<bool>(d.shadow);
             ComputePipelineDesc desc;
             desc.shader = shadow ? "godrays/godray_beams.comp.shadow" : "godrays/godray_beams.comp.plain";
             desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
                                     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
                                     {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
-            if (shadow) {
-                desc.layout.bindings.push_back({6, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT});
-                desc.layout.bindings.push_back({7, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT});
-            }
+            d.shadow.add_layout(desc.layout.bindings, VK_SHADER_STAGE_COMPUTE_BIT);
             desc.layout.push_constant_bytes = sizeof(GodrayBeamsPush);
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
             const VkPhysicalDeviceLimits& limits = context.context().properties().limits;
@@ -116,10 +108,7 @@ fg::BufferHandle add_godray_beams_pass(fg::FrameGraph& graph, const GodrayBeamIn
                 surface.buffer.range = chunk.bytes;
                 std::vector<fg::DescriptorBinding> bindings{context.uniform_buffer(0, d.constants), surface,
                                                             context.storage_buffer(2, d.beams)};
-                if (shadow) {
-                    bindings.push_back(context.sampled_nearest(6, *d.shadow_map));
-                    bindings.push_back(context.uniform_buffer(7, *d.shadow_space));
-                }
+                d.shadow.add_bindings(context, bindings);
                 GodrayBeamsPush p = push;
                 p.first_row = chunk.first_row;
                 p.rows = chunk.rows;

@@ -30,8 +30,9 @@ fg::ImageHandle add_godray_march_pass(fg::FrameGraph& graph, const GodrayMarchIn
     struct Data {
         fg::BufferHandle constants, optics;
         fg::ImageHandle view_depth, target;
-        std::optional<fg::BufferHandle> caustic_frame, shadow_space;
-        std::optional<fg::ImageHandle> caustic_map, shadow_map;
+        std::optional<fg::BufferHandle> caustic_frame;
+        std::optional<fg::ImageHandle> caustic_map;
+        SunShadowReads shadow;
     };
     const auto& data = graph.add_pass<Data>(
         "godray march", fg::PassKind::Compute,
@@ -46,20 +47,18 @@ fg::ImageHandle add_godray_march_pass(fg::FrameGraph& graph, const GodrayMarchIn
                 d.caustic_frame = builder.uniform_buffer(blackboard.get(keys::kCausticMap).frame, stage);
                 d.caustic_map = builder.sample(blackboard.get(keys::kCausticMap).irradiance, stage);
             }
-            if (blackboard.has(keys::kSunShadow)) {
-                d.shadow_map = builder.sample(blackboard.get(keys::kSunShadow).depth, stage);
-                d.shadow_space = builder.uniform_buffer(blackboard.get(keys::kSunShadow).space, stage);
-            }
+            if (blackboard.has(keys::kSunShadow)) d.shadow.declare(builder, &blackboard.get(keys::kSunShadow), stage);
             fg::ImageInfo info;
             info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
             info.scale = inputs.scale;
             d.target = builder.write_storage(builder.create_image("godray radiance image", info), stage);
         },
         [push](const Data& d, fg::PassContext& context) {
-            const std::string variant = d.caustic_map && d.shadow_map ? "caustics_shadow"
-                                        : d.caustic_map               ? "caustics"
-                                        : d.shadow_map                ? "shadow"
-                                                                      : "plain";
+            const bool shadow = static_cast<bool>(d.shadow);
+            const std::string variant = d.caustic_map && shadow ? "caustics_shadow"
+                                        : d.caustic_map         ? "caustics"
+                                        : shadow                ? "shadow"
+                                                                : "plain";
             ComputePipelineDesc desc;
             desc.shader = "godrays/godray_march.comp." + variant;
             constexpr VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -76,12 +75,8 @@ fg::ImageHandle add_godray_march_pass(fg::FrameGraph& graph, const GodrayMarchIn
                 bindings.push_back(context.uniform_buffer(4, *d.caustic_frame));
                 bindings.push_back(context.sampled_nearest(5, *d.caustic_map));
             }
-            if (d.shadow_map) {
-                desc.layout.bindings.push_back({6, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute});
-                desc.layout.bindings.push_back({7, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, compute});
-                bindings.push_back(context.sampled_nearest(6, *d.shadow_map));
-                bindings.push_back(context.uniform_buffer(7, *d.shadow_space));
-            }
+            d.shadow.add_layout(desc.layout.bindings, compute);
+            d.shadow.add_bindings(context, bindings);
             desc.layout.push_constant_bytes = sizeof(GodrayMarchPush);
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
             context.bind(pipeline, bindings);

@@ -22,16 +22,14 @@ void LightingInputs::declare(fg::PassBuilder& builder, const fg::Blackboard& bla
         camera_caustics = builder.sample(caustics.irradiance, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
     }
     if (blackboard.has(keys::kSunShadow)) {
-        const SunShadowMap& shadow = blackboard.get(keys::kSunShadow);
-        sun_shadow_map = builder.sample(shadow.depth, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-        sun_shadow_space = builder.uniform_buffer(shadow.space, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+        sun_shadow.declare(builder, &blackboard.get(keys::kSunShadow), VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
     }
 }
 
 std::string LightingInputs::shader(const std::string& base) const {
     return base + (camera_medium ? ".per_pixel" : ".frame") + (caustic_map ? "_caustics" : "") +
            (camera_caustics ? "_camera_caustics" : "") +
-           (sun_shadow_map ? "_shadow" : "");
+           (sun_shadow ? "_shadow" : "");
 }
 
 void LightingInputs::add_layout(std::vector<VkDescriptorSetLayoutBinding>& bindings) const {
@@ -46,10 +44,7 @@ void LightingInputs::add_layout(std::vector<VkDescriptorSetLayoutBinding>& bindi
         bindings.push_back({4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
         bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
     }
-    if (sun_shadow_map) {
-        bindings.push_back({6, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
-        bindings.push_back({7, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
-    }
+    sun_shadow.add_layout(bindings, VK_SHADER_STAGE_FRAGMENT_BIT);
 }
 
 void LightingInputs::add_bindings(const fg::PassContext& context, std::vector<fg::DescriptorBinding>& bindings) const {
@@ -64,10 +59,7 @@ void LightingInputs::add_bindings(const fg::PassContext& context, std::vector<fg
         bindings.push_back(context.sampled_nearest(4, *camera_caustic_receivers));
         bindings.push_back(context.sampled_nearest(5, *camera_caustics));
     }
-    if (sun_shadow_map) {
-        bindings.push_back(context.sampled_nearest(6, *sun_shadow_map));
-        bindings.push_back(context.uniform_buffer(7, *sun_shadow_space));
-    }
+    sun_shadow.add_bindings(context, bindings);
 }
 
 }  // namespace vkw::passes

@@ -7,6 +7,7 @@
 #include "engine/framegraph/blackboard.hpp"
 #include "engine/framegraph/frame_graph.hpp"
 #include "engine/framegraph/pass_context.hpp"
+#include "passes/sun_shadow.hpp"
 
 #include <optional>
 #include <string>
@@ -23,8 +24,7 @@ struct LightingInputs {
     // Or the camera-space splats: binding 4 their receivers' view, binding 5 their irradiance.
     std::optional<fg::ImageHandle> camera_caustic_receivers;
     std::optional<fg::ImageHandle> camera_caustics;
-    std::optional<fg::ImageHandle> sun_shadow_map;   // binding 6: the sun's depth of the objects
-    std::optional<fg::BufferHandle> sun_shadow_space;  // binding 7: its light space
+    SunShadowReads sun_shadow;  // bindings 6 and 7: the sun's depth of the objects and its light space
 
     // Declares, as sampled/uniform reads of this pass, whichever the blackboard holds (the
     // caustic map or the camera-space splats light every receiver under the water, the floor and

@@ -146,4 +146,22 @@ SunShadowMap add_sun_shadow_pass(fg::FrameGraph& graph, const ReceiverMeshes& me
     return {data.depth, upload.space};
 }
 
+void SunShadowReads::declare(fg::PassBuilder& builder, const SunShadowMap* map, VkPipelineStageFlags2 stages) {
+    if (!map) return;
+    depth = builder.sample(map->depth, stages);
+    space = builder.uniform_buffer(map->space, stages);
+}
+
+void SunShadowReads::add_layout(std::vector<VkDescriptorSetLayoutBinding>& bindings, VkShaderStageFlags stages) const {
+    if (!depth) return;
+    bindings.push_back({6, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages});
+    bindings.push_back({7, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stages});
+}
+
+void SunShadowReads::add_bindings(const fg::PassContext& context, std::vector<fg::DescriptorBinding>& bindings) const {
+    if (!depth) return;
+    bindings.push_back(context.sampled_nearest(6, *depth));
+    bindings.push_back(context.uniform_buffer(7, *space));
+}
+
 }  // namespace vkw::passes

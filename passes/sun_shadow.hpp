@@ -17,12 +17,14 @@
 #pragma once
 
 #include "engine/framegraph/frame_graph.hpp"
+#include "engine/framegraph/pass_context.hpp"
 #include "passes/receiver_meshes.hpp"
 
 #include <glm/glm.hpp>
 
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 namespace vkw::passes {
 
@@ -65,5 +67,18 @@ struct SunShadowMap {
 };
 
 SunShadowMap add_sun_shadow_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes, const SunShadowInputs& inputs);
+
+// A pass's reads of the sun shadow map, at the bindings every shader that includes
+// shaders/receivers/sun_shadow.glsl expects: 6 (the depth, sampled nearest) and 7 (its space).
+// Empty (and adding nothing) when the frame has no shadow map.
+struct SunShadowReads {
+    std::optional<fg::ImageHandle> depth;
+    std::optional<fg::BufferHandle> space;
+
+    void declare(fg::PassBuilder& builder, const SunShadowMap* map, VkPipelineStageFlags2 stages);
+    explicit operator bool() const { return depth.has_value(); }
+    void add_layout(std::vector<VkDescriptorSetLayoutBinding>& bindings, VkShaderStageFlags stages) const;
+    void add_bindings(const fg::PassContext& context, std::vector<fg::DescriptorBinding>& bindings) const;
+};
 
 }  // namespace vkw::passes
