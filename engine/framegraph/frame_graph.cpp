@@ -175,7 +175,7 @@ BufferHandle PassBuilder::copy_source(BufferHandle h) { return use(h, Use::Trans
 BufferHandle PassBuilder::copy_destination(BufferHandle h) { return use(h, Use::TransferDst, 0); }
 
 void PassBuilder::side_effect() { graph_.passes_[pass_].side_effect = true; }
-void PassBuilder::serves(Effect effect) { graph_.passes_[pass_].serves = effect; }
+void PassBuilder::serves(EffectTag effect) { graph_.passes_[pass_].serves = effect; }
 void PassBuilder::record_with(RecordingKind kind) { graph_.passes_[pass_].recording = kind; }
 
 // ---------------------------------------------------------------- compile
@@ -251,7 +251,7 @@ const CompiledGraph& FrameGraph::compile(uint32_t output_width, uint32_t output_
                 const EffectDecision* decision = needs_.find(*passes_[writer].serves);
                 throw InternalError("pass '" + passes_[p].name + "' reads '" + resources_[use.resource].name +
                                     "' from pass '" + passes_[writer].name + "', which serves effect '" +
-                                    effect_name(decision->effect) + "' that this frame does not need (" +
+                                    decision->effect.name + "' that this frame does not need (" +
                                     decision->reason + ")");
             }
         }
@@ -263,7 +263,7 @@ const CompiledGraph& FrameGraph::compile(uint32_t output_width, uint32_t output_
         std::string reason;
         if (pass.serves && !needs_.needs(*pass.serves)) {
             const EffectDecision* decision = needs_.find(*pass.serves);
-            reason = std::string("effect '") + effect_name(decision->effect) + "' not needed" +
+            reason = std::string("effect '") + decision->effect.name + "' not needed" +
                      (decision->forced ? " (forced off)" : "") + ": " + decision->reason;
         } else {
             std::string outputs;

@@ -100,7 +100,7 @@ struct PassDecl {
     PassKind kind;
     std::vector<ResourceUse> uses;
     bool side_effect = false;
-    std::optional<Effect> serves;
+    std::optional<EffectTag> serves;
     std::optional<RecordingKind> recording;  // overrides the graph's default
     std::function<void(PassContext&)> execute;
 };
@@ -138,7 +138,7 @@ public:
     // The pass must run even if nothing reads its outputs (e.g. it writes a file).
     void side_effect();
     // The pass exists for this effect; it is culled when the frame does not need it.
-    void serves(Effect effect);
+    void serves(EffectTag effect);
     void record_with(RecordingKind kind);
 
 private:

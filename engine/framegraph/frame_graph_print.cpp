@@ -66,7 +66,7 @@ std::string FrameGraph::describe() const {
     std::string text = "needs:\n";
     if (needs_.decisions.empty()) text += "  (no decisions: every effect is needed)\n";
     for (const EffectDecision& decision : needs_.decisions) {
-        text += std::string("  ") + effect_name(decision.effect) + ": " + (decision.needed ? "on" : "off") +
+        text += std::string("  ") + decision.effect.name + ": " + (decision.needed ? "on" : "off") +
                 (decision.forced ? " (forced)" : "") + " - " + decision.reason + "\n";
     }
     text += "passes, in execution order:\n";

@@ -2,12 +2,12 @@
 
 namespace vkw::fg {
 
-bool FrameNeeds::needs(Effect effect) const {
+bool FrameNeeds::needs(EffectTag effect) const {
     const EffectDecision* decision = find(effect);
     return decision == nullptr || decision->needed;
 }
 
-const EffectDecision* FrameNeeds::find(Effect effect) const {
+const EffectDecision* FrameNeeds::find(EffectTag effect) const {
     for (const EffectDecision& decision : decisions) {
         if (decision.effect == effect) return &decision;
     }
@@ -17,12 +17,12 @@ const EffectDecision* FrameNeeds::find(Effect effect) const {
 std::string FrameNeeds::key() const {
     std::string key;
     for (const EffectDecision& decision : decisions) {
-        key += std::string(effect_name(decision.effect)) + (decision.needed ? "+" : "-");
+        key += std::string(decision.effect.name) + (decision.needed ? "+" : "-");
     }
     return key;
 }
 
-void FrameNeeds::decide(Effect effect, bool needed, std::string reason, bool forced) {
+void FrameNeeds::decide(EffectTag effect, bool needed, std::string reason, bool forced) {
     for (EffectDecision& decision : decisions) {
         if (decision.effect == effect) {
             decision = {effect, needed, forced, std::move(reason)};

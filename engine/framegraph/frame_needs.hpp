@@ -1,51 +1,43 @@
 // What a frame needs: one decision per effect, each with a human-readable reason and
-// whether the user forced it (effects.<name>.mode = on | off). The scene's needs
-// function fills it; the frame graph culls every pass that serves an effect the
-// frame does not need, and records that decision as the reason.
+// whether the user forced it. The layer that composes the frame fills it; the frame graph
+// culls every pass that serves an effect the frame does not need, and records that decision
+// as the reason. The graph knows no effect by name: an effect is an opaque tag.
 #pragma once
 
-#include <array>
+#include <concepts>
 #include <cstdint>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <vector>
 
 namespace vkw::fg {
 
-enum class Effect : uint8_t {
-    Water,            // the water surface and its shading
-    UnderwaterView,   // stencil split and the from-below path
-    Reflection,       // the scene reflected in the water
-    Refraction,       // the scene seen through the water
-    SurfaceCaustics,  // photon grid and splats on receivers
-    VolumeCaustics,   // godray lines
-    CausticBlur,      // blur of the caustic target
+// An effect as the graph sees it: an id to compare and a name to print. Any enum whose
+// namespace provides `const char* effect_name(E)` converts to a tag, so the composing layer
+// keeps its own enum and the graph stays free of it.
+struct EffectTag {
+    uint32_t id = 0;
+    const char* name = "";
+
+    constexpr EffectTag() = default;
+    constexpr EffectTag(uint32_t tag_id, const char* tag_name) : id(tag_id), name(tag_name) {}
+    template <typename E>
+        requires std::is_enum_v<E> && requires(E e) {
+            { effect_name(e) } -> std::convertible_to<const char*>;
+        }
+    constexpr EffectTag(E effect) : id(static_cast<uint32_t>(effect)), name(effect_name(effect)) {}
+
+    // The name takes part so that two enums' values with the same number stay apart.
+    friend bool operator==(const EffectTag& a, const EffectTag& b) {
+        return a.id == b.id && std::string_view(a.name) == b.name;
+    }
 };
 
-// Every effect, in declaration order, and its name in scene files (effects.<name>) and
-// reports. constexpr in this header so that the scene loader can use them without
-// linking the frame graph.
-inline constexpr std::array<Effect, 7> kAllEffects = {Effect::Water,           Effect::UnderwaterView,
-                                                      Effect::Reflection,      Effect::Refraction,
-                                                      Effect::SurfaceCaustics, Effect::VolumeCaustics,
-                                                      Effect::CausticBlur};
-
-constexpr const char* effect_name(Effect effect) {
-    switch (effect) {
-        case Effect::Water: return "water";
-        case Effect::UnderwaterView: return "underwater_view";
-        case Effect::Reflection: return "reflection";
-        case Effect::Refraction: return "refraction";
-        case Effect::SurfaceCaustics: return "caustics";
-        case Effect::VolumeCaustics: return "godrays";
-        case Effect::CausticBlur: return "caustic_blur";
-    }
-    return "?";
-}
-
 struct EffectDecision {
-    Effect effect;
+    EffectTag effect;
     bool needed = true;
-    bool forced = false;  // set by effects.<name>.mode = on | off rather than by a rule
+    bool forced = false;  // set by the user (a scene's effects.<name>.mode = on | off) rather than by a rule
     std::string reason;
 };
 
@@ -53,9 +45,9 @@ struct FrameNeeds {
     std::vector<EffectDecision> decisions;
 
     // An effect with no decision is needed: passes are culled only for a stated reason.
-    bool needs(Effect effect) const;
-    const EffectDecision* find(Effect effect) const;
-    void decide(Effect effect, bool needed, std::string reason, bool forced = false);
+    bool needs(EffectTag effect) const;
+    const EffectDecision* find(EffectTag effect) const;
+    void decide(EffectTag effect, bool needed, std::string reason, bool forced = false);
     // Which effects are on: two frames with the same key compile to the same graph.
     std::string key() const;
 };

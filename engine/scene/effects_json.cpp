@@ -1,5 +1,5 @@
 // The "effects" section of the scene schema: one optional object per frame-graph effect, named
-// as vkw::fg::effect_name() names it, each with a mode.
+// as vkw::effect_name() names it, each with a mode.
 #include <array>
 
 #include "engine/scene/scene_json.hpp"
@@ -8,12 +8,12 @@ namespace vkw {
 namespace {
 
 // The effect names as the reader's choice table, built from the frame graph's own list.
-constexpr std::array<Named<fg::Effect>, kEffectCount> effect_names() {
-    std::array<Named<fg::Effect>, kEffectCount> names{};
-    for (size_t i = 0; i < kEffectCount; ++i) names[i] = {fg::effect_name(fg::kAllEffects[i]), fg::kAllEffects[i]};
+constexpr std::array<Named<Effect>, kEffectCount> effect_names() {
+    std::array<Named<Effect>, kEffectCount> names{};
+    for (size_t i = 0; i < kEffectCount; ++i) names[i] = {effect_name(kAllEffects[i]), kAllEffects[i]};
     return names;
 }
-constexpr std::array<Named<fg::Effect>, kEffectCount> kEffects = effect_names();
+constexpr std::array<Named<Effect>, kEffectCount> kEffects = effect_names();
 
 constexpr std::array<Named<EffectMode>, 3> kModes = {{
     {"auto", EffectMode::Auto},
@@ -78,7 +78,7 @@ WaterShadingSettings read_water_shading(FieldReader& fields) {
 
 EffectsSettings read_effects(FieldReader& fields) {
     EffectsSettings effects;
-    for (const Named<fg::Effect>& effect : kEffects) {
+    for (const Named<Effect>& effect : kEffects) {
         // Effects with settings of their own beside the mode: the mode is read first, then their
         // reader takes the rest (and finishes the object, refusing unknown fields).
         const auto with_settings = [&](auto read_settings, auto& settings) {
@@ -88,24 +88,24 @@ EffectsSettings read_effects(FieldReader& fields) {
                 return mode;
             });
         };
-        if (effect.value == fg::Effect::Water) {
+        if (effect.value == Effect::Water) {
             with_settings(read_water_shading, effects.water);
             continue;
         }
-        if (effect.value == fg::Effect::VolumeCaustics) {
+        if (effect.value == Effect::VolumeCaustics) {
             with_settings(read_godray_settings, effects.godrays);
             continue;
         }
-        if (effect.value == fg::Effect::SurfaceCaustics) {
+        if (effect.value == Effect::SurfaceCaustics) {
             with_settings(read_caustic_settings, effects.caustics);
             continue;
         }
-        if (effect.value == fg::Effect::CausticBlur) {
+        if (effect.value == Effect::CausticBlur) {
             with_settings(read_caustic_blur_settings, effects.caustic_blur);
             continue;
         }
-        const auto reader = effect.value == fg::Effect::Reflection   ? read_scene_lookup_effect
-                            : effect.value == fg::Effect::Refraction ? read_refraction_effect
+        const auto reader = effect.value == Effect::Reflection   ? read_scene_lookup_effect
+                            : effect.value == Effect::Refraction ? read_refraction_effect
                                                                      : read_effect;
         effects[effect.value] = fields.object(effect.name, Presence::optional, reader);
     }

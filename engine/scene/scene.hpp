@@ -17,7 +17,7 @@
 
 #include <glm/glm.hpp>
 
-#include "engine/framegraph/frame_needs.hpp"
+#include "engine/scene/effects.hpp"
 #include "engine/scene/medium.hpp"
 #include "engine/scene/mesh.hpp"
 #include "engine/water/wave_params.hpp"
@@ -96,7 +96,7 @@ struct Receiver {
 enum class EffectMode : uint8_t { Auto, On, Off };
 
 // How the water shading finds the scene's objects along reflected and refracted rays
-// (effects.reflection.method, effects.refraction.method; passes/scene_view.hpp).
+// (effects.reflection.method, effects.refraction.method; passes/scene_views/scene_view.hpp).
 enum class SceneLookup : uint8_t {
     Projective,   // the estimated hit, refined by fixed-point steps (seeds 000 and 001)
     ScreenSpace,  // a ray march through the view's depth, then bisection (seed 002)
@@ -112,11 +112,11 @@ struct EffectSettings {
     double shallow_blend = 0.0;
 };
 
-// One entry per fg::Effect, indexed by the enum (CausticBlur is its last value).
-inline constexpr std::size_t kEffectCount = fg::kAllEffects.size();
+// One entry per Effect (engine/scene/effects.hpp), indexed by the enum (CausticBlur is its last value).
+inline constexpr std::size_t kEffectCount = kAllEffects.size();
 
 // effects.godrays.method: how the in-scatter of the sun's beams under the water is computed
-// (passes/godrays.hpp).
+// (passes/godrays/godrays.hpp).
 enum class GodrayMethod : uint8_t {
     Lines,    // each photon's beam walked as a line over the pixels it crosses (seed 000 section 4.6)
     Marched,  // the baseline: each view ray marched through the water
@@ -140,15 +140,15 @@ enum class CausticKernel : uint8_t {
 
 // effects.caustics.method: what produces the caustic map.
 enum class CausticMethod : uint8_t {
-    Photons,     // the photon grid (passes/caustics_photons.hpp)
-    Procedural,  // seed 003's backward ray and sun lobe, a baseline (passes/caustics_procedural.hpp)
+    Photons,     // the photon grid (passes/caustics/caustics_photons.hpp)
+    Procedural,  // seed 003's backward ray and sun lobe, a baseline (passes/caustics/caustics_procedural.hpp)
 };
 
 // effects.caustics.splat: where the photons' flux is gathered.
 enum class CausticSplat : uint8_t {
-    LightSpace,   // the light-space map along the refracted sun, read by every receiver (passes/caustics_photons.hpp)
+    LightSpace,   // the light-space map along the refracted sun, read by every receiver (passes/caustics/caustics_photons.hpp)
     CameraSpace,  // gaussians on the receivers the camera sees without the water (seed 002;
-                  // passes/caustics_camera_splats.hpp)
+                  // passes/caustics/caustics_camera_splats.hpp)
 };
 
 // The settings of effects.caustics beside its mode (scenes/README.md).
@@ -170,7 +170,7 @@ struct CausticSettings {
 // The settings of effects.caustic_blur beside its mode (scenes/README.md).
 struct CausticBlurSettings {
     // r0, texels of the caustic map: the blur's radius where photons are as dense as under flat
-    // water; it grows as sqrt(E_flat / E) where they are sparser, up to 4 (passes/caustics_blur.hpp).
+    // water; it grows as sqrt(E_flat / E) where they are sparser, up to 4 (passes/caustics/caustics_blur.hpp).
     // 0 (the default): no blur, and the rule leaves the passes out. Measured on pool (README,
     // Caustics): with the adaptive splat kernel any blur adds error (relMSE 0.0489 -> 0.0505 at
     // 0.5); with the bilinear kernel 0.5 helps (0.0572 -> 0.0511).
@@ -205,8 +205,8 @@ struct EffectsSettings {
     CausticSettings caustics;
     CausticBlurSettings caustic_blur;
     std::array<EffectSettings, kEffectCount> settings{};
-    const EffectSettings& operator[](fg::Effect effect) const { return settings[static_cast<std::size_t>(effect)]; }
-    EffectSettings& operator[](fg::Effect effect) { return settings[static_cast<std::size_t>(effect)]; }
+    const EffectSettings& operator[](Effect effect) const { return settings[static_cast<std::size_t>(effect)]; }
+    EffectSettings& operator[](Effect effect) { return settings[static_cast<std::size_t>(effect)]; }
 };
 
 struct Scene {

@@ -1,6 +1,6 @@
 // The per-wave constants of a sum of sine and Gerstner waves at one time, in double: the one
 // place their formulas live, shared by the CPU surface (WaveSumSurface) and the GPU wave-sum
-// pass (passes/water_surface_sum.cpp, which rounds them to fp32). The wave model and its
+// pass (passes/water/water_surface_sum.cpp, which rounds them to fp32). The wave model and its
 // symbols are those of wave_sum_surface.hpp:
 //   theta = k_vector . (x0, z0) + phase_at_origin
 //   h     = sum amplitude sin(theta)

@@ -1,5 +1,5 @@
 #version 460
-// One axis of the caustic map's density-adaptive blur (passes/caustics_blur.hpp). Written as a
+// One axis of the caustic map's density-adaptive blur (passes/caustics/caustics_blur.hpp). Written as a
 // gather that is exactly a scatter: every source texel spreads its irradiance over a tent of its
 // own half-width h along the axis, with weights divided by their sum over the taps that lie on
 // the map, so each source gives away exactly what it holds (energy preserved to fp32 rounding,

@@ -1,13 +1,13 @@
 // The camera-space caustic irradiance a receiver point reads (issue 8 item 1): the point is
 // projected into the receivers' water-less view (caustic_camera_view.glsl; for a refracted view
 // ray, the projection of where the ray meets the receiver, not of where the camera sees it through
-// the water), and the resolved irradiance of passes/caustics_camera_splats.hpp is read bilinearly
+// the water), and the resolved irradiance of passes/caustics/caustics_camera_splats.hpp is read bilinearly
 // over the four nearest pixels that show the point's own surface (the same plane test as the
 // splats' depth test), their weights renormalised. False where none does: the point is hidden from
 // the camera (behind an object, outside the view), so no splat reached it; the caller then lights
 // it with the flat-surface stand-in.
 //
-// Bindings 4 and 5 of set 0 (passes/lighting_inputs.hpp): the receivers' view and the irradiance.
+// Bindings 4 and 5 of set 0 (passes/receivers/lighting_inputs.hpp): the receivers' view and the irradiance.
 #ifndef VKWATER_CAUSTIC_CAMERA_LOOKUP_GLSL
 #define VKWATER_CAUSTIC_CAMERA_LOOKUP_GLSL
 

@@ -1,6 +1,6 @@
 #version 460
 // Camera-space caustic flux -> irradiance on the receiver each pixel of the receivers' view shows
-// (passes/caustics_camera_splats.hpp): at level 0, E = Phi_pixel |v . N_r| / (s^2 Omega_pix), with v
+// (passes/caustics/caustics_camera_splats.hpp): at level 0, E = Phi_pixel |v . N_r| / (s^2 Omega_pix), with v
 // and s the direction and distance from the eye to the receiver point, N_r its normal and Omega_pix
 // the pixel's solid angle (caustic_camera_view.glsl: Phi over the area the pixel sees of the
 // receiver's plane); plus each coarser level's flux over its pixels' areas on the same plane,

@@ -3,7 +3,7 @@
 // the grid (caustic_grid_photon.glsl, the very photons of the light-space map) that lands on a
 // receiver the camera sees without the water is splatted as a gaussian lying in that receiver's
 // tangent plane, into a per-pixel flux buffer of the receivers' view
-// (passes/caustics_camera_splats.hpp), accumulated in 64-bit fixed point like the light-space map,
+// (passes/caustics/caustics_camera_splats.hpp), accumulated in 64-bit fixed point like the light-space map,
 // so two runs are bit-identical. Variants: plain (the floor plane) and VKWATER_SUN_SHADOW
 // (receiver meshes under the water and occluders above it).
 //
@@ -42,10 +42,10 @@ layout(set = 0, binding = 1, std430) readonly buffer Surface { WaterVertex verti
 layout(set = 0, binding = 2, std430) buffer Flux { uint64_t flux[]; };
 // Flux of photons the camera does not see on a receiver (off the view, hidden, or no receiver).
 layout(set = 0, binding = 3, std430) buffer Lost { uint64_t lost[]; };
-// The receivers' view (passes/caustics_camera_receivers.hpp): normal toward the eye, distance.
+// The receivers' view (passes/caustics/caustics_camera_receivers.hpp): normal toward the eye, distance.
 layout(set = 0, binding = 5) uniform sampler2D receivers;
 
-// Mirrors CameraSplatPush in passes/caustics_camera_splats.cpp (128 bytes).
+// Mirrors CameraSplatPush in passes/caustics/caustics_camera_splats.cpp (128 bytes).
 layout(push_constant) uniform Push {
     CausticPhotonSource source;
     uint resolution;  // R cells per side

@@ -1,6 +1,6 @@
 // The camera's water-less view of the receivers as the camera-space caustics see it
-// (passes/caustics_camera_splats.hpp): the scene view's guard-banded projection
-// (scene_view/scene_view.glsl, not mirrored), in pixel coordinates of a target of `size` pixels
+// (passes/caustics/caustics_camera_splats.hpp): the scene view's guard-banded projection
+// (scene_views/scene_view.glsl, not mirrored), in pixel coordinates of a target of `size` pixels
 // (pixel (i, j) covers [i, i + 1) x [j, j + 1), row 0 at the top). The ray through pixel
 // coordinate x is r(x) = d0 + x.x dx + x.y dy (not normalised; affine in x because the near plane
 // is a plane), and the area of the receiver plane (point c, unit normal N) that pixel (i, j) sees
@@ -12,7 +12,7 @@
 #ifndef VKWATER_CAUSTIC_CAMERA_VIEW_GLSL
 #define VKWATER_CAUSTIC_CAMERA_VIEW_GLSL
 
-#include "scene_view/scene_view.glsl"
+#include "scene_views/scene_view.glsl"
 
 struct CameraRays {
     vec3 eye;
@@ -55,7 +55,7 @@ bool camera_pixel_coord(vec3 p, vec2 size, out vec2 x) {
     return inside;
 }
 
-// The splats' flux pyramid (passes/caustics_camera_splats.hpp): level L has pixels 2^L x 2^L view
+// The splats' flux pyramid (passes/caustics/caustics_camera_splats.hpp): level L has pixels 2^L x 2^L view
 // pixels wide (ceil(W / 2^L) x ceil(H / 2^L) of them), stored level after level, three uint64 per
 // pixel. A splat that takes more than kMaxSplatTaps pixels of one level goes to the first level
 // where it fits (seed 000's point size regulation, done by level so that a splat never costs more

@@ -1,5 +1,5 @@
 // The light-space frame of the caustic map, computed on the CPU in double by
-// passes/caustics_light_space.cpp (fit_caustic_map) and handed to every caustic kernel and to
+// passes/caustics/caustics_light_space.cpp (fit_caustic_map) and handed to every caustic kernel and to
 // the lookup: orthographic along the flat-water refracted sun t, so a world point P lands at the
 // continuous texel coordinate (dot(P - origin, u_axis), dot(P - origin, v_axis)), texel centres
 // at integer + 0.5. Photons and receivers share this one projection, so a receiver reads
@@ -8,7 +8,7 @@
 #define VKWATER_CAUSTIC_LIGHT_SPACE_GLSL
 
 // std140 and std430 lay this out identically (four vec4). Mirrored by CausticLightSpacePush in
-// passes/caustics_light_space.hpp.
+// passes/caustics/caustics_light_space.hpp.
 struct CausticLightSpace {
     vec4 origin;  // xyz: a world point at texel coordinate (0, 0) and depth 0; w: floor height y
     vec4 u_axis;  // xyz: u / (texel size along u), 1/m; w: map width W in texels

@@ -1,6 +1,6 @@
 // The caustic irradiance a receiver reads (issue 7 item 4): the point is projected along the
 // map's direction t (the flat-water refracted sun) into the light-space map that
-// passes/caustics_resolve.hpp writes (irradiance on a plane normal to t, E_perp = Phi_texel /
+// passes/caustics/caustics_resolve.hpp writes (irradiance on a plane normal to t, E_perp = Phi_texel /
 // A_ls), bilinearly between texel centres, and converted to the receiver:
 // E = E_perp max(0, -t . N_r) (= Phi_texel max(0, -t . N_r) / A_ls). A face turned away from t
 // gets 0 (its texels belong to the lit face in front of it). Points outside the map get 0: no

@@ -1,5 +1,5 @@
 // One caustic photon (issue 7 item 2, PHYSICS.md sections 4 and 8): sub-cell (a, b) of cell
-// (i, j) of the GPU water grid (passes/water_surface.hpp), refracted with the exact Fresnel of
+// (i, j) of the GPU water grid (passes/water/water_surface.hpp), refracted with the exact Fresnel of
 // common/fresnel.glsl and carried to the floor plane (the receiver meshes in front of it are
 // found by caustic_receiver_hit.glsl). Shared by the fixed-point kernel, the godray beams and any
 // other splat variant, so that they trace identical photons.

@@ -1,6 +1,6 @@
 #version 460
 // Photon grid -> light-space caustic flux, accumulated deterministically in 64-bit fixed point
-// (passes/caustics_photons.hpp). Variants: plain (the floor plane is the receiver) and
+// (passes/caustics/caustics_photons.hpp). Variants: plain (the floor plane is the receiver) and
 // VKWATER_SUN_SHADOW (receiver meshes under the water and occluders above it, from the sun
 // shadow map); the splat kernel is a variant too (VKWATER_SPLAT_BILINEAR, _ADAPTIVE,
 // _FOOTPRINT): llvmpipe's compiled code for one kernel doubles in time when the others' code
@@ -33,7 +33,7 @@ layout(set = 0, binding = 1, std430) buffer Flux { uint64_t flux[]; };
 // Flux whose kernel tap fell outside the map, per channel (added by the band-0 dispatches only).
 layout(set = 0, binding = 2, std430) buffer Lost { uint64_t lost[]; };
 
-// Mirrors CausticPhotonPush in passes/caustics_photons.cpp (128 bytes, the guaranteed minimum).
+// Mirrors CausticPhotonPush in passes/caustics/caustics_photons.cpp (128 bytes, the guaranteed minimum).
 layout(push_constant) uniform Push {
     CausticPhotonSource source;
     uint resolution;     // R cells per side

@@ -1,6 +1,6 @@
 #version 460
 // Seed 003's procedural caustic, one texel of the light-space caustic map per invocation
-// (passes/caustics_procedural.hpp says what and why).
+// (passes/caustics/caustics_procedural.hpp says what and why).
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/fresnel.glsl"

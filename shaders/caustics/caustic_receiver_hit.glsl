@@ -1,6 +1,6 @@
 // Where a caustic photon meets the receivers under the water (issue 7 item 2): the first surface
 // along its refracted ray among the floor plane (exact) and the receiver meshes as the sun shadow
-// map's beam half sees them (passes/sun_shadow.hpp: their depth along the flat-water refracted
+// map's beam half sees them (passes/receivers/sun_shadow.hpp: their depth along the flat-water refracted
 // sun t0, clipped at the mean level), and whether objects above the water stop it before it
 // enters. Included by the photon kernel in its VKWATER_SUN_SHADOW variant (scenes with meshes).
 //

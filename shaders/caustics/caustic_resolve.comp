@@ -1,6 +1,6 @@
 #version 460
 // Fixed-point caustic flux -> irradiance on a plane normal to the sun, E = Phi_texel / A_ls
-// (passes/caustics_resolve.hpp), one band of map rows per dispatch.
+// (passes/caustics/caustics_resolve.hpp), one band of map rows per dispatch.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 

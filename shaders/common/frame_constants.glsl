@@ -1,5 +1,5 @@
 // Per-frame constants, std140. Mirrored field by field by
-// engine/render/frame_constants.hpp; change both together.
+// passes/common/frame_constants.hpp; change both together.
 #ifndef VKWATER_FRAME_CONSTANTS_GLSL
 #define VKWATER_FRAME_CONSTANTS_GLSL
 
@@ -23,7 +23,7 @@ layout(set = 0, binding = 0, std140) uniform FrameConstants {
     vec4 medium_sigma_t;      // rgb: extinction, 1/m
     vec4 medium_sigma_s;      // rgb: scattering, 1/m; w: Henyey-Greenstein g
     vec4 camera_medium;       // x: 1 if the camera is in the water (per frame, from the mean level; the fallback when
-                              //    the stencil split is culled, see water_shading/camera_medium.glsl)
+                              //    the stencil split is culled, see water/camera_medium.glsl)
     vec4 camera_near;         // x: near-plane distance, m (the stencil split's clip depth)
     vec4 medium_options;      // x: 1 when the shading adds the analytic in-scatter of the sun's beam; 0 when the
                               //    godray passes supply the in-scatter instead (counted once, PHYSICS.md section 1)

@@ -1,5 +1,5 @@
 #version 460
-// The godray beams (passes/godrays_beams.hpp): one photon per cell of a coarse G x G grid over the
+// The godray beams (passes/godrays/godrays_beams.hpp): one photon per cell of a coarse G x G grid over the
 // water, each cell's corners interpolated bilinearly from the GPU surface grid (R x R cells), traced
 // by the caustics' own photon code (caustics/caustic_photon.glsl: vector area, exact Fresnel,
 // refraction, the drop rules) with no extinction, so that its energy times E_s is Phi0, the flux
@@ -22,7 +22,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 1, std430) readonly buffer Surface { WaterVertex vertices[]; };
 layout(set = 0, binding = 2, std430) writeonly buffer Beams { GodrayBeam beams[]; };
 
-// Mirrors GodrayBeamsPush in passes/godrays_beams.cpp.
+// Mirrors GodrayBeamsPush in passes/godrays/godrays_beams.cpp.
 layout(push_constant) uniform Push {
     uint resolution;   // R: surface cells per side
     uint grid;         // G: beams per side

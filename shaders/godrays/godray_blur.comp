@@ -1,5 +1,5 @@
 #version 460
-// One direction of the godray blur (passes/godrays_blur.hpp): binomial weights 1 4 6 4 1 / 16
+// One direction of the godray blur (passes/godrays/godrays_blur.hpp): binomial weights 1 4 6 4 1 / 16
 // (variance 1 pixel^2), each tap kept only where the scene lies at the centre's distance within 5%
 // (so the blur never carries light across a depth edge), renormalised over the kept taps: a field
 // that is linear across the kept taps passes unchanged.

@@ -1,5 +1,5 @@
 #version 450
-// The godrays onto the HDR colour (passes/godrays_composite.hpp), drawn with additive blending over
+// The godrays onto the HDR colour (passes/godrays/godrays_composite.hpp), drawn with additive blending over
 // a full-screen triangle: the godray image upsampled to the output depth-aware. Of the four godray
 // pixels around this pixel's position, those whose scene distance matches this pixel's within 5%
 // are blended bilinearly; where none does (a depth edge narrower than a godray pixel), the one

@@ -1,5 +1,5 @@
 #version 460
-// The scene as the godray passes need it at their resolution (passes/godrays_depth.hpp): per
+// The scene as the godray passes need it at their resolution (passes/godrays/godrays_depth.hpp): per
 // godray pixel, r = the distance along its ray to the farthest scene surface among the output pixels
 // it covers (reversed-Z: the smallest depth), so that a beam point is kept wherever any of them
 // sees it; g = 1 where the camera ray starts in the water (the stencil split's mask at the pixel's

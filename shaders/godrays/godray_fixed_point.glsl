@@ -1,4 +1,4 @@
-// The fixed-point unit of the godray radiance accumulation (passes/godrays_lines.hpp), from the
+// The fixed-point unit of the godray radiance accumulation (passes/godrays/godrays_lines.hpp), from the
 // frame constants alone, so that the line walk and the resolve agree without a buffer between them:
 //   LSB = L_ref 2^-28,  L_ref = max_c E_s,c * max_c sigma_s,c min(1 / sigma_t,c, D) / (4 pi),
 // D the water's depth (mean level to floor, at least 1 mm): the in-scatter of an isotropic medium

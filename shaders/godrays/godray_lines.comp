@@ -1,5 +1,5 @@
 #version 460
-// Godray lines (passes/godrays_lines.hpp; PHYSICS.md section 6, seed 000 section 4.6): each beam
+// Godray lines (passes/godrays/godrays_lines.hpp; PHYSICS.md section 6, seed 000 section 4.6): each beam
 // of godray_beams.comp is walked along its line on the screen, one invocation per beam and view
 // (gl_GlobalInvocationID.z: direct, mirrored or refracted, godray_view.glsl), and deposits its
 // in-scattered radiance into 64-bit fixed-point counters (godray_fixed_point.glsl) of two
@@ -57,7 +57,7 @@ layout(set = 0, binding = 2) uniform sampler2D view_depth;
 // The pyramids of godray_pyramid.glsl, in units of godray_lsb().
 layout(set = 0, binding = 3, std430) buffer Radiance { uint64_t radiance[]; };
 
-// Mirrors GodrayLinesPush in passes/godrays_lines.cpp.
+// Mirrors GodrayLinesPush in passes/godrays/godrays_lines.cpp.
 layout(push_constant) uniform Push {
     uint grid;              // G: beams per side
     uint per_pixel_medium;  // 1: view_depth.g decides each pixel's view; 0: the frame's camera medium

@@ -1,5 +1,5 @@
 #version 460
-// The marched baseline of the godrays (passes/godrays_march.hpp): each godray pixel's view ray is
+// The marched baseline of the godrays (passes/godrays/godrays_march.hpp): each godray pixel's view ray is
 // followed through the water (from a camera in it: to the scene, and on along the surface's
 // reflection where the ray meets the surface from below; from the air: along the ray refracted by
 // the FLAT surface at the mean level) in N equal steps. Each step takes the sun's light at its
@@ -15,7 +15,7 @@
 
 #include "common/medium.glsl"
 #include "godrays/godray_view.glsl"
-#include "water_shading/scene_optics.glsl"
+#include "water/scene_optics.glsl"
 #ifdef VKWATER_CAUSTICS
 #define CAUSTIC_SET 0
 #define CAUSTIC_PARAMS_BINDING 4
@@ -32,7 +32,7 @@ layout(set = 0, binding = 1, std430) readonly buffer Optics { SceneOptics optics
 layout(set = 0, binding = 2) uniform sampler2D view_depth;  // r: distance to the scene, g: 1 in the water
 layout(set = 0, binding = 3, rgba32f) writeonly uniform image2D target;
 
-// Mirrors GodrayMarchPush in passes/godrays_march.cpp.
+// Mirrors GodrayMarchPush in passes/godrays/godrays_march.cpp.
 layout(push_constant) uniform Push {
     uint steps;           // N per segment
     float max_amplitude;  // m: a bound on the waves' height, the margin of the surface's depth

@@ -1,4 +1,4 @@
-// The layout of the godray radiance pyramids (passes/godrays_lines.hpp): level l (0 = the godray
+// The layout of the godray radiance pyramids (passes/godrays/godrays_lines.hpp): level l (0 = the godray
 // resolution W x H) has W_l x H_l = ceil(W / 2^l) x ceil(H / 2^l) pixels, stretched to cover the
 // image exactly (pixel (i, j) covers level-0 coordinates [i W / W_l, (i + 1) W / W_l) x ..., so a
 // level's pixel centres stay inside the image: a one-pixel level samples the image's centre); each

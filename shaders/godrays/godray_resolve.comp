@@ -1,5 +1,5 @@
 #version 460
-// The fixed-point godray pyramids -> radiance at the godray resolution (passes/godrays_resolve.hpp):
+// The fixed-point godray pyramids -> radiance at the godray resolution (passes/godrays/godrays_resolve.hpp):
 // for each pyramid, LSB times the sum over the levels l of level l's counters upsampled bilinearly
 // (godray_pyramid.glsl: level l's pixel centres sit at level-0 coordinates (i + 0.5) W / W_l; taps
 // clamped to the level; bilinear weights sum to 1, so a level's mean is kept), times the phase

@@ -1,5 +1,5 @@
 #version 450
-// The window's display transform (passes/present_tonemap.hpp): exposure, the ACES filmic curve
+// The window's display transform (passes/present/present_tonemap.hpp): exposure, the ACES filmic curve
 // (Narkowicz 2015 fit) and the sRGB encoding, exactly the chain of engine/image/tone_curve.hpp.
 
 layout(binding = 0) uniform sampler2D hdr;

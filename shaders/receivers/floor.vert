@@ -4,7 +4,7 @@
 // triangles generated from the vertex index; seen from the camera or, in a view with the scene
 // views' guard band (the camera-space caustics' receivers), as that view sees it.
 #include "receivers/receiver_push.glsl"
-#include "scene_view/scene_view.glsl"
+#include "scene_views/scene_view.glsl"
 
 layout(location = 0) out vec3 out_world_position;
 layout(location = 1) out vec3 out_normal;

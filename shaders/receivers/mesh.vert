@@ -3,7 +3,7 @@
 // Receiver meshes, already in world space (the scene loader applies their transforms),
 // seen from the camera or, in a scene view for the water's lookups, as that view sees them.
 #include "receivers/receiver_push.glsl"
-#include "scene_view/scene_view.glsl"
+#include "scene_views/scene_view.glsl"
 
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;

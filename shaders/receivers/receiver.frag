@@ -4,16 +4,16 @@
 // and the albedo): lit by the sun and the sky above the water, by the sun through the
 // water (the caustic map, or the flat-surface stand-in) and the transmitted skylight
 // below it. Seen from a camera in the water, the view path attenuates and scatters. In a
-// scene view (passes/scene_view.hpp) it keeps one side of the water plane and writes what
+// scene view (passes/scene_views/scene_view.hpp) it keeps one side of the water plane and writes what
 // leaves the receiver with its distance from the view's eye; the water adds the path.
 // Variants (shaders/CMakeLists.txt): VKWATER_PER_PIXEL_MEDIUM (the stencil split's mask),
 // VKWATER_CAUSTICS (the caustic map), and VKWATER_CAUSTIC_LAYER (a second output: the sun's
-// irradiance on the receiver under the water, 0 above it; passes/caustic_layer.hpp).
+// irradiance on the receiver under the water, 0 above it; passes/caustics/caustic_layer.hpp).
 #include "common/medium.glsl"
 #include "receivers/receiver_push.glsl"
-#include "scene_view/scene_view.glsl"
-#include "water_shading/camera_medium.glsl"
-#include "water_shading/underwater_light.glsl"
+#include "scene_views/scene_view.glsl"
+#include "water/camera_medium.glsl"
+#include "water/underwater_light.glsl"
 
 layout(set = 0, binding = 1, std430) readonly buffer Optics { SceneOptics optics; };
 

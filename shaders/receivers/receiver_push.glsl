@@ -1,5 +1,5 @@
 // Push constants of the receiver shaders: the mesh's albedo, and which scene view (if
-// any) the draw renders (passes/scene_view.hpp).
+// any) the draw renders (passes/scene_views/scene_view.hpp).
 #ifndef VKWATER_RECEIVER_PUSH_GLSL
 #define VKWATER_RECEIVER_PUSH_GLSL
 

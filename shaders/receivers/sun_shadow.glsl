@@ -1,6 +1,6 @@
 // Whether the sun reaches a point (PHYSICS.md section 1: the sun is shadowed by objects, above
 // the water along s and below it along the refracted beam t), from the map of
-// passes/sun_shadow.hpp: the point is projected into an orthographic light space and compared
+// passes/receivers/sun_shadow.hpp: the point is projected into an orthographic light space and compared
 // once with the nearest texel's occluder depth. The map's left half looks along s at every
 // object; its right half (scenes with water) along the flat surface's refracted beam t at the
 // objects under the water. Bindings 6 (the D32 map, read with texelFetch: no filtering, one
@@ -9,7 +9,7 @@
 #ifndef VKWATER_SUN_SHADOW_GLSL
 #define VKWATER_SUN_SHADOW_GLSL
 
-// Mirrored by SunShadowSpace in passes/sun_shadow.hpp.
+// Mirrored by SunShadowSpace in passes/receivers/sun_shadow.hpp.
 layout(set = 0, binding = 7, std140) uniform SunShadowSpace {
     mat4 light_from_world;  // along s: world -> (x, y) in [-1, 1], z = 1 nearest the sun, 0 farthest
     vec4 params;            // x: texel size, m; y: depth range, m; z: map size, texels (each half)

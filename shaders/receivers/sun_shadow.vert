@@ -1,5 +1,5 @@
 #version 450
-// The receiver meshes' depth seen along a beam (passes/sun_shadow.hpp): world space to the
+// The receiver meshes' depth seen along a beam (passes/receivers/sun_shadow.hpp): world space to the
 // orthographic light space of one half of the map, pushed as one matrix with the half's clip
 // height, which the fragment stage applies.
 layout(location = 0) in vec3 in_position;

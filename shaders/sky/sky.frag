@@ -7,7 +7,7 @@
 // (VKWATER_PER_PIXEL_MEDIUM, the stencil split's mask) and frame (the per-frame medium).
 #include "common/camera_ray.glsl"
 #include "common/sky.glsl"
-#include "water_shading/camera_medium.glsl"
+#include "water/camera_medium.glsl"
 
 layout(location = 0) out vec4 out_radiance;
 

@@ -8,7 +8,7 @@
 // of a plane is then field 2p in its real part and field 2p + 1 in its imaginary part, so
 // four transforms give the eight fields where the CPU runs eight. Planes 2q and 2q + 1 share
 // the vec4 elements of grid q (xy and zw), which the FFT transforms together.
-// h0 is the CPU's double-precision spectrum rounded to fp32 (passes/water_surface_spectrum.hpp).
+// h0 is the CPU's double-precision spectrum rounded to fp32 (passes/water/water_surface_spectrum.hpp).
 #include "water/complex.glsl"
 #include "water/ocean_modes.glsl"
 

@@ -1,6 +1,6 @@
 // The water surface's vertex grid, shared by every wave model's kernel: the parameter of
 // each vertex, the normal from the tangents (engine/water/surface.cpp make_surface_point,
-// in fp32), and the vertex layout that passes/water_surface.hpp documents.
+// in fp32), and the vertex layout that passes/water/water_surface.hpp documents.
 #ifndef VKWATER_WATER_VERTEX_GLSL
 #define VKWATER_WATER_VERTEX_GLSL
 
@@ -10,7 +10,7 @@ struct WaterVertex {
     vec4 normal;    // xyz unit normal toward the air (y > 0), w = 0
 };
 
-// The head of every grid kernel's push constants (WaterGridPush in passes/water_surface_grid.hpp).
+// The head of every grid kernel's push constants (WaterGridPush in passes/water/water_surface_grid.hpp).
 // One dispatch writes a band of rows, first_row .. first_row + band_rows - 1, into a vertex
 // buffer binding that starts at row first_row: a storage-buffer binding is limited to
 // maxStorageBufferRange (128 MiB on lavapipe, R = 2047), and large grids take several bands.

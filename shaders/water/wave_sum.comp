@@ -4,7 +4,7 @@
 // the water grid, with analytic tangents: the CPU's formulas in fp32, term by term in the
 // same order. Flat water is this kernel with no waves. The per-wave constants, including the
 // phase at the origin -w t + p (reduced to [-pi, pi] in double on the CPU, so that the time
-// costs no precision here), come from passes/water_surface_sum.cpp in a uniform buffer of
+// costs no precision here), come from passes/water/water_surface_sum.cpp in a uniform buffer of
 // kMaxGpuWaves (64) entries: every invocation reads the same wave at once, which lavapipe
 // turns into one load where a storage buffer costs one per lane (ten times slower here).
 #include "water/water_grid_invocation.glsl"

@@ -1,7 +1,7 @@
-// The caustic map's blur (passes/caustics_blur.hpp): it keeps the map's total flux (to fp32
+// The caustic map's blur (passes/caustics/caustics_blur.hpp): it keeps the map's total flux (to fp32
 // rounding) while it moves light about, radius 0 is the identity bit for bit, and its width
 // follows the photon density the irradiance implies, r = r0 sqrt(E_flat / E).
-#include "passes/caustics_blur.hpp"
+#include "passes/caustics/caustics_blur.hpp"
 #include "tests/caustics/caustics_support.hpp"
 #include "tests/support/gpu_test.hpp"
 

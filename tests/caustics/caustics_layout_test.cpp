@@ -1,9 +1,9 @@
 // CPU-only checks of the caustic passes' layout: the light-space basis stays finite and
 // orthonormal for a sun exactly overhead, and every binding and dispatch respects lavapipe's
 // limits (128 MiB per storage-buffer binding, 65535 groups per dimension) at the largest sizes.
-#include "passes/caustics_bands.hpp"
-#include "passes/caustics_light_space.hpp"
-#include "passes/water_surface.hpp"
+#include "passes/caustics/caustics_bands.hpp"
+#include "passes/caustics/caustics_light_space.hpp"
+#include "passes/water/water_surface.hpp"
 
 #include <gtest/gtest.h>
 

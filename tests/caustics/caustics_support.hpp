@@ -7,14 +7,14 @@
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/vk/resources.hpp"
 #include "engine/water/surface.hpp"
-#include "passes/caustics_bands.hpp"
-#include "passes/caustics_blur.hpp"
-#include "passes/caustics_photons.hpp"
-#include "passes/caustics_resolve.hpp"
-#include "passes/readback.hpp"
-#include "passes/receiver_meshes.hpp"
-#include "passes/sun_shadow.hpp"
-#include "passes/water_surface.hpp"
+#include "passes/caustics/caustics_bands.hpp"
+#include "passes/caustics/caustics_blur.hpp"
+#include "passes/caustics/caustics_photons.hpp"
+#include "passes/caustics/caustics_resolve.hpp"
+#include "passes/present/readback.hpp"
+#include "passes/receivers/receiver_meshes.hpp"
+#include "passes/receivers/sun_shadow.hpp"
+#include "passes/water/water_surface.hpp"
 
 #include <glm/glm.hpp>
 

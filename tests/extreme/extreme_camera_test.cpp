@@ -2,7 +2,7 @@
 // 30-frame path through the surface (discontinuous by design: exempt from the continuity test,
 // checked for flicker instead), and under the water looking along the sun's refracted beam, where
 // the single-scattering closed form reaches its 1 + c = 0 limit (PHYSICS.md section 6).
-#include "engine/render/frame_needs.hpp"
+#include "passes/frame/frame_needs.hpp"
 #include "tests/extreme/extreme_support.hpp"
 #include "tests/support/gpu_test.hpp"
 

@@ -4,7 +4,7 @@
 #include "engine/core/errors.hpp"
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/image/exr_io.hpp"
-#include "passes/readback.hpp"
+#include "passes/present/readback.hpp"
 #include "tests/extreme/extreme_support.hpp"
 #include "tests/support/gpu_test.hpp"
 

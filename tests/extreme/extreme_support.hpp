@@ -6,7 +6,7 @@
 // Every suite's name starts with "extreme_", so `ctest -R extreme` selects exactly these tests.
 #pragma once
 
-#include "engine/render/renderer.hpp"
+#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/water/surface.hpp"
 #include "tests/caustics/caustics_support.hpp"
@@ -183,7 +183,7 @@ inline void expect_continuous(const std::string& what, Renderer& renderer, const
     EXPECT_LE(rt.rms_delta, factor * c * std::abs(delta)) << what;
 }
 
-// The caustic passes' inputs for `scene`, as the renderer fills them (engine/render/renderer.cpp).
+// The caustic passes' inputs for `scene`, as the renderer fills them (passes/frame/renderer.cpp).
 inline passes::CausticInputs scene_caustic_inputs(const Scene& scene) {
     const Water& water = *scene.water;
     passes::CausticInputs in;
@@ -311,7 +311,7 @@ inline CaseImages expect_stable(Context& context, Renderer& renderer, const Scen
     CaseImages images{render_real_time(renderer, scene), render_reference(scene, quality)};
     expect_finite_non_negative(images.real_time, what + " (real time)");
     expect_finite_non_negative(images.reference, what + " (reference)");
-    if (scene.water && scene.effects[fg::Effect::SurfaceCaustics].mode != EffectMode::Off) {
+    if (scene.water && scene.effects[Effect::SurfaceCaustics].mode != EffectMode::Off) {
         expect_receiver_flux_bounded(run_scene_caustics(context, scene), scene, what);
     }
     if (scene.water && scene.water->waves.model != WaveModel::Flat) expect_reference_flux_bounded(scene, quality, what);

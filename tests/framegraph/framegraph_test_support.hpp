@@ -5,6 +5,8 @@
 
 #include "engine/core/errors.hpp"
 #include "engine/framegraph/frame_graph.hpp"
+// The graph takes any enum as an effect tag; the tests tag their passes with the scene's effects.
+#include "engine/scene/effects.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // estimate), and optical depths sigma_t x depth from 1e-6 to 1e3, with both methods. Every pass's
 // float targets are scanned for NaN/Inf (the frame graph's finite check), and every pixel must be
 // non-negative: in-scatter only ever adds light.
-#include "engine/render/renderer.hpp"
+#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tests/support/gpu_test.hpp"
 

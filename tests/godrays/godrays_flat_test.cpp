@@ -7,7 +7,7 @@
 // Why the lines are exact here. The beams are tubes: their photon cells (squares of side
 // h = 2 E / G) swept along the refracted sun, carrying E_tube = E_perp0, and they tile the lit water.
 // Where a tube is at least one pixel wide where it is seen (h / sqrt(A_pix) >= 1), every pixel
-// takes the exact chord of its centre ray through each tube slice (passes/godrays_lines.hpp), so a
+// takes the exact chord of its centre ray through each tube slice (passes/godrays/godrays_lines.hpp), so a
 // pixel's sum is PHYSICS.md section 6's integral over the lit part of its ray. The line count and
 // the resolution are chosen for that: G = 64 (h = 0.125 m) on 7 x 7 pixels (one pyramid level, no
 // upsampling), with the fields of view below; each test checks the condition over its whole lit
@@ -21,7 +21,7 @@
 namespace vkw::test {
 namespace {
 
-constexpr uint32_t kSize = 7;   // one pyramid level (passes/godrays_lines.hpp: fewer than 8 pixels)
+constexpr uint32_t kSize = 7;   // one pyramid level (passes/godrays/godrays_lines.hpp: fewer than 8 pixels)
 constexpr int kCentre = 3;      // its 5 x 5 blur stays inside the image
 constexpr double kUnit = 0x1.0p-24;
 

@@ -1,10 +1,10 @@
-// The godrays' needs rule (engine/render/frame_needs.cpp), one test per reason, and their scene
+// The godrays' needs rule (passes/frame/frame_needs.cpp), one test per reason, and their scene
 // fields (effects.godrays in scenes/README.md): defaults, every field read, each out-of-range value
 // refused naming the field and the accepted range, and the configuration key following the
 // settings the passes capture. No GPU.
-#include "engine/render/frame_needs.hpp"
+#include "passes/frame/frame_needs.hpp"
 #include "engine/scene/scene_loader.hpp"
-#include "passes/godrays.hpp"
+#include "passes/godrays/godrays.hpp"
 
 #include <gtest/gtest.h>
 
@@ -30,9 +30,9 @@ Scene scene_with(const std::vector<std::string>& overrides = {}) {
 
 // A copy: the needs it comes from are often a temporary.
 fg::EffectDecision godrays(const fg::FrameNeeds& needs) {
-    const fg::EffectDecision* found = needs.find(fg::Effect::VolumeCaustics);
+    const fg::EffectDecision* found = needs.find(Effect::VolumeCaustics);
     EXPECT_NE(found, nullptr);
-    return found ? *found : fg::EffectDecision{fg::Effect::VolumeCaustics};
+    return found ? *found : fg::EffectDecision{Effect::VolumeCaustics};
 }
 
 fg::FrameNeeds needs_of(const std::vector<std::string>& overrides) { return decide_frame_needs(scene_with(overrides), 1.0); }

@@ -5,7 +5,7 @@
 // nothing with the godray shaders but the equations.
 #pragma once
 
-#include "engine/render/renderer.hpp"
+#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tools/reference/optics.hpp"
 #include "tools/reference/reference_renderer.hpp"
@@ -107,7 +107,7 @@ inline glm::dvec3 pixel_ray(const Scene& scene, uint32_t width, uint32_t height,
     return ref::camera_ray(scene.camera, width, height, x + 0.5, y + 0.5).direction;
 }
 
-// The godray blur (passes/godrays_blur.hpp) of the expected values around pixel (x, y): binomial
+// The godray blur (passes/godrays/godrays_blur.hpp) of the expected values around pixel (x, y): binomial
 // weights 1 4 6 4 1 along both axes, for pixels far from the image's border whose neighbours all
 // see the same surface (every tap kept).
 inline glm::dvec3 expected_blurred(const Scene& scene, uint32_t width, uint32_t height, int x, int y) {

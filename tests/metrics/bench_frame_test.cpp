@@ -4,10 +4,10 @@
 // keeps no clock), so the timed frames and the measured one are the same picture.
 #include <gtest/gtest.h>
 
-#include "engine/render/renderer.hpp"
+#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
-#include "passes/receiver_meshes.hpp"
-#include "passes/water_surface.hpp"
+#include "passes/receivers/receiver_meshes.hpp"
+#include "passes/water/water_surface.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/benchmarks/frame_memory.hpp"
 

@@ -71,7 +71,7 @@ protected:
             push.table_cos[k] = static_cast<float>(std::cos(kTableDeg[k] * std::numbers::pi / 180.0));
         }
         const uint32_t total = kSamples + 7;
-        return run_compute(context(), "optics/fresnel_sweep.comp", &push, sizeof push, size_t{total} * kStride,
+        return run_compute(context(), "tests/fresnel_sweep.comp", &push, sizeof push, size_t{total} * kStride,
                            (total + 63) / 64);
     }
 };

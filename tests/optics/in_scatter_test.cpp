@@ -42,7 +42,7 @@ using InScatterShader = GpuTest;
 
 TEST_F(InScatterShader, MatchesTheClosedFormInEveryCase) {
     Push push{kCases, 1.333f};
-    const std::vector<float> v = run_compute(context(), "optics/in_scatter_sweep.comp", &push, sizeof push,
+    const std::vector<float> v = run_compute(context(), "tests/in_scatter_sweep.comp", &push, sizeof push,
                                              size_t{kCases} * kStride, (kCases + 63) / 64);
     int near_zero_c = 0;
     for (uint32_t i = 0; i < kCases; ++i) {

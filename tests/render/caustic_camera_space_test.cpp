@@ -1,4 +1,4 @@
-// Camera-space caustic splats (effects.caustics.splat = camera-space; passes/caustics_camera_splats.hpp)
+// Camera-space caustic splats (effects.caustics.splat = camera-space; passes/caustics/caustics_camera_splats.hpp)
 // against the reference renderer's caustic layer under flat water, where the sun's irradiance on
 // every receiver is exact in both (the photon passes forced on with analytic_flat = false):
 // - flat water: the floor seen through the surface (calm);
@@ -13,8 +13,8 @@
 // to a receiver's edge or a silhouette the splats are cut and renormalised, a kernel estimate's
 // boundary bias, documented in the README and not asserted here).
 #include "engine/core/errors.hpp"
-#include "engine/render/frame_needs.hpp"
-#include "engine/render/renderer.hpp"
+#include "passes/frame/frame_needs.hpp"
+#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "engine/water/wave_sum_surface.hpp"
@@ -303,7 +303,7 @@ TEST_F(CameraSpaceCaustics, BlurRuleCullsItAndTheImageEqualsTheForcedOne) {
     // saying why, and forcing it on changes nothing (no map to blur, no pass added).
     const Scene culled = builtin("pool.json", {"water.grid_resolution=128", "effects.caustic_blur.radius=1"});
     const fg::FrameNeeds needs = decide_frame_needs(culled, 4.0 / 3.0);
-    const fg::EffectDecision* blur = needs.find(fg::Effect::CausticBlur);
+    const fg::EffectDecision* blur = needs.find(Effect::CausticBlur);
     ASSERT_NE(blur, nullptr);
     EXPECT_FALSE(blur->needed);
     EXPECT_NE(blur->reason.find("camera space"), std::string::npos) << blur->reason;

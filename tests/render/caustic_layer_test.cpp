@@ -1,9 +1,9 @@
-// The caustic layer (passes/caustic_layer.hpp) against the reference's (tools/reference), at
+// The caustic layer (passes/caustics/caustic_layer.hpp) against the reference's (tools/reference), at
 // 64x48, where the real-time sun term under the water is exact (flat water: the flat-surface
 // stand-in is the model's irradiance): the floor seen through the surface, receiver meshes seen
 // through it (the refraction scene view's own layer), and the floor seen from a camera in the
 // water. And the layer leaves the image as it is.
-#include "engine/render/renderer.hpp"
+#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/metrics/metrics.hpp"

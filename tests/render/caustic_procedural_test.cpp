@@ -1,7 +1,7 @@
 // Seed 003's procedural caustic, the baseline (effects.caustics.method = procedural,
-// passes/caustics_procedural.hpp): under flat water its backward ray returns along the sun, so it
+// passes/caustics/caustics_procedural.hpp): under flat water its backward ray returns along the sun, so it
 // is the flat-surface stand-in; under waves it stays finite and non-negative for every sun.
-#include "engine/render/renderer.hpp"
+#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/metrics/metrics.hpp"

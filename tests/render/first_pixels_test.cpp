@@ -3,8 +3,8 @@
 // and checked against the model (PHYSICS.md section 1):
 //   floor radiance = rho (E_s cos(theta_s) + pi L_sky) / pi,   sky radiance = L_sky.
 #include "engine/image/exr_io.hpp"
-#include "engine/render/frame_constants.hpp"
-#include "engine/render/renderer.hpp"
+#include "passes/common/frame_constants.hpp"
+#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tests/support/gpu_test.hpp"
 

@@ -1,8 +1,8 @@
-// The scene's needs (engine/render/frame_needs.cpp), one test per rule, without a
+// The scene's needs (passes/frame/frame_needs.cpp), one test per rule, without a
 // GPU: the water is needed when its box is in view, the underwater path when the
 // near plane can reach into the water; effects.<name>.mode forces either way and is
 // marked forced; every decision carries its reason.
-#include "engine/render/frame_needs.hpp"
+#include "passes/frame/frame_needs.hpp"
 #include "engine/scene/scene_loader.hpp"
 
 #include <gtest/gtest.h>
@@ -23,7 +23,7 @@ Scene scene_with(const std::string& camera, const std::vector<std::string>& over
     })", "needs_test.json", overrides);
 }
 
-const fg::EffectDecision& decision(const fg::FrameNeeds& needs, fg::Effect effect) {
+const fg::EffectDecision& decision(const fg::FrameNeeds& needs, Effect effect) {
     const fg::EffectDecision* found = needs.find(effect);
     EXPECT_NE(found, nullptr);
     return *found;
@@ -31,11 +31,11 @@ const fg::EffectDecision& decision(const fg::FrameNeeds& needs, fg::Effect effec
 
 TEST(frame_needs, WaterNeededOnlyWhenItsBoxIsInView) {
     const auto looking_at = decide_frame_needs(scene_with(R"("position": [0, 2, 5], "target": [0, 0, 0])"), 4.0 / 3.0);
-    EXPECT_TRUE(decision(looking_at, fg::Effect::Water).needed);
+    EXPECT_TRUE(decision(looking_at, Effect::Water).needed);
     const auto looking_away =
         decide_frame_needs(scene_with(R"("position": [0, 2, 50], "target": [0, 2, 100])"), 4.0 / 3.0);
-    EXPECT_FALSE(decision(looking_away, fg::Effect::Water).needed);
-    EXPECT_NE(decision(looking_away, fg::Effect::Water).reason.find("outside the view"), std::string::npos);
+    EXPECT_FALSE(decision(looking_away, Effect::Water).needed);
+    EXPECT_NE(decision(looking_away, Effect::Water).reason.find("outside the view"), std::string::npos);
 }
 
 TEST(frame_needs, UnderwaterViewFollowsTheNearPlaneAgainstTheCrests) {
@@ -46,39 +46,39 @@ TEST(frame_needs, UnderwaterViewFollowsTheNearPlaneAgainstTheCrests) {
         const std::string camera = "\"position\": [0, " + std::to_string(height) + ", 0], \"target\": [0, " +
                                    std::to_string(height) + ", -1]";
         const auto needs = decide_frame_needs(scene_with(camera), 4.0 / 3.0);
-        EXPECT_EQ(decision(needs, fg::Effect::UnderwaterView).needed, needed) << "camera at y = " << height;
-        EXPECT_FALSE(decision(needs, fg::Effect::UnderwaterView).reason.empty());
+        EXPECT_EQ(decision(needs, Effect::UnderwaterView).needed, needed) << "camera at y = " << height;
+        EXPECT_FALSE(decision(needs, Effect::UnderwaterView).reason.empty());
     }
 }
 
 TEST(frame_needs, ModesForceTheDecisionAndSaySo) {
     const std::string camera = R"("position": [0, 2, 5], "target": [0, 0, 0])";
     const auto off = decide_frame_needs(scene_with(camera, {"effects.water.mode=off"}), 1.0);
-    EXPECT_FALSE(decision(off, fg::Effect::Water).needed);
-    EXPECT_TRUE(decision(off, fg::Effect::Water).forced);
+    EXPECT_FALSE(decision(off, Effect::Water).needed);
+    EXPECT_TRUE(decision(off, Effect::Water).forced);
     const auto on = decide_frame_needs(scene_with(camera, {"effects.underwater_view.mode=on"}), 1.0);
-    EXPECT_TRUE(decision(on, fg::Effect::UnderwaterView).needed);
-    EXPECT_TRUE(decision(on, fg::Effect::UnderwaterView).forced);
-    EXPECT_NE(decision(on, fg::Effect::UnderwaterView).reason.find("mode = on"), std::string::npos);
+    EXPECT_TRUE(decision(on, Effect::UnderwaterView).needed);
+    EXPECT_TRUE(decision(on, Effect::UnderwaterView).forced);
+    EXPECT_NE(decision(on, Effect::UnderwaterView).reason.find("mode = on"), std::string::npos);
     const auto automatic = decide_frame_needs(scene_with(camera), 1.0);
-    EXPECT_FALSE(decision(automatic, fg::Effect::Water).forced);
+    EXPECT_FALSE(decision(automatic, Effect::Water).forced);
 }
 
 TEST(frame_needs, CausticsNeedTheSunUpAndTheFloorUnderTheWater) {
     const std::string camera = R"("position": [0, 2, 5], "target": [0, 0, 0])";
-    EXPECT_TRUE(decision(decide_frame_needs(scene_with(camera), 1.0), fg::Effect::SurfaceCaustics).needed);
+    EXPECT_TRUE(decision(decide_frame_needs(scene_with(camera), 1.0), Effect::SurfaceCaustics).needed);
     const auto night = decide_frame_needs(scene_with(camera, {"sun.elevation_deg=-1"}), 1.0);
-    EXPECT_FALSE(decision(night, fg::Effect::SurfaceCaustics).needed);
-    EXPECT_NE(decision(night, fg::Effect::SurfaceCaustics).reason.find("below the horizon"), std::string::npos);
+    EXPECT_FALSE(decision(night, Effect::SurfaceCaustics).needed);
+    EXPECT_NE(decision(night, Effect::SurfaceCaustics).reason.find("below the horizon"), std::string::npos);
     // A floor above the highest crest (the water given its own bottom by water.depth).
     const auto dry = decide_frame_needs(scene_with(camera, {"floor.height=0.5", "water.depth=1"}), 1.0);
-    EXPECT_FALSE(decision(dry, fg::Effect::SurfaceCaustics).needed);
+    EXPECT_FALSE(decision(dry, Effect::SurfaceCaustics).needed);
 }
 
 TEST(frame_needs, NoWaterNoWaterEffects) {
     const auto needs = decide_frame_needs(scene_with(R"("position": [0, 2, 5], "target": [0, 0, 0])", {"water=null"}), 1.0);
-    EXPECT_FALSE(decision(needs, fg::Effect::Water).needed);
-    EXPECT_FALSE(decision(needs, fg::Effect::UnderwaterView).needed);
+    EXPECT_FALSE(decision(needs, Effect::Water).needed);
+    EXPECT_FALSE(decision(needs, Effect::UnderwaterView).needed);
 }
 
 TEST(frame_needs, WaterBoundsHoldTheCrestsAndTheBottom) {

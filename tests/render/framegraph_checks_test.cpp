@@ -4,7 +4,8 @@
 #include "engine/core/errors.hpp"
 #include "engine/framegraph/executor.hpp"
 #include "engine/framegraph/pass_context.hpp"
-#include "passes/readback.hpp"
+#include "engine/scene/effects.hpp"
+#include "passes/present/readback.hpp"
 #include "tests/support/gpu_test.hpp"
 
 #include <string>
@@ -75,7 +76,7 @@ TEST_F(FrameGraphChecks, CulledPassCreatesNoPipeline) {
     Buffer readback(context(), {kBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "readback");
     fg::PipelineStore pipelines;
     fg::FrameNeeds needs;
-    needs.decide(fg::Effect::VolumeCaustics, false, "test: not needed");
+    needs.decide(Effect::VolumeCaustics, false, "test: not needed");
     fg::FrameGraph graph(needs);
     const fg::ImageHandle used = add_poison_pass(graph, "used", {-1, -1, 0, 0});
     add_poison_pass(graph, "unread", {-1, -1, 0, 0});  // nothing reads it
@@ -85,7 +86,7 @@ TEST_F(FrameGraphChecks, CulledPassCreatesNoPipeline) {
     graph.add_pass<Data>(
         "godrays", fg::PassKind::Compute,
         [](fg::PassBuilder& builder, Data& d) {
-            builder.serves(fg::Effect::VolumeCaustics);
+            builder.serves(Effect::VolumeCaustics);
             builder.side_effect();  // even a side effect does not keep an unneeded effect's pass
             d.image = builder.write_storage(builder.create_image("godray image", {VK_FORMAT_R32G32B32A32_SFLOAT}));
         },

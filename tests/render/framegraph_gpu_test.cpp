@@ -9,7 +9,7 @@
 #include "engine/framegraph/frame_graph.hpp"
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/vk/resources.hpp"
-#include "passes/readback.hpp"
+#include "passes/present/readback.hpp"
 #include "tools/benchmarks/chain_graph.hpp"
 #include "tests/support/gpu_test.hpp"
 

@@ -1,10 +1,10 @@
-// Reflection and refraction of the scene's objects (passes/scene_view.hpp,
-// shaders/water_shading/scene_lookup.glsl), both methods, against the CPU reference's
+// Reflection and refraction of the scene's objects (passes/scene_views/scene_view.hpp,
+// shaders/water/scene_lookup.glsl), both methods, against the CPU reference's
 // exact ray trace of the same flat water: a red box stands in the water over a black
 // floor under a sky without red, so the red channel is the box alone (seen directly, in
 // the reflection and through the surface). Plus the needs rules (culled = forced-on) and
 // finite output with the camera grazing the surface and under it.
-#include "engine/render/renderer.hpp"
+#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/metrics/metrics.hpp"

@@ -1,7 +1,7 @@
 // The sky seen directly on the device: the gradient model of scenes/README.md,
 // L = mix(horizon, zenith, dir.y^e) above the horizon, checked at every pixel whose
 // ray rises against vkw::sky_radiance evaluated on that pixel's ray in double.
-#include "engine/render/renderer.hpp"
+#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/reference/reference_renderer.hpp"

@@ -1,4 +1,4 @@
-// The stencil split (passes/water_volume_stencil.hpp) against a CPU classification of the
+// The stencil split (passes/water/water_volume_stencil.hpp) against a CPU classification of the
 // same pixels, and the underwater_view rule's culled image against its forced-on image.
 //
 // CPU rule: the near-plane point P of pixel (x, y)'s ray (through the pixel centre, as
@@ -8,13 +8,13 @@
 // boundary's trace on the near plane (the CPU class of one of the 8 neighbouring pixel
 // centres differs): there fp32 geometry, the grid's chords (below a tenth of a pixel here)
 // and the rasteriser's top-left rule may fall either way.
-#include "engine/render/frame_needs.hpp"
-#include "engine/render/renderer.hpp"
-#include "engine/render/blackboard_keys.hpp"
+#include "passes/frame/frame_needs.hpp"
+#include "passes/frame/renderer.hpp"
+#include "passes/water/water_volume_stencil.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/water/surface.hpp"
 #include "engine/framegraph/pass_context.hpp"
-#include "passes/readback.hpp"
+#include "passes/present/readback.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/reference/reference_renderer.hpp"
 

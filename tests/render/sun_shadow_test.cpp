@@ -1,4 +1,4 @@
-// The sun shadow map (passes/sun_shadow.hpp): a 2 m box standing on a floor with no water,
+// The sun shadow map (passes/receivers/sun_shadow.hpp): a 2 m box standing on a floor with no water,
 // the sun 60 degrees high toward +x. Closed forms of the model (PHYSICS.md section 1), at the
 // pixels that see chosen world points (projected with the frame's own view_proj):
 // - a floor point inside the box's shadow gets skylight only: L = rho pi L_sky / pi;
@@ -7,8 +7,8 @@
 // - under clear water, a box above it shadows the floor's stand-in sun along the refracted beam;
 // - under clear water, a slab under the water shadows the floor along the refracted beam, with
 //   the stand-in and with the caustic map.
-#include "engine/render/frame_constants.hpp"
-#include "engine/render/renderer.hpp"
+#include "passes/common/frame_constants.hpp"
+#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/reference/optics.hpp"

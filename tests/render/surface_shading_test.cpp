@@ -5,7 +5,7 @@
 // ray brings nothing. R is seed 001's power term (1 - E.N)^q, Schlick's approximation or the exact
 // form, evaluated here in double from the pixel's own ray (flat water: the normal is +y).
 #include "engine/core/errors.hpp"
-#include "engine/render/renderer.hpp"
+#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/reference/reference_renderer.hpp"

@@ -4,7 +4,7 @@
 // form within 1e-8); Snell's window's radius measured on the real-time image (section
 // 7); and finite output while the view sweeps through the horizon and with the camera on
 // the water plane.
-#include "engine/render/renderer.hpp"
+#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/reference/reference_renderer.hpp"

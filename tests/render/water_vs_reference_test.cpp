@@ -2,7 +2,7 @@
 // side by side at 64x48, for the scenes where the real-time shading has no
 // approximation left (flat water: the analytic lookups are exact): the error must be
 // fp32 rounding alone. Plus the water rule's culled image against its forced-on image.
-#include "engine/render/renderer.hpp"
+#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/metrics/metrics.hpp"

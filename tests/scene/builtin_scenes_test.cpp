@@ -97,7 +97,7 @@ TEST(scene_builtin, LakeHasEveryReceiverType) {
     EXPECT_EQ(rock.albedo, glm::dvec3(0.45, 0.4, 0.35));  // the glTF material's base colour
     EXPECT_LT(rock.mesh.bounds_min.y, level);
     EXPECT_GT(rock.mesh.bounds_max.y, level);
-    EXPECT_EQ(scene.effects[fg::Effect::CausticBlur].mode, EffectMode::On);
+    EXPECT_EQ(scene.effects[Effect::CausticBlur].mode, EffectMode::On);
 }
 
 }  // namespace

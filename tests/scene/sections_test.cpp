@@ -55,8 +55,8 @@ TEST(scene_camera, DirectionFormLooksAlongTheNormalisedVector) {
 
 TEST(scene_effects, NamedExactlyAsTheFrameGraphNamesThem) {
     for (std::size_t i = 0; i < kEffectCount; ++i) {
-        const auto effect = static_cast<fg::Effect>(i);
-        const std::string name = fg::effect_name(effect);
+        const auto effect = static_cast<Effect>(i);
+        const std::string name = effect_name(effect);
         SCOPED_TRACE(name);
         const Scene scene = with({"effects." + name + ".mode=off"});
         for (std::size_t j = 0; j < kEffectCount; ++j) {

@@ -1,7 +1,7 @@
-// The viewer's camera controller (engine/window/camera_controller.hpp), fed inputs directly:
+// The viewer's camera controller (tools/vkwater/view/camera_controller.hpp), fed inputs directly:
 // exact poses, orbit geometry, the pitch limit against view_matrix's switch of the up vector,
 // eased motion at the stated speeds, and a continuous path through the water surface.
-#include "engine/window/camera_controller.hpp"
+#include "tools/vkwater/view/camera_controller.hpp"
 
 #include <gtest/gtest.h>
 

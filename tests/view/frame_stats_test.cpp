@@ -1,7 +1,7 @@
-// The viewer's measurements (engine/window/frame_stats.hpp): medians, warm-up and
+// The viewer's measurements (tools/vkwater/view/frame_stats.hpp): medians, warm-up and
 // deliberately waiting frames left out of the frame time, per-pass medians over the timing
 // frames each pass ran in.
-#include "engine/window/frame_stats.hpp"
+#include "tools/vkwater/view/frame_stats.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,10 +4,10 @@
 // segment, the curve, the clamp past x = 7.24 and the sun's disk (about 1.5e4). The frame is
 // the renderer's own, ended through the FrameOutput hook the window uses.
 #include "engine/image/tone_curve.hpp"
-#include "engine/render/renderer.hpp"
+#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
-#include "passes/present_tonemap.hpp"
-#include "passes/readback.hpp"
+#include "passes/present/present_tonemap.hpp"
+#include "passes/present/readback.hpp"
 #include "tests/support/gpu_test.hpp"
 
 #include <cmath>

@@ -1,8 +1,8 @@
-// The script format of `vkwater view --script` (engine/window/view_script.hpp): every command
+// The script format of `vkwater view --script` (tools/vkwater/view/view_script.hpp): every command
 // parsed into its fields, commands ordered by frame and by line within a frame, and every
 // malformed line refused with the file, the line and the accepted form.
 #include "engine/core/errors.hpp"
-#include "engine/window/view_script.hpp"
+#include "tools/vkwater/view/view_script.hpp"
 
 #include <gtest/gtest.h>
 

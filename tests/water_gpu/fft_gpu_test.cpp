@@ -1,4 +1,4 @@
-// The GPU inverse FFT (shaders/water/ocean_fft.comp through passes/water_surface_fft.hpp)
+// The GPU inverse FFT (shaders/water/ocean_fft.comp through passes/water/water_surface_fft.hpp)
 // on its own: against a naive double-precision DFT on a 16 x 16 grid, and against the CPU's
 // double FFT (engine/water/fft.hpp) from 32 to 1024 points. The GPU transforms grids of vec4
 // elements, two complex planes each (xy, zw); the tests use several grids so that the grid
@@ -8,7 +8,7 @@
 #include "engine/vk/resources.hpp"
 #include "engine/water/counter_rng.hpp"
 #include "engine/water/fft.hpp"
-#include "passes/water_surface_fft.hpp"
+#include "passes/water/water_surface_fft.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tests/water_gpu/fp32_error.hpp"
 

@@ -1,10 +1,10 @@
-// The GPU FFT ocean (passes/water_surface_ocean.cpp) against the CPU ocean of engine/water:
+// The GPU FFT ocean (passes/water/water_surface_ocean.cpp) against the CPU ocean of engine/water:
 // the GPU evolves the CPU's h0 (uploaded once in fp32), so at vertices on FFT nodes it must
 // reproduce evaluate_ocean_grid to fp32 FFT error, and between nodes the CPU grid's fields
 // interpolated bilinearly (the GPU's sampling) to that plus the interpolation's rounding.
 #include "engine/water/fft_ocean.hpp"
 #include "engine/water/ocean_grid.hpp"
-#include "passes/water_surface_spectrum.hpp"
+#include "passes/water/water_surface_spectrum.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tests/water_gpu/fp32_error.hpp"
 #include "tests/water_gpu/water_gpu_support.hpp"

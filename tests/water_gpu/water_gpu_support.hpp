@@ -6,8 +6,8 @@
 #include "engine/framegraph/executor.hpp"
 #include "engine/vk/resources.hpp"
 #include "engine/water/surface.hpp"
-#include "passes/water_surface.hpp"
-#include "passes/readback.hpp"
+#include "passes/water/water_surface.hpp"
+#include "passes/present/readback.hpp"
 
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>
@@ -20,7 +20,7 @@
 
 namespace vkw::test {
 
-// One vertex as passes/water_surface.hpp lays it out.
+// One vertex as passes/water/water_surface.hpp lays it out.
 struct GpuVertex {
     float position[4];
     float normal[4];

@@ -1,8 +1,8 @@
 // What add_water_surface_pass refuses, and the banding of large grids (no device needed:
 // the checks run while the graph is declared, the banding is a pure function).
 #include "engine/core/errors.hpp"
-#include "passes/water_surface.hpp"
-#include "passes/water_surface_grid.hpp"
+#include "passes/water/water_surface.hpp"
+#include "passes/water/water_surface_grid.hpp"
 
 #include <gtest/gtest.h>
 

@@ -6,8 +6,8 @@
 #include "engine/framegraph/executor.hpp"
 #include "engine/vk/context.hpp"
 #include "engine/water/fft_ocean.hpp"
-#include "passes/water_surface.hpp"
-#include "passes/water_surface_spectrum.hpp"
+#include "passes/water/water_surface.hpp"
+#include "passes/water/water_surface_spectrum.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // double precision at every vertex: sines, Gerstner waves, flat water, run-to-run identity,
 // and a grid large enough to need two storage-buffer bands.
 #include "engine/water/wave_sum_surface.hpp"
-#include "passes/water_surface_grid.hpp"
+#include "passes/water/water_surface_grid.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tests/water_gpu/fp32_error.hpp"
 #include "tests/water_gpu/water_gpu_support.hpp"

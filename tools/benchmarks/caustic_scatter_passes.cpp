@@ -4,8 +4,8 @@
 #include "engine/core/errors.hpp"
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/vk/context.hpp"
-#include "passes/caustics_bands.hpp"
-#include "passes/zeroed_buffer.hpp"
+#include "passes/caustics/caustics_bands.hpp"
+#include "passes/common/zeroed_buffer.hpp"
 
 #include <algorithm>
 

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "engine/framegraph/frame_graph.hpp"
-#include "passes/caustics_light_space.hpp"
+#include "passes/caustics/caustics_light_space.hpp"
 
 #include <string>
 

@@ -4,7 +4,7 @@
 
 #include "engine/framegraph/executor.hpp"
 #include "engine/vk/resources.hpp"
-#include "passes/readback.hpp"
+#include "passes/present/readback.hpp"
 
 #include <set>
 

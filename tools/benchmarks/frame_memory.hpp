@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-#include "engine/render/renderer.hpp"
+#include "passes/frame/renderer.hpp"
 
 namespace vkw::bench {
 

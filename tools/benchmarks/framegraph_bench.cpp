@@ -8,7 +8,7 @@
 #include "engine/vk/check.hpp"
 #include "engine/vk/context.hpp"
 #include "engine/vk/pipeline.hpp"
-#include "passes/readback.hpp"
+#include "passes/present/readback.hpp"
 #include "tools/benchmarks/chain_graph.hpp"
 
 #include <algorithm>

@@ -26,7 +26,7 @@ struct ReferenceOptions {
 };
 
 // The primary ray through pixel (x, y)'s centre, row 0 at the top: the same camera
-// convention as the real-time renderer (engine/render/frame_constants.cpp).
+// convention as the real-time renderer (passes/common/frame_constants.cpp).
 Ray camera_ray(const Camera& camera, uint32_t width, uint32_t height, double x, double y);
 
 // What the reference knows of its own error.

@@ -12,7 +12,7 @@
 // `water.time` (the renderer keeps no clock), so the timed frames and the measured one agree.
 #include "engine/core/errors.hpp"
 #include "engine/image/exr_io.hpp"
-#include "engine/render/renderer.hpp"
+#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
 #include "tools/benchmarks/frame_memory.hpp"

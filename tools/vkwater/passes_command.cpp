@@ -4,13 +4,13 @@
 #include "engine/core/errors.hpp"
 #include "engine/framegraph/frame_graph.hpp"
 #include "engine/image/file_paths.hpp"
-#include "engine/render/frame_needs.hpp"
-#include "engine/render/renderer.hpp"
+#include "passes/frame/frame_needs.hpp"
+#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
 #include "engine/water/fft_ocean.hpp"
-#include "passes/receiver_meshes.hpp"
-#include "passes/water_surface_spectrum.hpp"
+#include "passes/receivers/receiver_meshes.hpp"
+#include "passes/water/water_surface_spectrum.hpp"
 #include "tools/vkwater/commands.hpp"
 
 #include <cstdio>

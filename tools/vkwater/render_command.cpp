@@ -4,7 +4,7 @@
 #include "engine/image/exr_io.hpp"
 #include "engine/image/file_paths.hpp"
 #include "engine/image/png_preview.hpp"
-#include "engine/render/renderer.hpp"
+#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
 #include "tools/metrics/metrics.hpp"

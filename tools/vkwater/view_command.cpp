@@ -1,9 +1,9 @@
-// vkwater view SCENE: the interactive window (engine/window/viewer.hpp): orbit and fly
+// vkwater view SCENE: the interactive window (tools/vkwater/view/viewer.hpp): orbit and fly
 // camera, the parameter panel, the statistics overlay; --frames and --script make a
 // repeatable run that exits with a summary (tests, benchmarks).
 #include "engine/core/errors.hpp"
-#include "engine/window/stats_overlay.hpp"
-#include "engine/window/viewer.hpp"
+#include "tools/vkwater/view/stats_overlay.hpp"
+#include "tools/vkwater/view/viewer.hpp"
 #include "tools/vkwater/commands.hpp"
 
 #include <map>
@@ -56,7 +56,7 @@ Run add_view_command(CLI::App& app) {
         ->capture_default_str();
     command->add_option("--script", args->script,
                         "Run the commands of this file by frame (FRAME: camera|move|resize|set|screenshot|pause|"
-                        "resume|time|mode|reload-shaders|wait-file ...; engine/window/view_script.hpp)");
+                        "resume|time|mode|reload-shaders|wait-file ...; tools/vkwater/view/view_script.hpp)");
     command->add_option("--set", args->viewer.overrides, "Override a scene field: key.path=value (repeatable)");
     command->add_option("--pass-timing-every", args->viewer.timing_every,
                         "Run the scene graph alone every N frames for per-pass times (fence-timed on CPU "

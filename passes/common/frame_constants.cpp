@@ -1,0 +1,51 @@
+#include "passes/common/frame_constants.hpp"
+
+
+#include <cmath>
+#include <cstdlib>
+
+namespace vkw {
+
+FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t height) {
+    const double aspect = static_cast<double>(width) / static_cast<double>(height);
+    const glm::dmat4 view_proj = projection_matrix(scene.camera, aspect) * view_matrix(scene.camera);
+    FrameConstants constants{};
+    constants.view_proj = glm::mat4(view_proj);
+    constants.inv_view_proj = glm::mat4(glm::inverse(view_proj));
+    constants.camera_position = glm::vec4(glm::vec3(scene.camera.position), 1.0f);
+    const bool sun_up = scene.sun.direction.y < 0.0;
+    constants.sun_direction = glm::vec4(glm::vec3(scene.sun.direction), sun_up ? 1.0f : 0.0f);
+    constants.sun_irradiance = glm::vec4(glm::vec3(scene.sun.irradiance), 0.0f);
+    constants.sky_radiance = glm::vec4(glm::vec3(scene.sky.radiance), 0.0f);
+    constants.sky_zenith = glm::vec4(glm::vec3(scene.sky.zenith), 0.0f);
+    constants.sky_horizon = glm::vec4(glm::vec3(scene.sky.horizon), 0.0f);
+    constants.sky_ground = glm::vec4(glm::vec3(scene.sky.ground), 0.0f);
+    constants.sky_params = glm::vec4(scene.sky.model == SkyModel::Gradient ? 1.0f : 0.0f,
+                                     static_cast<float>(scene.sky.exponent), 0.0f, 0.0f);
+    constants.sky_average = glm::vec4(glm::vec3(sky_average_radiance(scene.sky)), 0.0f);
+    constants.sun_disk = glm::vec4(static_cast<float>(std::cos(glm::radians(kSunDiskAngularRadiusDeg))),
+                                   static_cast<float>(kSunDiskSolidAngle), 0.0f, 0.0f);
+    constants.floor_plane = glm::vec4(static_cast<float>(scene.floor.height),
+                                      static_cast<float>(scene.floor.half_extent), 0.0f, 0.0f);
+    constants.floor_albedo = glm::vec4(glm::vec3(scene.floor.albedo), 0.0f);
+    constants.camera_near = glm::vec4(static_cast<float>(scene.camera.near_plane), 0.0f, 0.0f, 0.0f);
+    constants.viewport = glm::vec4(static_cast<float>(width), static_cast<float>(height), 0.0f, 0.0f);
+    constants.medium_sigma_t = glm::vec4(glm::vec3(scene.medium.sigma_t()), 0.0f);
+    constants.medium_sigma_s = glm::vec4(glm::vec3(scene.medium.sigma_s), static_cast<float>(scene.medium.g));
+    constants.medium_options = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);  // the renderer clears x when godrays run
+    if (scene.water) {
+        const Water& water = *scene.water;
+        constants.water = glm::vec4(static_cast<float>(water.level), static_cast<float>(water.ior),
+                                    static_cast<float>(water.half_extent), 1.0f);
+        // Height exactly at the level counts as above the water. This per-frame test is the
+        // fallback for frames whose stencil split is culled (passes/water/water_volume_stencil.hpp
+        // classifies every pixel otherwise).
+        const glm::dvec3 eye = scene.camera.position;
+        const bool inside = eye.y < water.level && eye.y >= water_bottom(scene) &&
+                            std::abs(eye.x) <= water.half_extent && std::abs(eye.z) <= water.half_extent;
+        constants.camera_medium = glm::vec4(inside ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+    }
+    return constants;
+}
+
+}  // namespace vkw

@@ -1,0 +1,215 @@
+#include "passes/frame/frame_needs.hpp"
+
+#include "engine/water/surface.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+namespace vkw {
+namespace {
+
+std::string format(const char* pattern, double a, double b) {
+    char text[160];
+    std::snprintf(text, sizeof text, pattern, a, b);
+    return text;
+}
+
+std::string format(const char* pattern, double a) {
+    char text[160];
+    std::snprintf(text, sizeof text, pattern, a);
+    return text;
+}
+
+// True unless all eight corners of the box lie outside one clip plane (a conservative
+// frustum test: it may keep a box that is just outside a corner of the frustum).
+bool box_may_be_visible(const glm::dmat4& view_proj, const glm::dvec3& lo, const glm::dvec3& hi) {
+    glm::dvec4 corners[8];
+    for (int i = 0; i < 8; ++i) {
+        const glm::dvec3 p{(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z};
+        corners[i] = view_proj * glm::dvec4(p, 1.0);
+    }
+    // Clip space with reversed-Z in [0, 1]: -w <= x, y <= w and 0 <= z <= w.
+    auto all_outside = [&](auto outside) { return std::all_of(std::begin(corners), std::end(corners), outside); };
+    return !(all_outside([](const glm::dvec4& c) { return c.x < -c.w; }) ||
+             all_outside([](const glm::dvec4& c) { return c.x > c.w; }) ||
+             all_outside([](const glm::dvec4& c) { return c.y < -c.w; }) ||
+             all_outside([](const glm::dvec4& c) { return c.y > c.w; }) ||
+             all_outside([](const glm::dvec4& c) { return c.z < 0.0; }) ||
+             all_outside([](const glm::dvec4& c) { return c.z > c.w; }));
+}
+
+// effects.<name>.mode: auto keeps the rule's decision, on/off force it.
+void decide(fg::FrameNeeds& needs, const Scene& scene, Effect effect, bool rule, const std::string& reason) {
+    switch (scene.effects[effect].mode) {
+        case EffectMode::Auto: needs.decide(effect, rule, reason); break;
+        case EffectMode::On: needs.decide(effect, true, "effects." + std::string(effect_name(effect)) + ".mode = on (the rule says: " + reason + ")", true); break;
+        case EffectMode::Off: needs.decide(effect, false, "effects." + std::string(effect_name(effect)) + ".mode = off (the rule says: " + reason + ")", true); break;
+    }
+}
+
+// The vertical span of the receivers whose box overlaps the water's horizontal extent
+// (over the water, they can be seen in it or through it); empty when none does.
+struct ReceiverSpan {
+    bool any = false;
+    double lowest = 1e300, highest = -1e300;
+};
+ReceiverSpan receivers_over_water(const Scene& scene, const WaterBounds& bounds) {
+    ReceiverSpan span;
+    for (const Receiver& receiver : scene.receivers) {
+        const glm::dvec3& lo = receiver.mesh.bounds_min;
+        const glm::dvec3& hi = receiver.mesh.bounds_max;
+        if (hi.x < bounds.lo.x || lo.x > bounds.hi.x || hi.z < bounds.lo.z || lo.z > bounds.hi.z) continue;
+        span.any = true;
+        span.lowest = std::min(span.lowest, lo.y);
+        span.highest = std::max(span.highest, hi.y);
+    }
+    return span;
+}
+
+// Reflection and refraction of the scene's objects (passes/scene_views/scene_view.hpp). The floor and
+// the sky are looked up exactly without them, so the views are needed only for receiver
+// meshes on the side of the surface each ray goes to: reflected rays stay on the camera's
+// side, refracted rays cross to the other. The camera's side may be either when the near
+// plane reaches into the band of the waves.
+void decide_scene_lookups(fg::FrameNeeds& needs, const Scene& scene, const WaterBounds& bounds, bool water_visible,
+                          bool camera_may_be_above, bool camera_may_be_below) {
+    const ReceiverSpan span = receivers_over_water(scene, bounds);
+    const double trough = 2.0 * scene.water->level - bounds.hi.y;  // the surface's lowest point
+    const bool objects_above = span.any && span.highest > trough;
+    const bool objects_below = span.any && span.lowest < bounds.hi.y;
+    const bool reflection = water_visible && ((camera_may_be_above && objects_above) || (camera_may_be_below && objects_below));
+    const bool refraction = water_visible && ((camera_may_be_above && objects_below) || (camera_may_be_below && objects_above));
+    const std::string sides = camera_may_be_above && camera_may_be_below ? "the near plane reaches into the waves"
+                              : camera_may_be_above                      ? "the camera is above the water"
+                                                                         : "the camera is in the water";
+    const std::string objects =
+        !span.any ? "no receiver mesh lies over the water (the floor and the sky are looked up exactly)"
+                  : format("receiver meshes over the water span y = %.3g to %.3g m", span.lowest, span.highest) +
+                        format(" (surface from %.3g to %.3g m)", trough, bounds.hi.y);
+    decide(needs, scene, Effect::Reflection, reflection,
+           !water_visible ? "the water is not in view"
+           : reflection   ? sides + "; " + objects + ": some lie on the reflected rays' side"
+                          : sides + "; " + objects + ": nothing but the floor and sky on the reflected rays' side");
+    decide(needs, scene, Effect::Refraction, refraction,
+           !water_visible ? "the water is not in view"
+           : refraction   ? sides + "; " + objects + ": some lie on the refracted rays' side"
+                          : sides + "; " + objects + ": nothing but the floor and sky on the refracted rays' side");
+}
+
+// Godrays (volume caustics): the sun's refracted beams scattered toward the camera, as lines
+// (passes/godrays/godrays.hpp). They need a lit, scattering medium in view. Under flat water with
+// nothing over it to shadow the beams, the beams are uniform and the shading's analytic
+// in-scatter (PHYSICS.md section 6) is already exact, so the lines would only add their
+// sampling error.
+void decide_godrays(fg::FrameNeeds& needs, const Scene& scene, const WaterBounds& bounds, bool water_visible,
+                    bool sun_up) {
+    const glm::dvec3& sigma_s = scene.medium.sigma_s;
+    const double most = std::max({sigma_s.x, sigma_s.y, sigma_s.z});
+    const bool scatters = most > 0.0;
+    const bool uniform_beams = bounds.hi.y == scene.water->level && !receivers_over_water(scene, bounds).any;
+    decide(needs, scene, Effect::VolumeCaustics, water_visible && sun_up && scatters && !uniform_beams,
+           !water_visible ? "the water is not in view"
+           : !sun_up      ? "the sun is below the horizon"
+           : !scatters    ? "the medium does not scatter (sigma_s = 0 in every channel)"
+           : uniform_beams
+               ? "the water is flat and no object over it shadows the beams: the analytic in-scatter is exact"
+               : format("the sun is up, the water is in view and scatters (sigma_s up to %.3g 1/m)", most, 0.0));
+}
+
+}  // namespace
+
+WaterBounds water_bounds(const Scene& scene) {
+    const Water& water = *scene.water;
+    const double amplitude = make_surface(water.waves, water.level, water.time)->max_amplitude();
+    // Gerstner and choppy waves also move points sideways, by at most the amplitude
+    // bound for the models here; widen the box by it too.
+    return {{-water.half_extent - amplitude, std::min(water_bottom(scene), water.level - amplitude),
+             -water.half_extent - amplitude},
+            {water.half_extent + amplitude, water.level + amplitude, water.half_extent + amplitude}};
+}
+
+std::array<glm::dvec3, 4> near_plane_corners(const Camera& camera, double aspect) {
+    const glm::dmat4 inverse = glm::inverse(projection_matrix(camera, aspect) * view_matrix(camera));
+    std::array<glm::dvec3, 4> corners;
+    for (int i = 0; i < 4; ++i) {
+        const glm::dvec4 p = inverse * glm::dvec4((i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, 1.0, 1.0);  // z = 1: near
+        corners[i] = glm::dvec3(p) / p.w;
+    }
+    return corners;
+}
+
+fg::FrameNeeds decide_frame_needs(const Scene& scene, double aspect) {
+    fg::FrameNeeds needs;
+    if (!scene.water) {
+        decide(needs, scene, Effect::Water, false, "the scene has no water");
+        decide(needs, scene, Effect::UnderwaterView, false, "the scene has no water");
+        decide(needs, scene, Effect::SurfaceCaustics, false, "the scene has no water");
+        decide(needs, scene, Effect::CausticBlur, false, "the scene has no water");
+        decide(needs, scene, Effect::Reflection, false, "the scene has no water");
+        decide(needs, scene, Effect::Refraction, false, "the scene has no water");
+        decide(needs, scene, Effect::VolumeCaustics, false, "the scene has no water");
+        return needs;
+    }
+    const WaterBounds bounds = water_bounds(scene);
+    const glm::dmat4 view_proj = projection_matrix(scene.camera, aspect) * view_matrix(scene.camera);
+    const bool water_visible = box_may_be_visible(view_proj, bounds.lo, bounds.hi);
+    decide(needs, scene, Effect::Water, water_visible,
+           water_visible ? format("the water's box (y from %.3g to %.3g m) is in the view", bounds.lo.y, bounds.hi.y)
+                         : "the water's box lies outside the view frustum");
+
+    // Some pixel's ray starts in the water only if the near-plane rectangle reaches
+    // below the highest crest inside the water's extent (and above its bottom).
+    double lowest = 1e300, highest = -1e300;
+    bool over_water = false;
+    for (const glm::dvec3& corner : near_plane_corners(scene.camera, aspect)) {
+        lowest = std::min(lowest, corner.y);
+        highest = std::max(highest, corner.y);
+        over_water = over_water || (corner.x >= bounds.lo.x && corner.x <= bounds.hi.x && corner.z >= bounds.lo.z &&
+                                    corner.z <= bounds.hi.z);
+    }
+    // Caustics: the sun must be up and a receiver the photons reach (the floor, or a mesh whose
+    // box overlaps the water's extent) below the highest crest; without the water in view nothing
+    // shows them.
+    const bool sun_up = scene.sun.direction.y < 0.0;
+    const bool floor_under = scene.floor.height < bounds.hi.y;
+    const ReceiverSpan meshes = receivers_over_water(scene, bounds);
+    const bool mesh_under = meshes.any && meshes.lowest < bounds.hi.y;
+    // Flat water: the stand-in (with the sun shadow map along the refracted beam) is exact.
+    const bool flat_stand_in = bounds.hi.y == scene.water->level && scene.effects.caustics.analytic_flat;
+    decide(needs, scene, Effect::SurfaceCaustics,
+           water_visible && sun_up && (floor_under || mesh_under) && !flat_stand_in,
+           !water_visible                ? "the water is not in view"
+           : !sun_up                     ? "the sun is below the horizon"
+           : !floor_under && !mesh_under ? "the floor and every receiver mesh lie above the highest crest"
+           : flat_stand_in ? "the water is flat: the flat-surface stand-in is exact (effects.caustics.analytic_flat)"
+           : floor_under   ? format("the sun is up and the floor (y = %.3g m) lies under the water (crest %.3g m)",
+                                    scene.floor.height, bounds.hi.y)
+                           : format("the sun is up and receiver meshes reach under the water (down to y = %.3g m, "
+                                    "crest %.3g m)",
+                                    meshes.lowest, bounds.hi.y));
+    // The blur feeds nothing but the light-space caustic map: needed when the map is and its radius
+    // is not 0.
+    const fg::EffectDecision* caustics = needs.find(Effect::SurfaceCaustics);
+    const bool caustics_run = caustics && caustics->needed;
+    const double blur_radius = scene.effects.caustic_blur.radius;
+    const bool camera_space = scene.effects.caustics.splat == CausticSplat::CameraSpace;
+    decide(needs, scene, Effect::CausticBlur, caustics_run && !camera_space && blur_radius > 0.0,
+           !caustics_run       ? "the caustic passes do not run"
+           : camera_space      ? "the caustics are splatted in camera space (effects.caustics.splat): no map to blur"
+           : blur_radius > 0.0 ? format("the caustic map runs and caustic_blur.radius = %.3g texels", blur_radius)
+                               : "caustic_blur.radius = 0 (no blur)");
+    decide_godrays(needs, scene, bounds, water_visible, sun_up);
+
+    const bool underwater = over_water && lowest < bounds.hi.y && highest > bounds.lo.y;
+    decide(needs, scene, Effect::UnderwaterView, underwater,
+           underwater ? format("the near plane reaches y = %.3g m, below the highest crest at %.3g m", lowest,
+                               bounds.hi.y)
+                      : format("the near plane stays above y = %.3g m, over the highest crest at %.3g m", lowest,
+                               bounds.hi.y));
+    const double trough = 2.0 * scene.water->level - bounds.hi.y;
+    decide_scene_lookups(needs, scene, bounds, water_visible, !over_water || highest >= trough, underwater);
+    return needs;
+}
+
+}  // namespace vkw

@@ -1,0 +1,417 @@
+#include "passes/frame/renderer.hpp"
+
+#include "engine/core/errors.hpp"
+#include "passes/caustics/caustic_layer.hpp"
+#include "passes/caustics/caustics_camera_splats.hpp"
+#include "passes/caustics/caustics_resolve.hpp"
+#include "passes/common/frame_keys.hpp"
+#include "passes/receivers/sun_shadow.hpp"
+#include "passes/frame/frame_needs.hpp"
+#include "engine/vk/context.hpp"
+#include "passes/caustics/caustics_camera_receivers.hpp"
+#include "passes/caustics/caustics_camera_splats.hpp"
+#include "passes/caustics/caustics_photons.hpp"
+#include "passes/caustics/caustics_resolve.hpp"
+#include "passes/receivers/floor.hpp"
+#include "passes/common/frame_constants_upload.hpp"
+#include "passes/godrays/godrays.hpp"
+#include "passes/caustics/caustics_blur.hpp"
+#include "passes/caustics/caustics_procedural.hpp"
+#include "passes/present/readback.hpp"
+#include "passes/receivers/receiver_meshes.hpp"
+#include "passes/receivers/receivers.hpp"
+#include "passes/water/scene_optics.hpp"
+#include "passes/scene_views/scene_view.hpp"
+#include "passes/sky/sky.hpp"
+#include "passes/receivers/sun_shadow.hpp"
+#include "passes/water/water_shading.hpp"
+#include "passes/water/water_surface.hpp"
+#include "passes/water/water_surface_spectrum.hpp"
+#include "passes/water/water_volume_stencil.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <optional>
+
+namespace vkw {
+
+namespace {
+// Texels per side of the light-space caustic map: matched to the photon grid (R photons
+// per side, plus the fit's one-texel border), so that each texel receives about one
+// photon on flat water and the 2x2 splat kernel leaves no holes between photons (the
+// photon-density sizing of the splat, seed 000's point size regulation, comes later).
+// The caustic map's texels per side: map_scale texels per water cell, plus a texel of border on
+// each side (scale 1: texel = cell, passes/caustics/caustics_light_space.hpp).
+uint32_t caustic_map_texels(uint32_t grid_resolution, double map_scale) {
+    const auto texels = static_cast<uint32_t>(std::lround(grid_resolution * map_scale));
+    return std::clamp(texels + 2, 16u, 16384u);
+}
+
+VkDeviceSize hdr_bytes(uint32_t width, uint32_t height) { return VkDeviceSize{width} * height * 4 * sizeof(float); }
+
+// Texels per side of the sun shadow map: 1024 resolves about 2 cm over the default 20 m floor.
+constexpr uint32_t kSunShadowTexels = 1024;
+
+// The sun's direction under the flat surface (Snell; the sun is above the horizon, so it
+// always enters).
+glm::dvec3 refracted_sun(const Scene& scene) {
+    const glm::dvec3 s = scene.sun.direction;
+    const double eta = 1.0 / scene.water->ior;
+    const double cos_i = -s.y;
+    const double cos_t = std::sqrt(1.0 - eta * eta * (1.0 - cos_i * cos_i));
+    return glm::normalize(eta * s + (eta * cos_i - cos_t) * glm::dvec3(0.0, 1.0, 0.0));
+}
+
+// The views' clip planes (the scene views, the camera-space caustics' receivers): the waves'
+// amplitude and a millimetre beyond the mean level.
+float scene_view_clip_margin(const Scene& scene) {
+    return static_cast<float>(water_bounds(scene).hi.y - scene.water->level + 1e-3);
+}
+
+bool casts_sun_shadows(const Scene& scene, const passes::ReceiverMeshes* receivers) {
+    return receivers && !receivers->empty() && scene.sun.direction.y < 0.0;
+}
+// The scene views the water's reflected and refracted rays look the receiver meshes up in
+// (passes/scene_views/scene_view.hpp), as the frame's needs and the scene's methods ask.
+passes::WaterSceneLookups scene_lookups(fg::FrameGraph& graph, const Scene& scene,
+                                        const passes::ReceiverMeshes* receivers, bool caustic_layer) {
+    passes::WaterSceneLookups lookups;
+    if (!receivers || receivers->empty()) return lookups;
+    const EffectSettings& reflection = scene.effects[Effect::Reflection];
+    const EffectSettings& refraction = scene.effects[Effect::Refraction];
+    const float clip_margin = scene_view_clip_margin(scene);
+    if (graph.needs().needs(Effect::Reflection)) {
+        const bool mirrored = reflection.method == SceneLookup::Projective;
+        lookups.reflection_view = passes::add_scene_view_pass(
+            graph, *receivers, {mirrored ? "mirrored reflection view" : "reflection view", mirrored, true, clip_margin});
+    }
+    if (graph.needs().needs(Effect::Refraction)) {
+        lookups.refraction_view =
+            passes::add_scene_view_pass(graph, *receivers, {"refraction view", false, false, clip_margin, caustic_layer});
+    }
+    lookups.reflection_method = reflection.method;
+    lookups.refraction_method = refraction.method;
+    lookups.reflection_steps = reflection.max_steps;
+    lookups.refraction_steps = refraction.max_steps;
+    lookups.shallow_blend = static_cast<float>(refraction.shallow_blend);
+    // A march with no floor to end it looks as far as across the scene's squares twice.
+    lookups.scene_size = static_cast<float>(4.0 * std::max(scene.floor.half_extent, scene.water->half_extent));
+    return lookups;
+}
+
+}  // namespace
+
+void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
+                       uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
+                       const passes::ReceiverMeshes* receivers, const FrameOutput* output, VkBuffer caustic_readback) {
+    const bool caustic_layer = caustic_readback != VK_NULL_HANDLE && !output;
+    passes::add_frame_constants_upload(graph, constants);
+    passes::add_scene_optics_pass(graph);
+    // The sun shadow map first: the caustic photons are traced against it.
+    std::optional<passes::SunShadowMap> sun_shadow;
+    if (casts_sun_shadows(scene, receivers)) {
+        // Everything that can receive the sun above the water: the meshes and the floor square.
+        passes::SunShadowInputs shadow;
+        shadow.sun_direction = scene.sun.direction;
+        const double e = scene.floor.half_extent;
+        shadow.bounds_lo = glm::min(receivers->bounds_lo(), glm::dvec3(-e, scene.floor.height, -e));
+        shadow.bounds_hi = glm::max(receivers->bounds_hi(), glm::dvec3(e, scene.floor.height, e));
+        shadow.size = kSunShadowTexels;
+        if (scene.water) shadow.beam = passes::UnderwaterBeam{refracted_sun(scene), scene.water->level};
+        sun_shadow = passes::add_sun_shadow_pass(graph, *receivers, shadow);
+        graph.blackboard().put(keys::kSunShadow, *sun_shadow);
+    }
+    // The surface grid comes first: the stencil split, which the floor reads, draws it.
+    std::optional<fg::BufferHandle> surface;
+    if (scene.water && graph.needs().needs(Effect::Water)) {
+        const Water& water = *scene.water;
+        passes::WaterSurfaceInputs inputs{water.level, water.half_extent, water.grid_resolution, water.time,
+                                          water.waves, ocean};
+        surface = passes::add_water_surface_pass(graph, inputs);
+        // Without it (culled: no ray can start in the water) the shading falls back to the
+        // per-frame camera medium of the frame constants.
+        if (graph.needs().needs(Effect::UnderwaterView)) {
+            passes::add_water_volume_stencil_passes(graph, *surface, water.grid_resolution, water_bottom(scene));
+        }
+        if (graph.needs().needs(Effect::SurfaceCaustics)) {
+            // The sun under the water becomes the caustic map; the flat stand-in goes.
+            passes::CausticInputs caustics;
+            caustics.surface = *surface;
+            caustics.grid_resolution = water.grid_resolution;
+            caustics.water_level = water.level;
+            caustics.half_extent = water.half_extent;
+            caustics.max_amplitude = water_bounds(scene).hi.y - water.level;
+            caustics.sun_direction = scene.sun.direction;
+            caustics.sun_irradiance = scene.sun.irradiance;
+            caustics.ior = water.ior;
+            caustics.sigma_t = scene.medium.sigma_t();
+            caustics.floor_height = scene.floor.height;
+            caustics.sub_photons = scene.effects.caustics.sub_photons;
+            caustics.jitter = scene.effects.caustics.jitter;
+            caustics.kernel = scene.effects.caustics.kernel;
+            caustics.map_width = caustics.map_height =
+                caustic_map_texels(water.grid_resolution, scene.effects.caustics.map_scale);
+            if (scene.effects.caustics.splat == CausticSplat::CameraSpace) {
+                // The photons onto the receivers the camera sees (the light-space map and its blur
+                // are left out: nothing reads them).
+                const passes::CameraCausticExtent extent = passes::camera_caustic_extent(width, height);
+                const fg::ImageHandle view =
+                    passes::add_caustic_receivers_pass(graph, receivers, extent, scene_view_clip_margin(scene));
+                graph.blackboard().put(keys::kCameraCaustics,
+                                       passes::add_caustic_camera_splat_passes(graph, caustics, view, extent,
+                                                                               sun_shadow ? &*sun_shadow : nullptr));
+            } else {
+                passes::CausticMap map =
+                    scene.effects.caustics.method == CausticMethod::Procedural
+                        ? passes::add_caustic_procedural_pass(graph, caustics)
+                        : passes::add_caustic_resolve_pass(
+                              graph, passes::add_caustic_photon_pass(graph, caustics, sun_shadow ? &*sun_shadow : nullptr),
+                              caustics);
+                if (graph.needs().needs(Effect::CausticBlur)) {
+                    map = passes::add_caustic_blur_pass(graph, map, caustics, scene.effects.caustic_blur.radius);
+                }
+                graph.blackboard().put(keys::kCausticMap, map);
+            }
+        }
+    }
+    // The sky after the stencil split: a ray from the water that meets nothing sees nothing.
+    passes::add_sky_pass(graph);
+    passes::add_floor_pass(graph, caustic_layer);
+    if (receivers && !receivers->empty()) passes::add_receivers_pass(graph, *receivers);
+    if (surface) {
+        passes::add_water_shading_pass(graph, *surface, scene.water->grid_resolution,
+                                       scene_lookups(graph, scene, receivers, caustic_layer),
+                                       passes::water_surface_shading(scene.effects.water));
+    }
+    // Godrays only with a decision, as the frame constants' analytic in-scatter switch has it.
+    const fg::EffectDecision* godrays = graph.needs().find(Effect::VolumeCaustics);
+    if (surface && godrays && godrays->needed) {
+        passes::add_godray_passes(graph, {*surface, scene.water->grid_resolution,
+                                          water_bounds(scene).hi.y - scene.water->level, scene.effects.godrays,
+                                          width, height});
+    }
+    if (output) {
+        output->add_passes(graph, graph.blackboard().get(keys::kHdrColor));
+        return;
+    }
+    passes::add_readback_pass(graph, graph.blackboard().get(keys::kHdrColor), readback, hdr_bytes(width, height));
+    if (caustic_layer) {
+        passes::add_readback_pass(graph, graph.blackboard().get(keys::kCausticLayer), caustic_readback,
+                                  hdr_bytes(width, height), "caustic layer readback");
+    }
+}
+
+// Everything that depends on the configuration; destroyed in reverse order.
+struct Renderer::CompiledFrame {
+    std::string configuration;
+    Buffer readback;
+    Buffer caustic_readback;  // RenderOptions::caustic_layer only
+    std::unique_ptr<fg::FrameGraph> graph;
+    std::unique_ptr<fg::FrameExecutor> executor;
+};
+
+// The water settings that shape the graph (its passes and their push constants); time
+// and amplitudes of a wave sum are per-frame data the passes capture at declaration,
+// so they are part of it too until those passes read them at record time.
+std::string Renderer::water_configuration(const Scene& scene) {
+    if (!scene.water) return "no water";
+    const Water& water = *scene.water;
+    std::string key = std::to_string(water.grid_resolution) + " " + std::to_string(int(water.waves.model)) + " " +
+                      std::to_string(water.time) + " " + std::to_string(water.level) + " " +
+                      std::to_string(water.half_extent) + " " + std::to_string(water.waves.components.size());
+    // The caustic passes capture the light and the medium at declaration too.
+    key += " sun " + std::to_string(scene.sun.direction.x) + "," + std::to_string(scene.sun.direction.y) + "," +
+           std::to_string(scene.sun.direction.z) + " " + std::to_string(scene.sun.irradiance.x) + "," +
+           std::to_string(scene.sun.irradiance.y) + "," + std::to_string(scene.sun.irradiance.z) + " ior " +
+           std::to_string(water.ior) + " floor " + std::to_string(scene.floor.height) + " sigma_t " +
+           std::to_string(scene.medium.sigma_t().x) + "," + std::to_string(scene.medium.sigma_t().y) + "," +
+           std::to_string(scene.medium.sigma_t().z);
+    // The photon pass captures its sampling and its splat kernel at declaration.
+    const CausticSettings& caustics = scene.effects.caustics;
+    key += " photons " + std::to_string(int(caustics.method)) + "/" + std::to_string(caustics.sub_photons) + "/" + std::to_string(int(caustics.jitter)) + "/" +
+           std::to_string(int(caustics.splat)) + "/" +
+           std::to_string(int(caustics.kernel)) + "/" + std::to_string(caustics.map_scale) + " blur " +
+           std::to_string(scene.effects.caustic_blur.radius);
+    // The water pass captures its shading model at declaration.
+    const WaterShadingSettings& shading = scene.effects.water;
+    key += " shading " + std::to_string(int(shading.fresnel)) + "/" + std::to_string(shading.fresnel_power);
+    if (shading.depth_blend) {
+        key += "/" + std::to_string(shading.depth_blend->colour.x) + "," + std::to_string(shading.depth_blend->colour.y) +
+               "," + std::to_string(shading.depth_blend->colour.z) + "/" + std::to_string(shading.depth_blend->k);
+    }
+    // The water pass and the scene views capture the lookup methods at declaration.
+    for (const Effect effect : {Effect::Reflection, Effect::Refraction}) {
+        key += " " + std::to_string(int(scene.effects[effect].method)) + "/" + std::to_string(scene.effects[effect].max_steps) +
+               "/" + std::to_string(scene.effects[effect].shallow_blend);
+    }
+    for (const WaveComponent& wave : water.waves.components) {
+        key += " " + std::to_string(wave.amplitude) + "," + std::to_string(wave.wavelength) + "," +
+               std::to_string(wave.direction_deg) + "," + std::to_string(wave.phase_deg) + "," +
+               std::to_string(wave.steepness) + "," + std::to_string(wave.speed);
+    }
+    return key;
+}
+
+// The sun shadow pass captures its fit (the sun and the floor square; the meshes are
+// covered by receiver_meshes) at declaration.
+std::string Renderer::sun_shadow_configuration(const Scene& scene) {
+    return "shadow " + std::to_string(scene.sun.direction.x) + "," + std::to_string(scene.sun.direction.y) + "," +
+           std::to_string(scene.sun.direction.z) + " floor " + std::to_string(scene.floor.height) + "," +
+           std::to_string(scene.floor.half_extent);
+}
+
+const passes::OceanSpectrumBuffer* Renderer::ocean_spectrum(const Scene& scene) {
+    if (!scene.water || scene.water->waves.model != WaveModel::FftOcean) return nullptr;
+    const FftOceanSettings& o = scene.water->waves.ocean;
+    const std::string key = std::to_string(o.resolution) + " " + std::to_string(o.patch_size) + " " +
+                            std::to_string(o.wind_speed) + " " + std::to_string(o.wind_direction_deg) + " " +
+                            std::to_string(int(o.spectrum)) + " " + std::to_string(o.fetch) + " " +
+                            std::to_string(o.amplitude_scale) + " " + std::to_string(scene.water->waves.seed);
+    if (!ocean_ || key != ocean_key_) {
+        frame_.reset();  // the compiled frame imported the old buffer
+        ocean_ = std::make_unique<passes::OceanSpectrumBuffer>(
+            context_, std::make_shared<const FftOceanSpectrum>(make_ocean_spectrum(o, scene.water->waves.seed)));
+        ocean_key_ = key;
+    }
+    return ocean_.get();
+}
+
+const passes::ReceiverMeshes* Renderer::receiver_meshes(const Scene& scene) {
+    if (scene.receivers.empty()) return nullptr;
+    // Receivers are static: the meshes are uploaded once per scene object and count.
+    if (!receivers_ || receivers_source_ != &scene || receivers_count_ != scene.receivers.size()) {
+        frame_.reset();  // the compiled frame imported the old buffers
+        receivers_ = std::make_unique<passes::ReceiverMeshes>(context_, scene.receivers);
+        receivers_source_ = &scene;
+        receivers_count_ = scene.receivers.size();
+    }
+    return receivers_.get();
+}
+
+Renderer::Renderer(Context& context) : context_(context), constants_(std::make_unique<FrameConstants>()) {}
+
+Renderer::~Renderer() = default;
+
+RenderResult Renderer::render(const Scene& scene, const RenderOptions& options) {
+    CompiledFrame& frame = prepare(scene, options, nullptr);
+    RenderResult result;
+    result.timing = frame.executor->execute();
+    result.image.width = static_cast<int>(options.width);
+    result.image.height = static_cast<int>(options.height);
+    result.image.rgba.resize(size_t{options.width} * options.height * 4);
+    std::memcpy(result.image.rgba.data(), frame.readback.mapped(), result.image.rgba.size() * sizeof(float));
+    if (options.caustic_layer) {
+        // RGBA on the device, RGB in the image's layer (the alpha holds nothing).
+        const auto* rgba = static_cast<const float*>(frame.caustic_readback.mapped());
+        ExtraLayer layer{"caustic", std::vector<float>(size_t{options.width} * options.height * 3)};
+        for (size_t i = 0; i < size_t{options.width} * options.height; ++i) {
+            for (int c = 0; c < 3; ++c) layer.rgb[3 * i + c] = rgba[4 * i + c];
+        }
+        result.image.layers.push_back(std::move(layer));
+    }
+    return result;
+}
+
+fg::FrameExecutor& Renderer::prepare_frame(const Scene& scene, const RenderOptions& options,
+                                           const FrameOutput& output) {
+    return *prepare(scene, options, &output).executor;
+}
+
+void Renderer::reload_shaders() {
+    vkDeviceWaitIdle(context_.device());
+    frame_.reset();
+    pipelines_ = fg::PipelineStore{};
+}
+
+Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptions& options,
+                                           const FrameOutput* output) {
+    const uint32_t max_size = context_.properties().limits.maxImageDimension2D;
+    if (options.width == 0 || options.height == 0 || options.width > max_size || options.height > max_size) {
+        throw UserError("--width/--height: " + std::to_string(options.width) + "x" + std::to_string(options.height) +
+                        " is out of range (accepted: 1 to " + std::to_string(max_size) + " on '" +
+                        context_.device_name() + "')");
+    }
+    if (scene.water) {
+        // The surface grid must fit the device: a quarter of its largest heap at most, so
+        // the frame's other targets fit beside it, and one storage-buffer binding (the water
+        // and stencil passes pull every vertex through one).
+        VkPhysicalDeviceMemoryProperties memory;
+        vkGetPhysicalDeviceMemoryProperties(context_.physical_device(), &memory);
+        VkDeviceSize largest_heap = 0;
+        for (uint32_t i = 0; i < memory.memoryHeapCount; ++i) largest_heap = std::max(largest_heap, memory.memoryHeaps[i].size);
+        const VkDeviceSize limit =
+            std::min<VkDeviceSize>(largest_heap / 4, context_.properties().limits.maxStorageBufferRange);
+        uint32_t largest_grid = 1;
+        while (passes::water_surface_bytes(largest_grid * 2) <= limit) largest_grid *= 2;
+        if (passes::water_surface_bytes(scene.water->grid_resolution) > limit) {
+            throw UserError(scene.source.string() + ": water.grid_resolution: " +
+                            std::to_string(scene.water->grid_resolution) + " needs " +
+                            std::to_string(passes::water_surface_bytes(scene.water->grid_resolution) >> 20) +
+                            " MiB of surface vertices (accepted on '" + context_.device_name() + "': up to about " +
+                            std::to_string(largest_grid) + ")");
+        }
+    }
+    if (scene.water && scene.effects.caustics.splat == CausticSplat::CameraSpace) {
+        // The camera-space splats' flux buffer is one storage binding.
+        const passes::CameraCausticExtent extent = passes::camera_caustic_extent(options.width, options.height);
+        const VkDeviceSize range = context_.properties().limits.maxStorageBufferRange;
+        const double bytes_per_pixel =
+            double(passes::camera_caustic_flux_bytes(extent)) / (double(options.width) * options.height);
+        if (passes::camera_caustic_flux_bytes(extent) > range) {
+            throw UserError(scene.source.string() + ": effects.caustics.splat: camera-space splats at " +
+                            std::to_string(options.width) + "x" + std::to_string(options.height) + " need " +
+                            std::to_string(passes::camera_caustic_flux_bytes(extent) >> 20) +
+                            " MiB of flux in one storage binding (accepted on '" + context_.device_name() +
+                            "': up to " + std::to_string(range >> 20) + " MiB, about " +
+                            std::to_string(static_cast<uint64_t>(double(range) / bytes_per_pixel / 1e3)) +
+                            " thousand output pixels; or splat light-space)");
+        }
+    }
+    fg::FrameNeeds needs = decide_frame_needs(scene, double(options.width) / double(options.height));
+    // Everything the graph's shape depends on; the rest reaches it through the constants.
+    const std::string configuration = water_configuration(scene) + " " + sun_shadow_configuration(scene) + " " +
+                                      std::to_string(options.width) + "x" +
+                                      std::to_string(options.height) + " " +
+                                      needs.key() + " " + std::to_string(int(options.recording)) + " " +
+                                      std::to_string(int(options.check_finite)) + " " +
+                                      std::to_string(int(options.timing)) + " layer " +
+                                      std::to_string(int(options.caustic_layer)) + " " +
+                                      passes::godray_configuration(scene.effects.godrays) + " output " +
+                                      (output ? output->key : std::string("readback"));
+    *constants_ = make_frame_constants(scene, options.width, options.height);
+    // Counted once (PHYSICS.md section 1): the godray passes, when they run, are the
+    // in-scatter of sunlight, and the shading's analytic in-scatter is switched off. (An
+    // effect without a decision counts as needed; godrays have passes only once decided.)
+    const fg::EffectDecision* godrays = needs.find(Effect::VolumeCaustics);
+    if (godrays && godrays->needed) constants_->medium_options.x = 0.0f;
+    const passes::OceanSpectrumBuffer* ocean = ocean_spectrum(scene);
+    const passes::ReceiverMeshes* receivers = receiver_meshes(scene);
+
+    if (!frame_ || frame_->configuration != configuration) {
+        frame_.reset();  // release the old graph's resources before making new ones
+        auto frame = std::make_unique<CompiledFrame>();
+        frame->configuration = configuration;
+        if (!output) {
+            frame->readback = Buffer(context_, {hdr_bytes(options.width, options.height), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
+                                     "HDR readback");
+            if (options.caustic_layer) {
+                frame->caustic_readback =
+                    Buffer(context_, {hdr_bytes(options.width, options.height), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
+                           "caustic layer readback");
+            }
+        }
+        frame->graph = std::make_unique<fg::FrameGraph>(std::move(needs));
+        frame->graph->set_default_recording(options.recording);
+        build_frame_graph(*frame->graph, scene, constants_.get(), options.width, options.height,
+                          frame->readback.handle(), ocean, receivers, output, frame->caustic_readback.handle());
+        frame->graph->compile(options.width, options.height);
+        ++compile_count_;
+        frame->executor = std::make_unique<fg::FrameExecutor>(context_, *frame->graph, pipelines_,
+                                                              fg::ExecutorOptions{options.check_finite, options.timing});
+        frame_ = std::move(frame);
+    }
+    return *frame_;
+}
+
+}  // namespace vkw

@@ -1,0 +1,104 @@
+// Renders a scene offscreen: decides the frame's needs, builds and compiles the frame
+// graph, runs it on the device and reads the HDR image back. The compiled graph and
+// its resources are kept and reused while the configuration (output size, needs,
+// recording kind, check and timing modes) stays the same; only the frame constants
+// change between such frames.
+#pragma once
+
+#include "engine/framegraph/executor.hpp"
+#include "engine/framegraph/frame_graph.hpp"
+#include "engine/image/image.hpp"
+#include "passes/common/frame_constants.hpp"
+#include "engine/scene/scene.hpp"
+#include "engine/vk/resources.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace vkw {
+
+class Context;
+
+struct RenderOptions {
+    uint32_t width = 800;
+    uint32_t height = 600;
+    bool check_finite = false;
+    // Tests use None: one submission, which synchronization validation can check whole.
+    fg::TimingMode timing = fg::TimingMode::Auto;
+    fg::RecordingKind recording = fg::RecordingKind::DynamicRendering;
+    // Also render the caustic layer (passes/caustics/caustic_layer.hpp) into the image's layer "caustic".
+    bool caustic_layer = false;
+};
+
+struct RenderResult {
+    ImageRGBA32F image;
+    fg::FrameReport timing;
+};
+
+namespace passes {
+class OceanSpectrumBuffer;
+class ReceiverMeshes;
+}
+
+// The last passes of a frame in place of the readback, for a caller that keeps or shows the
+// image itself (the window hands the HDR colour on to its present graph). `key` stands for
+// what `add_passes` declares in the renderer's configuration: a different key compiles anew.
+struct FrameOutput {
+    std::string key;
+    std::function<void(fg::FrameGraph& graph, fg::ImageHandle hdr)> add_passes;
+};
+
+// Declares every pass of a frame into `graph`. `constants` is read at record time.
+// The readback target is `readback` (VK_NULL_HANDLE when the graph is only printed);
+// `ocean` is the device copy of an FFT ocean's spectrum (nullptr for other waves);
+// `receivers` the scene's receiver meshes on the device (nullptr when it has none);
+// `output`, when given, ends the frame instead of the readback (which is then unused);
+// `caustic_readback`, when given (and no `output`), receives the caustic layer
+// (passes/caustics/caustic_layer.hpp), which the frame then renders.
+void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
+                       uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
+                       const passes::ReceiverMeshes* receivers, const FrameOutput* output = nullptr,
+                       VkBuffer caustic_readback = VK_NULL_HANDLE);
+
+class Renderer {
+public:
+    explicit Renderer(Context& context);
+    ~Renderer();
+    RenderResult render(const Scene& scene, const RenderOptions& options);
+
+    // The frame render() runs, with `output`'s passes instead of the readback, compiled (or
+    // reused, as render() does) and handed to a caller that runs it alone (execute(): the
+    // per-pass times) or records it into its own submission (record(cmd): the window's
+    // frames, with its swapchain semaphores). Valid until the next call.
+    fg::FrameExecutor& prepare_frame(const Scene& scene, const RenderOptions& options, const FrameOutput& output);
+    // Waits for the device, then forgets the compiled frame and every pipeline, so that the
+    // next frame re-reads the .spv files (the window's shader reload).
+    void reload_shaders();
+
+    // Pipelines created so far; culled passes never add one.
+    const fg::PipelineStore& pipelines() const { return pipelines_; }
+    // How many times a frame graph was compiled (once per configuration).
+    size_t compile_count() const { return compile_count_; }
+
+private:
+    struct CompiledFrame;
+    CompiledFrame& prepare(const Scene& scene, const RenderOptions& options, const FrameOutput* output);
+    static std::string water_configuration(const Scene& scene);
+    static std::string sun_shadow_configuration(const Scene& scene);
+    const passes::OceanSpectrumBuffer* ocean_spectrum(const Scene& scene);
+    const passes::ReceiverMeshes* receiver_meshes(const Scene& scene);
+    Context& context_;
+    fg::PipelineStore pipelines_;
+    std::unique_ptr<FrameConstants> constants_;  // stable address, read when the frame records
+    std::unique_ptr<CompiledFrame> frame_;
+    std::unique_ptr<passes::OceanSpectrumBuffer> ocean_;  // the FFT ocean's h0 on the device
+    std::string ocean_key_;                               // the settings it was made for
+    std::unique_ptr<passes::ReceiverMeshes> receivers_;   // the scene's receiver meshes on the device
+    const void* receivers_source_ = nullptr;              // the scene whose receivers they are
+    size_t receivers_count_ = 0;
+    size_t compile_count_ = 0;
+};
+
+}  // namespace vkw

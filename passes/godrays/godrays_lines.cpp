@@ -1,0 +1,88 @@
+// add_godray_lines_passes (godrays_lines.hpp).
+#include "passes/godrays/godrays_lines.hpp"
+
+#include "engine/framegraph/pass_context.hpp"
+#include "engine/scene/effects.hpp"
+#include "passes/common/zeroed_buffer.hpp"
+#include "passes/common/frame_keys.hpp"
+#include "passes/water/water_volume_stencil.hpp"
+
+#include <algorithm>
+
+namespace vkw::passes {
+namespace {
+
+constexpr uint32_t kGroupSide = 8;  // local_size of godray_lines.comp
+constexpr uint32_t kViews = 3;      // direct, mirrored, refracted: gl_GlobalInvocationID.z
+
+// Mirrors the push constants of shaders/godrays/godray_lines.comp.
+struct GodrayLinesPush {
+    uint32_t grid, per_pixel_medium;
+    float max_amplitude;
+    int32_t levels;
+};
+
+}  // namespace
+
+uint32_t godray_pyramid_levels(uint32_t width, uint32_t height) {
+    // The coarsest level keeps four to eight pixels on the longer side: wider beams (next to the
+    // camera) deposit there too, over more of its pixels, so that their light still varies across
+    // the image as the directions it is seen from do.
+    uint32_t levels = 1;
+    while ((std::max(width, height) >> (levels + 2)) > 0) ++levels;
+    return levels;
+}
+
+VkDeviceSize godray_pyramid_bytes(uint32_t width, uint32_t height) {
+    VkDeviceSize pixels = 0;
+    for (uint32_t level = 0; level < godray_pyramid_levels(width, height); ++level) {
+        const uint32_t cell = 1u << level;
+        pixels += VkDeviceSize{(width + cell - 1) / cell} * ((height + cell - 1) / cell);
+    }
+    return 2 * pixels * 3 * sizeof(uint64_t);  // the straight and the mirrored pyramid
+}
+
+fg::BufferHandle add_godray_lines_passes(fg::FrameGraph& graph, const GodrayLineInputs& inputs) {
+    const VkDeviceSize bytes = godray_pyramid_bytes(inputs.width, inputs.height);
+
+    const fg::BufferHandle cleared =
+        add_zeroed_buffer_pass(graph, "godray clear", "godray radiance", bytes, Effect::VolumeCaustics);
+
+    GodrayLinesPush push{};
+    push.grid = inputs.grid;
+    push.per_pixel_medium = graph.blackboard().has(keys::kCameraMedium) ? 1u : 0u;
+    push.max_amplitude = static_cast<float>(inputs.max_amplitude);
+    push.levels = static_cast<int32_t>(godray_pyramid_levels(inputs.width, inputs.height));
+    struct Data {
+        fg::BufferHandle constants, beams, radiance;
+        fg::ImageHandle view_depth;
+    };
+    const auto& data = graph.add_pass<Data>(
+        "godray lines", fg::PassKind::Compute,
+        [&](fg::PassBuilder& builder, Data& d) {
+            builder.serves(Effect::VolumeCaustics);
+            const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+            d.constants = builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants), stage);
+            d.beams = builder.read_storage(inputs.beams, stage);
+            d.view_depth = builder.sample(inputs.view_depth, stage);
+            d.radiance = builder.read_write_storage(cleared, stage);
+        },
+        [push](const Data& d, fg::PassContext& context) {
+            ComputePipelineDesc desc;
+            desc.shader = "godrays/godray_lines.comp";
+            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
+                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
+                                    {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
+                                    {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
+            desc.layout.push_constant_bytes = sizeof(GodrayLinesPush);
+            const Pipeline& pipeline = context.pipeline("godray lines", desc);
+            context.bind(pipeline, {context.uniform_buffer(0, d.constants), context.storage_buffer(1, d.beams),
+                                    context.sampled_nearest(2, d.view_depth), context.storage_buffer(3, d.radiance)});
+            context.push_constants(pipeline, push);
+            const uint32_t groups = (push.grid + kGroupSide - 1) / kGroupSide;
+            vkCmdDispatch(context.cmd(), groups, groups, kViews);
+        });
+    return data.radiance;
+}
+
+}  // namespace vkw::passes

@@ -1,0 +1,47 @@
+#include "passes/receivers/floor.hpp"
+
+#include "engine/framegraph/pass_context.hpp"
+#include "passes/common/frame_keys.hpp"
+#include "passes/caustics/caustic_layer.hpp"
+#include "passes/receivers/lighting_inputs.hpp"
+#include "passes/receivers/receiver_draws.hpp"
+
+namespace vkw::passes {
+
+void add_floor_pass(fg::FrameGraph& graph, bool caustic_layer) {
+    struct Data {
+        fg::ImageHandle hdr;
+        fg::ImageHandle depth;
+        LightingInputs lighting;
+        CausticLayerTarget layer;
+    };
+    const auto& data = graph.add_pass<Data>(
+        "floor", fg::PassKind::Graphics,
+        [&](fg::PassBuilder& builder, Data& d) {
+            d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
+            if (caustic_layer) d.layer.create(builder, "caustic layer", {VK_FORMAT_R32G32B32A32_SFLOAT});
+            d.depth = builder.create_image("scene depth", {VK_FORMAT_D32_SFLOAT});
+            d.depth = builder.depth_stencil_attachment(d.depth, fg::LoadOp::Clear, {.depth = 0.0f});
+            d.lighting.declare(builder, graph.blackboard());
+        },
+        [](const Data& d, fg::PassContext& context) {
+            GraphicsPipelineDesc desc;
+            desc.vertex_shader = "receivers/floor.vert";
+            desc.fragment_shader = d.lighting.shader("receivers/receiver.frag") + d.layer.variant();
+            d.lighting.add_layout(desc.layout.bindings);
+            desc.layout.push_constant_bytes = sizeof(ReceiverPush);
+            desc.depth_test = true;
+            desc.depth_write = true;
+            const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
+            std::vector<fg::DescriptorBinding> bindings;
+            d.lighting.add_bindings(context, bindings);
+            context.bind(pipeline, bindings);
+            context.push_constants(pipeline, ReceiverPush{});  // the camera's own view
+            vkCmdDraw(context.cmd(), 6, 1, 0, 0);
+        });
+    graph.blackboard().put(keys::kHdrColor, data.hdr);
+    graph.blackboard().put(keys::kSceneDepth, data.depth);
+    data.layer.publish(graph.blackboard());
+}
+
+}  // namespace vkw::passes

@@ -1,0 +1,39 @@
+// The water surface drawn over the scene and shaded (shaders/water/water_surface.frag):
+// exact Fresnel, the sky in reflection, the floor through refraction (both exact: the sky
+// by direction, the floor as a plane), the medium along every path, from above and from
+// below; with scene views (passes/scene_views/scene_view.hpp), reflected and refracted rays also meet
+// the receiver meshes. Reads the surface grid of passes/water/water_surface.hpp and, when the
+// stencil split published it before, keys::kCameraMedium (per-pixel camera medium); serves
+// Effect::Water.
+#pragma once
+
+#include "engine/framegraph/frame_graph.hpp"
+#include "engine/scene/scene.hpp"
+
+#include <optional>
+
+namespace vkw::passes {
+
+// How the water finds the receiver meshes along its rays; a view absent: that lookup is off.
+struct WaterSceneLookups {
+    std::optional<fg::ImageHandle> reflection_view, refraction_view;
+    SceneLookup reflection_method = SceneLookup::Projective, refraction_method = SceneLookup::Projective;
+    int reflection_steps = 64, refraction_steps = 64;
+    float scene_size = 100.0f;  // m: how far a screen-space march looks when no floor bounds it
+    float shallow_blend = 0.0f;  // m: screen-space refraction blends to the direct view under this much water
+};
+
+// The surface's shading model (effects.water): the Fresnel form and seed 001's depth colour.
+struct WaterSurfaceShading {
+    SurfaceFresnel fresnel = SurfaceFresnel::Exact;
+    float fresnel_power = 4.5f;
+    bool depth_blend = false;
+    glm::vec3 water_colour{0.0f, 0.2f, 0.1f};
+    float blend_k = 0.5f;
+};
+WaterSurfaceShading water_surface_shading(const WaterShadingSettings& settings);
+
+void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uint32_t grid_resolution,
+                            const WaterSceneLookups& lookups = {}, const WaterSurfaceShading& shading = {});
+
+}  // namespace vkw::passes

@@ -1,0 +1,58 @@
+// The water surface on the GPU: one entry point that adds the compute passes of the scene's
+// wave model to the frame graph and returns the vertex grid they write. The CPU surfaces of
+// engine/water/ (double precision) are the ground truth; the kernels evaluate the same
+// formulas in fp32 (tests/water_gpu/ compares them at every vertex).
+//
+// The grid: (R + 1) x (R + 1) vertices, R = grid_resolution, whose parameters (x0, z0) are
+// -E + 2 E i / R for i, j = 0..R, E = half_extent; vertex (i, j) is element j (R + 1) + i of a
+// storage buffer of
+//   struct { vec4 position; vec4 normal; }  (std430, 32 bytes)
+// position = (x0 + Dx, level + h, z0 + Dz, 1): Gerstner waves and a choppy ocean move points
+// sideways, so the grid is displaced; normal = (unit normal toward the air, 0).
+//
+// The models (WaveSettings::model):
+//   Flat     the wave-sum kernel with no waves: (x0, level, z0), normal +y.
+//   Sum      shaders/water/wave_sum.comp, sines and Gerstner waves with analytic tangents
+//            (passes/water/water_surface_sum.cpp); at most kMaxGpuWaves components.
+//   FftOcean h0 from the CPU (OceanSpectrumBuffer), its time evolution, an inverse FFT in
+//            compute, and the grid sampled bilinearly from the periodic n x n result
+//            (passes/water/water_surface_ocean.cpp). Exact at vertices that fall on FFT nodes.
+// Everything is a function of (inputs, seed): two runs give bit-identical vertices.
+#pragma once
+
+#include "engine/framegraph/frame_graph.hpp"
+#include "engine/water/wave_params.hpp"
+
+#include <cstdint>
+
+namespace vkw::passes {
+
+class OceanSpectrumBuffer;
+
+// Each vertex sums every wave: the cost grows with the count, which the GPU caps.
+inline constexpr uint32_t kMaxGpuWaves = 64;
+inline constexpr VkDeviceSize kWaterVertexBytes = 32;
+
+struct WaterSurfaceInputs {
+    double level = 0.0;               // mean water level y, m
+    double half_extent = 10.0;        // E, m: the grid spans [-E, E]^2
+    uint32_t grid_resolution = 256;   // R cells per side, 1..16384
+    double time = 0.0;                // s
+    WaveSettings waves;
+    // FftOcean only: the device copy of the CPU's h0 for these waves (its spectrum() is the
+    // CPU FftOceanSpectrum). Owned by the caller, alive until the frame has executed.
+    const OceanSpectrumBuffer* ocean = nullptr;
+};
+
+// Adds the passes and returns the vertex buffer (written by a compute pass; declare the
+// reader's use, e.g. read_storage with the vertex stage, on the returned handle).
+// Throws vkw::UserError for waves a scene must not contain (validate_waves) or more than
+// kMaxGpuWaves components, vkw::InternalError for a non-finite level or time, E <= 0, R
+// outside 1..16384, or an FFT ocean without its OceanSpectrumBuffer (or with one made for
+// another resolution or patch size).
+fg::BufferHandle add_water_surface_pass(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs);
+
+// (R + 1)^2 vertices, the buffer's size in bytes.
+VkDeviceSize water_surface_bytes(uint32_t grid_resolution);
+
+}  // namespace vkw::passes

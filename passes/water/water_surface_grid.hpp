@@ -1,0 +1,106 @@
+// What the water-surface grid kernels share on the C++ side (shaders/water/water_vertex.glsl
+// on the GLSL side): the head of their push constants, the vertex buffer, the dispatch over
+// the (R + 1)^2 vertices in bands of rows that each fit one storage-buffer binding, and the
+// compute pass that declares and records all that.
+#pragma once
+
+#include "engine/framegraph/frame_graph.hpp"
+#include "engine/framegraph/pass_context.hpp"
+#include "passes/water/water_surface.hpp"
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace vkw::passes {
+
+// Mirrors struct WaterGrid of water_vertex.glsl.
+struct WaterGridPush {
+    float level;
+    float half_extent;
+    uint32_t resolution;
+    uint32_t first_row;  // set per band by dispatch_water_grid
+    uint32_t band_rows;  // likewise
+};
+
+WaterGridPush water_grid_push(const WaterSurfaceInputs& inputs);
+
+// Declares the vertex buffer in `builder`'s pass as a new buffer written by its shader.
+fg::BufferHandle create_water_vertices(fg::PassBuilder& builder, uint32_t grid_resolution);
+
+struct WaterGridBand {
+    uint32_t row_vertices;  // R + 1
+    uint32_t first_row;
+    uint32_t rows;
+    VkDeviceSize offset, bytes;  // of the band's vertices in the buffer
+};
+
+// The bands: as many rows as one binding may span (max_range, the device's
+// maxStorageBufferRange), rounded down to a multiple of the rows that keep each band's offset
+// aligned to `alignment` (minStorageBufferOffsetAlignment). One band up to R = 2047 on
+// lavapipe (128 MiB).
+std::vector<WaterGridBand> water_grid_bands(VkDeviceSize max_range, VkDeviceSize alignment,
+                                            uint32_t grid_resolution);
+// The same for the device that `context` records for.
+std::vector<WaterGridBand> water_grid_bands(const fg::PassContext& context, uint32_t grid_resolution);
+
+// Binds and dispatches one band (8 x 8 groups), the push constants already filled in.
+void dispatch_water_band(fg::PassContext& context, const Pipeline& pipeline, const fg::DescriptorBinding& input,
+                         fg::BufferHandle vertices, const WaterGridBand& band, const void* push, uint32_t push_bytes);
+
+// Records the grid kernel over every band: `pipeline` with `input` at binding 0, the band of
+// `vertices` at binding 1, and `push` (whose first member is `WaterGridPush grid`) with the
+// band's rows filled in.
+template <class Push>
+void dispatch_water_grid(fg::PassContext& context, const Pipeline& pipeline, const fg::DescriptorBinding& input,
+                         fg::BufferHandle vertices, Push push) {
+    for (const WaterGridBand& band : water_grid_bands(context, push.grid.resolution)) {
+        push.grid.first_row = band.first_row;
+        push.grid.band_rows = band.rows;
+        dispatch_water_band(context, pipeline, input, vertices, band, &push, sizeof(Push));
+    }
+}
+
+// A grid kernel's pass: its name, the kernel's shader and pipeline key, and how it reads its
+// input at binding 0 (VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER or VK_DESCRIPTOR_TYPE_STORAGE_BUFFER).
+struct WaterGridKernel {
+    const char* pass;
+    const char* shader;
+    const char* pipeline;
+    VkDescriptorType input;
+};
+
+// Adds the compute pass that runs `kernel` over the grid: it reads `input` at binding 0,
+// writes a new vertex buffer (create_water_vertices) band by band (dispatch_water_grid) with
+// `push`, and returns that buffer.
+template <class Push>
+fg::BufferHandle add_water_grid_pass(fg::FrameGraph& graph, const WaterGridKernel& kernel, fg::BufferHandle input,
+                                     const Push& push) {
+    const bool uniform = kernel.input == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    struct Data {
+        fg::BufferHandle input;
+        fg::BufferHandle vertices;
+    };
+    const auto& data = graph.add_pass<Data>(
+        kernel.pass, fg::PassKind::Compute,
+        [&](fg::PassBuilder& builder, Data& d) {
+            const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+            d.input = uniform ? builder.uniform_buffer(input, stage) : builder.read_storage(input, stage);
+            d.vertices = create_water_vertices(builder, push.grid.resolution);
+        },
+        [kernel, uniform, push](const Data& d, fg::PassContext& context) {
+            ComputePipelineDesc desc;
+            desc.shader = kernel.shader;
+            desc.layout.bindings = {{0, kernel.input, 1, VK_SHADER_STAGE_COMPUTE_BIT},
+                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
+            desc.layout.push_constant_bytes = sizeof(Push);
+            const Pipeline& pipeline = context.pipeline(kernel.pipeline, desc);
+            const fg::DescriptorBinding in =
+                uniform ? context.uniform_buffer(0, d.input) : context.storage_buffer(0, d.input);
+            dispatch_water_grid(context, pipeline, in, d.vertices, push);
+        });
+    return data.vertices;
+}
+
+}  // namespace vkw::passes

@@ -1,0 +1,81 @@
+// The GPU ocean's passes (water_surface_ocean.hpp).
+#include "passes/water/water_surface_ocean.hpp"
+
+#include "engine/framegraph/pass_context.hpp"
+#include "passes/water/water_surface_fft.hpp"
+#include "passes/water/water_surface_grid.hpp"
+#include "passes/water/water_surface_spectrum.hpp"
+
+#include <numbers>
+
+namespace vkw::passes {
+
+namespace {
+
+constexpr uint32_t kSpectrumGroupSide = 8;  // ocean_spectra.comp's 8 x 8 groups; n >= 16
+
+// Mirrors the push constants of shaders/water/ocean_spectra.comp.
+struct SpectraPush {
+    uint32_t n;
+    float dk;
+    // The time in fp32: the phase w t then carries ulp(t) w, 1e-3 rad for the 11 rad/s modes
+    // of a 256-mode, 64 m patch at t = 1000 s (the sum model reduces its phases in double
+    // instead; here that would be a CPU pass over every mode each frame).
+    float time;
+    float choppiness;
+};
+
+// Mirrors the push constants of shaders/water/ocean_grid.comp.
+struct GridPush {
+    WaterGridPush grid;
+    uint32_t n;
+    float nodes_per_metre;
+};
+
+fg::BufferHandle add_spectra_pass(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs) {
+    const FftOceanSpectrum& spectrum = inputs.ocean->spectrum();
+    const uint32_t n = spectrum.n;
+    const fg::BufferHandle h0 = inputs.ocean->import_into(graph);
+    const SpectraPush push{n, static_cast<float>(2.0 * std::numbers::pi / spectrum.patch_size),
+                           static_cast<float>(inputs.time), static_cast<float>(inputs.waves.ocean.choppiness)};
+    struct Data {
+        fg::BufferHandle h0;
+        fg::BufferHandle grids;
+    };
+    const auto& data = graph.add_pass<Data>(
+        "ocean spectra", fg::PassKind::Compute,
+        [&](fg::PassBuilder& builder, Data& d) {
+            d.h0 = builder.read_storage(h0, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+            const VkDeviceSize bytes = VkDeviceSize{kOceanGridCount} * n * n * 4 * sizeof(float);
+            d.grids = builder.create_buffer("ocean spectra", {bytes});
+            d.grids = builder.write_storage(d.grids, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+        },
+        [push](const Data& d, fg::PassContext& context) {
+            ComputePipelineDesc desc;
+            desc.shader = "water/ocean_spectra.comp";
+            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
+                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
+            desc.layout.push_constant_bytes = sizeof(SpectraPush);
+            const Pipeline& pipeline = context.pipeline("ocean spectra", desc);
+            context.bind(pipeline, {context.storage_buffer(0, d.h0), context.storage_buffer(1, d.grids)});
+            context.push_constants(pipeline, push);
+            const uint32_t groups = push.n / kSpectrumGroupSide;  // <= 128
+            vkCmdDispatch(context.cmd(), groups, groups, 1);
+        });
+    return data.grids;
+}
+
+}  // namespace
+
+fg::BufferHandle add_ocean_passes(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs) {
+    const FftOceanSpectrum& spectrum = inputs.ocean->spectrum();
+    const fg::BufferHandle spectra = add_spectra_pass(graph, inputs);
+    const fg::BufferHandle fields = add_inverse_fft_passes(graph, spectra, spectrum.n, kOceanGridCount);
+    const GridPush push{water_grid_push(inputs), spectrum.n,
+                        static_cast<float>(spectrum.n / spectrum.patch_size)};
+    return add_water_grid_pass(
+        graph, {"water surface (ocean grid)", "water/ocean_grid.comp", "ocean grid", VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+        fields, push);
+}
+
+}  // namespace vkw::passes

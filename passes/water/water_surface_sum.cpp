@@ -1,0 +1,76 @@
+// Sum of sine and Gerstner waves on the GPU (water_surface_sum.hpp). The per-wave constants
+// are engine/water/wave_terms.hpp's, the CPU surface's own, computed in double and rounded
+// once to fp32.
+#include "passes/water/water_surface_sum.hpp"
+
+#include "engine/framegraph/pass_context.hpp"
+#include "engine/water/wave_terms.hpp"
+#include "passes/water/water_surface_grid.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace vkw::passes {
+
+namespace {
+
+// Mirrors struct Wave of shaders/water/wave_sum.comp (32 bytes in std140).
+struct GpuWave {
+    float k_vector[2];
+    float phase_at_origin;
+    float amplitude;
+    float displacement_scale;
+    float unused[3];
+};
+static_assert(sizeof(GpuWave) == 32);
+// vkCmdUpdateBuffer writes at most 65536 bytes: the whole table in one call.
+static_assert(sizeof(GpuWave) * kMaxGpuWaves <= 65536);
+
+struct SumPush {
+    WaterGridPush grid;
+    uint32_t wave_count;
+};
+
+// wave_terms() rounded to fp32. The phase is reduced to [-pi, pi] in double first (sin and cos
+// do not notice), so that fp32 holds it to 2^-24 rad however large w t has grown, instead of to
+// ulp(w t).
+GpuWave gpu_wave(const WaveComponent& c, double time) {
+    const WaveTerms terms = wave_terms(c, time);
+    GpuWave w{};
+    w.k_vector[0] = static_cast<float>(terms.k_vector.x);
+    w.k_vector[1] = static_cast<float>(terms.k_vector.y);
+    w.phase_at_origin = static_cast<float>(std::remainder(terms.phase_at_origin, 2.0 * std::numbers::pi));
+    w.amplitude = static_cast<float>(terms.amplitude);
+    w.displacement_scale = static_cast<float>(terms.displacement_scale);
+    return w;
+}
+
+}  // namespace
+
+fg::BufferHandle add_wave_sum_passes(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs,
+                                     const std::vector<WaveComponent>& waves) {
+    // The kernel's uniform block declares all kMaxGpuWaves entries, so the buffer holds them
+    // all (2 KiB); wave_count says how many are used.
+    std::vector<GpuWave> table(kMaxGpuWaves, GpuWave{});
+    for (size_t i = 0; i < waves.size(); ++i) table[i] = gpu_wave(waves[i], inputs.time);
+
+    struct UploadData {
+        fg::BufferHandle waves;
+    };
+    const auto& upload = graph.add_pass<UploadData>(
+        "upload water waves", fg::PassKind::Transfer,
+        [&](fg::PassBuilder& builder, UploadData& d) {
+            d.waves = builder.create_buffer("water waves", {table.size() * sizeof(GpuWave)});
+            d.waves = builder.copy_destination(d.waves);
+        },
+        [table](const UploadData& d, fg::PassContext& context) {
+            vkCmdUpdateBuffer(context.cmd(), context.buffer(d.waves), 0, table.size() * sizeof(GpuWave), table.data());
+        });
+
+    const SumPush push{water_grid_push(inputs), static_cast<uint32_t>(waves.size())};
+    return add_water_grid_pass(
+        graph, {"water surface (wave sum)", "water/wave_sum.comp", "wave sum", VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+        upload.waves, push);
+}
+
+}  // namespace vkw::passes

@@ -1,0 +1,17 @@
+// The wave-sum model on the GPU (and flat water, a sum of no waves): an upload pass writes
+// the per-wave constants, a compute pass evaluates shaders/water/wave_sum.comp at every vertex.
+#pragma once
+
+#include "engine/framegraph/frame_graph.hpp"
+#include "engine/water/wave_params.hpp"
+#include "passes/water/water_surface.hpp"
+
+#include <vector>
+
+namespace vkw::passes {
+
+// `waves`: at most kMaxGpuWaves, already validated (add_water_surface_pass checks both).
+fg::BufferHandle add_wave_sum_passes(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs,
+                                     const std::vector<WaveComponent>& waves);
+
+}  // namespace vkw::passes

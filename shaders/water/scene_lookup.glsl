@@ -1,0 +1,137 @@
+// Following a ray reflected or refracted at the water surface through a scene view
+// (passes/scene_views/scene_view.hpp, scene_views/scene_view.glsl) to the receiver mesh it meets.
+// Two methods, chosen per scene (effects.reflection.method, effects.refraction.method):
+//   - projective (seeds 000 and 001): the hit is first estimated at the distance of what
+//     the view shows straight behind the surface point (seed 001 eq. 1), then refined by
+//     fixed-point steps: look up where the estimate projects, move the estimate to the
+//     distance of what is there, until it moves by less than 1e-4 of itself;
+//   - screen-space (seed 002 section 5): march the ray through the view's distances in
+//     steps of a few texels on the view, each no longer than the gap between the ray and
+//     what the view shows there (so a step cannot pass through the surface under that
+//     texel), then bisect the last step.
+// Both return false where the view shows nothing along the ray or the ray leaves the view
+// (the guard band); the caller then keeps its exact lookups of the floor and the sky.
+#ifndef VKWATER_SCENE_LOOKUP_GLSL
+#define VKWATER_SCENE_LOOKUP_GLSL
+
+#include "scene_views/scene_view.glsl"
+
+// The camera's side of the surface (reflected rays) and the other side (refracted rays).
+layout(set = 0, binding = 8) uniform sampler2D reflection_view;
+layout(set = 0, binding = 9) uniform sampler2D refraction_view;
+#ifdef VKWATER_CAUSTIC_LAYER
+// The refraction view's caustic layer: the sun's irradiance on the receiver each texel holds.
+layout(set = 0, binding = 10) uniform sampler2D refraction_view_caustic;
+#endif
+
+const uint SCENE_LOOKUP_OFF = 0u;
+const uint SCENE_LOOKUP_PROJECTIVE = 1u;
+const uint SCENE_LOOKUP_SCREEN_SPACE = 2u;
+// How far one march step moves on the view, in texels: with the default 64 steps a ray
+// is followed across 256 texels of the view (a quarter of a 800x600 frame's guard-banded
+// view), further with more steps.
+const float SCENE_LOOKUP_TEXELS_PER_STEP = 4.0;
+// Bisection steps after the march: the hit to 2^-8 of the last step.
+const int SCENE_LOOKUP_BISECTIONS = 8;
+// The thickness the march gives what a view shows, as a fraction of its distance from
+// the eye: neighbouring texels of a surface seen at a slant differ by about this much.
+const float SCENE_LOOKUP_THICKNESS = 0.05;
+
+struct SceneHit {
+    vec3 radiance;   // leaving the receiver toward the ray's origin
+    float distance;  // from the ray's origin, m
+    vec2 uv;         // the centre of the view's texel that holds it
+};
+
+// The view's texel under uv (nearest: the distances must not blend across edges), and
+// the uv of its centre.
+vec4 scene_view_texel(sampler2D view, vec2 uv, out vec2 texel_uv) {
+    ivec2 size = textureSize(view, 0);
+    ivec2 texel = clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
+    texel_uv = (vec2(texel) + 0.5) / vec2(size);
+    return texelFetch(view, texel, 0);
+}
+
+bool projective_lookup(sampler2D view, bool mirrored, vec3 p, vec3 d, int max_steps, out SceneHit hit) {
+    hit = SceneHit(vec3(0.0), 0.0, vec2(0.0));
+    vec2 uv, texel_uv;
+    if (!scene_view_uv(p, mirrored, uv)) return false;
+    vec4 texel = scene_view_texel(view, uv, texel_uv);
+    if (texel.a <= 0.0) return false;  // nothing behind the surface point: no estimate to start from
+    float s = max(0.0, texel.a - distance(scene_view_eye(mirrored), p));
+    for (int i = 0; i < max_steps; ++i) {
+        if (!scene_view_uv(p + s * d, mirrored, uv)) return false;
+        texel = scene_view_texel(view, uv, texel_uv);
+        if (texel.a <= 0.0) return false;
+        float next = max(0.0, dot(scene_view_point(texel_uv, texel.a, mirrored) - p, d));
+        bool converged = abs(next - s) <= 1e-4 * next;
+        s = next;
+        if (converged) break;
+    }
+    hit = SceneHit(texel.rgb, s, texel_uv);
+    return true;
+}
+
+// The length along d from h that moves h's image in the view by about
+// SCENE_LOOKUP_TEXELS_PER_STEP texels (measured over a trial step of 1% of h's distance).
+float screen_space_step(vec3 h, vec3 d, vec2 view_size) {
+    float trial = 0.01 * max(distance(frame.camera_position.xyz, h), 1e-3);
+    vec4 a = scene_view_clip(h, false), b = scene_view_clip(h + trial * d, false);
+    if (a.w <= 0.0 || b.w <= 0.0) return trial * SCENE_LOOKUP_TEXELS_PER_STEP;
+    float moved = length((b.xy / b.w - a.xy / a.w) * 0.5 * view_size);
+    return trial * SCENE_LOOKUP_TEXELS_PER_STEP / max(moved, 0.01);
+}
+
+// max_distance: how far along the ray to look (the floor's distance, or the scene's size).
+bool screen_space_lookup(sampler2D view, vec3 p, vec3 d, float max_distance, int max_steps, out SceneHit hit) {
+    hit = SceneHit(vec3(0.0), 0.0, vec2(0.0));
+    vec3 eye = frame.camera_position.xyz;
+    vec2 view_size = vec2(textureSize(view, 0));
+    float s = 0.0, previous = 0.0;
+    vec2 uv, texel_uv;
+    for (int i = 0; i <= max_steps && s <= max_distance; ++i) {
+        if (!scene_view_uv(p + s * d, false, uv)) return false;
+        vec4 texel = scene_view_texel(view, uv, texel_uv);
+        float ray_distance = distance(eye, p + s * d);
+        float gap = texel.a - ray_distance;
+        // Behind what the view shows, and by no more than the last step plus the
+        // thickness objects are assumed to have: the ray went through that surface
+        // (further behind, it passed behind an object: go on).
+        if (texel.a > 0.0 && gap <= 0.0 && -gap <= s - previous + SCENE_LOOKUP_THICKNESS * texel.a) {
+            float lo = previous, hi = s;
+            for (int b = 0; b < SCENE_LOOKUP_BISECTIONS; ++b) {
+                float mid = 0.5 * (lo + hi);
+                scene_view_uv(p + mid * d, false, uv);
+                vec4 at_mid = scene_view_texel(view, uv, texel_uv);
+                bool behind = at_mid.a > 0.0 && distance(eye, p + mid * d) >= at_mid.a;
+                if (behind) hi = mid; else lo = mid;
+            }
+            scene_view_uv(p + hi * d, false, uv);
+            hit = SceneHit(scene_view_texel(view, uv, texel_uv).rgb, hi, texel_uv);
+            return true;
+        }
+        previous = s;
+        // Steps of a few texels on screen; in front of a surface, no longer than the gap
+        // to it: a step along d changes the distance from the eye by at most its length,
+        // so it cannot cross the surface under this texel.
+        float screen_step = screen_space_step(p + s * d, d, view_size);
+        s += gap > 0.0 ? clamp(gap, 0.25 * screen_step, screen_step) : screen_step;
+    }
+    return false;
+}
+
+bool scene_lookup(uint method, bool reflected, vec3 p, vec3 d, float max_distance, int max_steps, out SceneHit hit) {
+    hit = SceneHit(vec3(0.0), 0.0, vec2(0.0));
+    if (method == SCENE_LOOKUP_PROJECTIVE) {
+        // Reflected rays read the mirrored view; refracted rays the camera's view of the other side.
+        return reflected ? projective_lookup(reflection_view, true, p, d, max_steps, hit)
+                         : projective_lookup(refraction_view, false, p, d, max_steps, hit);
+    }
+    if (method == SCENE_LOOKUP_SCREEN_SPACE) {
+        return reflected ? screen_space_lookup(reflection_view, p, d, max_distance, max_steps, hit)
+                         : screen_space_lookup(refraction_view, p, d, max_distance, max_steps, hit);
+    }
+    return false;
+}
+
+#endif

@@ -1,0 +1,197 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// The water surface with the simplest correct lookups (PHYSICS.md sections 1-3, 6, 7):
+// exact Fresnel and total internal reflection, the sky and the sun's disk in reflection,
+// refraction down to the floor plane, radiance scaled by n^2 across the surface, sigma_t
+// attenuation and single scattering along every path in the water. From above and, for
+// a camera in the water, from below (Snell's window). Variants (shaders/CMakeLists.txt):
+// VKWATER_PER_PIXEL_MEDIUM (the stencil split's mask), VKWATER_CAUSTICS (the floor seen
+// through the water reads the caustic map) and VKWATER_SCENE_VIEWS (reflected and refracted
+// rays also meet the receiver meshes, through the scene views: water/scene_lookup.glsl;
+// the floor and the sky stay exact). VKWATER_CAUSTIC_LAYER adds a second output: the sun's
+// irradiance on the receiver the refracted view ray meets (0 for a camera in the water, whose
+// pixels on the surface see the air or a reflection), as the reference's caustic layer.
+#include "common/camera_ray.glsl"
+#include "common/fresnel.glsl"
+#include "common/medium.glsl"
+#include "common/sky.glsl"
+#include "water/camera_medium.glsl"
+#include "water/underwater_light.glsl"
+
+#ifdef VKWATER_SCENE_VIEWS
+#include "water/scene_lookup.glsl"
+#endif
+
+layout(set = 0, binding = 1, std430) readonly buffer Optics { SceneOptics optics; };
+layout(push_constant) uniform Params {
+    uint resolution;                      // the vertex shader's
+    uint reflection_method, refraction_method;  // SCENE_LOOKUP_*
+    uint reflection_steps, refraction_steps;
+    float scene_size;                     // m: how far a screen-space march looks when no floor bounds it
+    float shallow_blend;                  // m: see below; 0 off
+    uint fresnel_model;                   // SURFACE_FRESNEL_* (effects.water.fresnel)
+    float fresnel_power;                  // q of seed 001's power term
+    uint depth_blend;                     // 1: seed 001's depth colour along refracted rays
+    float blend_k;                        // its k, 1/m
+    vec4 water_colour;                    // rgb: its C_w (radiance)
+} params;
+
+const uint SURFACE_FRESNEL_EXACT = 0u;
+const uint SURFACE_FRESNEL_SCHLICK = 1u;
+const uint SURFACE_FRESNEL_POWER = 2u;
+
+// The surface's Fresnel split as the scene chooses it (effects.water.fresnel): the exact equations
+// (the model, PHYSICS.md section 2); Schlick's approximation; or seed 001's power term
+// F = (1 - E.N)^q with E.N the cosine on the incoming side, which knows no total internal
+// reflection, so the exact form's is kept (R = 1 outside Snell's window from below).
+Fresnel surface_fresnel(float cos_i, float n_i, float n_t) {
+    Fresnel exact = fresnel_exact(cos_i, n_i, n_t);
+    if (params.fresnel_model == SURFACE_FRESNEL_SCHLICK) return fresnel_schlick(cos_i, n_i, n_t);
+    if (params.fresnel_model == SURFACE_FRESNEL_POWER && !exact.total_internal_reflection) {
+        float r = pow(1.0 - clamp(cos_i, 0.0, 1.0), params.fresnel_power);
+        return Fresnel(r, 1.0 - r, exact.cos_t, false);
+    }
+    return exact;
+}
+
+// Seed 002's saving: a screen-space march is skipped for a ray whose Fresnel weight is
+// below this (its object is then missed: an error of at most 1% of the object's radiance
+// against the exact lookup behind it). Water's R is at least 0.02, so in practice it skips
+// only refracted rays near grazing incidence.
+const float SCREEN_SPACE_FRESNEL_SKIP = 0.01;
+
+// The receiver mesh a reflected (or refracted) ray from p meets before `limit`, if any;
+// `weight` is the ray's Fresnel weight (R or T).
+bool object_along(bool reflected, vec3 p, vec3 d, float limit, float weight, out vec3 radiance,
+                  out float distance_to_object, out vec2 object_uv) {
+    radiance = vec3(0.0);
+    distance_to_object = 0.0;
+    object_uv = vec2(0.0);
+#ifdef VKWATER_SCENE_VIEWS
+    // The views keep the sides of the frame's camera medium; pixels whose ray starts on
+    // the other side (the camera crossing the surface) keep the exact lookups alone.
+    if (camera_in_water() != (frame.camera_medium.x > 0.5)) return false;
+    SceneHit hit;
+    uint method = reflected ? params.reflection_method : params.refraction_method;
+    if (method == SCENE_LOOKUP_SCREEN_SPACE && weight < SCREEN_SPACE_FRESNEL_SKIP) return false;
+    int steps = int(reflected ? params.reflection_steps : params.refraction_steps);
+    if (scene_lookup(method, reflected, p, d, limit, steps, hit) && hit.distance < limit) {
+        radiance = hit.radiance;
+        distance_to_object = hit.distance;
+        object_uv = hit.uv;
+        return true;
+    }
+#endif
+    return false;
+}
+
+layout(location = 0) in vec3 in_position;
+layout(location = 1) in vec3 in_normal;
+layout(location = 0) out vec4 out_radiance;
+#ifdef VKWATER_CAUSTIC_LAYER
+layout(location = 1) out vec4 out_caustic;
+#endif
+
+// Radiance arriving at p along d inside the water: the floor or object it meets,
+// attenuated, plus the sun's beam scattered along the way. `reflected`: d is the
+// reflection of a ray from the water (else the refraction of one from the air).
+// `caustic`: the caustic layer's value at what it meets (VKWATER_CAUSTIC_LAYER; else 0).
+vec3 radiance_in_water(vec3 p, vec3 d, bool reflected, float weight, out float length_in_water, out vec3 caustic) {
+    vec3 behind;
+    bool floor_hit = floor_along(p, d, optics, length_in_water, behind, caustic);
+    if (!floor_hit) length_in_water = 0.0;
+    vec3 object;
+    float distance_to_object;
+    vec2 object_uv;
+    if (object_along(reflected, p, d, floor_hit ? length_in_water : params.scene_size, weight, object,
+                     distance_to_object, object_uv)) {
+        behind = object;
+        length_in_water = distance_to_object;
+#if defined(VKWATER_CAUSTIC_LAYER) && defined(VKWATER_SCENE_VIEWS)
+        caustic = reflected ? vec3(0.0)
+                            : texelFetch(refraction_view_caustic,
+                                         ivec2(object_uv * vec2(textureSize(refraction_view_caustic, 0))), 0).rgb;
+#endif
+    }
+    if (params.depth_blend != 0u && !reflected) {
+        // Seed 001's depth colour in place of the medium along the refracted ray: what the ray
+        // meets fades to the water's colour C_w by exp(-k d), d its length in the water (a ray
+        // that meets nothing sees C_w).
+        float a = floor_hit || length_in_water > 0.0 ? exp(-params.blend_k * length_in_water) : 0.0;
+        return params.water_colour.rgb + a * (behind - params.water_colour.rgb);
+    }
+    return water_path_radiance(analytic_inscatter_sigma_s(), frame.medium_sigma_t.rgb, frame.medium_sigma_s.w,
+                               max(0.0, frame.water.x - p.y), length_in_water, d, optics.refracted_sun.xyz,
+                               optics.e_perp0.rgb, behind);
+}
+
+void main() {
+    vec3 p = in_position;
+    vec3 normal = normalize(in_normal);  // toward the air
+    vec3 eye = frame.camera_position.xyz;
+    vec3 v = normalize(p - eye);
+    float n = frame.water.y;
+
+    if (!camera_in_water()) {
+        // From the air. A wave's back face seen from above keeps a grazing cosine of 0.
+        Fresnel f = surface_fresnel(max(0.0, -dot(v, normal)), 1.0, n);
+        vec3 reflected_direction = reflect(v, normal);
+        vec3 reflected = sky_radiance(reflected_direction);
+        vec3 object;
+        float distance_to_object;
+        vec2 object_uv;
+        if (object_along(true, p, reflected_direction, params.scene_size, f.R, object, distance_to_object,
+                         object_uv)) {
+            reflected = object;
+        }
+        vec3 refracted_direction;
+        vec3 transmitted = vec3(0.0);
+        vec3 caustic = vec3(0.0);
+        if (refract_direction(v, normal, 1.0 / n, refracted_direction)) {
+            float refracted_length;
+            transmitted = radiance_in_water(p, refracted_direction, false, f.T, refracted_length, caustic) / (n * n);
+#ifdef VKWATER_SCENE_VIEWS
+            // Seed 002: in very shallow water the screen-space refraction fades to what lies
+            // straight behind the surface, by the water's depth along the view ray (a chosen
+            // approximation: it hides the march's misses where the water thins out; off by default).
+            if (params.refraction_method == SCENE_LOOKUP_SCREEN_SPACE && params.shallow_blend > 0.0) {
+                float direct_length;
+                vec3 direct_caustic;
+                vec3 direct = radiance_in_water(p, v, false, f.T, direct_length, direct_caustic) / (n * n);
+                transmitted = mix(direct, transmitted, clamp(direct_length / params.shallow_blend, 0.0, 1.0));
+            }
+#endif
+        }
+        out_radiance = vec4(f.R * reflected + f.T * transmitted, 1.0);
+#ifdef VKWATER_CAUSTIC_LAYER
+        out_caustic = vec4(caustic, 1.0);
+#endif
+        return;
+    }
+    // From the water: total internal reflection outside Snell's window.
+    vec3 water_side = -normal;
+    Fresnel f = surface_fresnel(max(0.0, dot(v, normal)), n, 1.0);
+    float reflected_length;
+    vec3 reflected_caustic;  // not in the layer: the reference records the first receiver only
+    vec3 at_surface =
+        f.R * radiance_in_water(p, reflect(v, water_side), true, f.R, reflected_length, reflected_caustic);
+    vec3 to_air;
+    if (!f.total_internal_reflection && refract_direction(v, water_side, n, to_air)) {
+        vec3 above = sky_radiance(to_air);
+        vec3 object;
+        float distance_to_object;
+        vec2 object_uv;
+        if (object_along(false, p, to_air, params.scene_size, f.T, object, distance_to_object, object_uv)) {
+            above = object;
+        }
+        at_surface += f.T * n * n * above;
+    }
+    float camera_depth = max(0.0, frame.water.x - eye.y);
+    out_radiance = vec4(water_path_radiance(analytic_inscatter_sigma_s(), frame.medium_sigma_t.rgb,
+                                            frame.medium_sigma_s.w, camera_depth, distance(eye, p), v,
+                                            optics.refracted_sun.xyz, optics.e_perp0.rgb, at_surface),
+                        1.0);
+#ifdef VKWATER_CAUSTIC_LAYER
+    out_caustic = vec4(0.0);
+#endif
+}

@@ -1,0 +1,84 @@
+#include "tools/vkwater/view/frame_stats.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <numeric>
+
+namespace vkw::window {
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    const size_t mid = values.size() / 2;
+    std::nth_element(values.begin(), values.begin() + mid, values.end());
+    const double upper = values[mid];
+    if (values.size() % 2 == 1) return upper;
+    return 0.5 * (upper + *std::max_element(values.begin(), values.begin() + mid));
+}
+
+void FrameStats::add_frame(double interval_ms, bool counted) {
+    // Interval i runs from frame i to frame i + 1: the first kWarmupFrames start in warm-up.
+    const bool warm_up = intervals_++ < kWarmupFrames;
+    if (!counted || warm_up) return;
+    counted_ms_.push_back(interval_ms);
+    recent_ms_.push_back(interval_ms);
+    if (recent_ms_.size() > kRecentFrames) recent_ms_.pop_front();
+}
+
+void FrameStats::add_timing(const fg::FrameReport& report, double present_ms, uint64_t frame) {
+    ++timing_frames_;
+    last_report_ = report;
+    last_present_ms_ = present_ms;
+    last_timing_frame_ = frame;
+    method_ = report.method_name();
+    for (const fg::PassTime& pass : report.passes) {
+        auto slot = std::find_if(pass_ms_.begin(), pass_ms_.end(), [&](const auto& p) { return p.first == pass.pass; });
+        if (slot == pass_ms_.end()) slot = pass_ms_.insert(pass_ms_.end(), {pass.pass, {}});
+        slot->second.push_back(pass.ms);
+    }
+    present_ms_.push_back(present_ms);
+    total_ms_.push_back(report.total_ms + present_ms);
+}
+
+double FrameStats::recent_frame_ms() const {
+    if (recent_ms_.empty()) return 0.0;
+    return std::accumulate(recent_ms_.begin(), recent_ms_.end(), 0.0) / static_cast<double>(recent_ms_.size());
+}
+
+std::string FrameStats::summary(uint64_t frames) const {
+    char line[256];
+    std::string text;
+    if (counted_ms_.empty()) {
+        std::snprintf(line, sizeof line, "frames: %llu, too few to time (the first %u are warm-up)\n",
+                      static_cast<unsigned long long>(frames), kWarmupFrames);
+        text += line;
+    } else {
+        const double med = median(counted_ms_);
+        const double mean = std::accumulate(counted_ms_.begin(), counted_ms_.end(), 0.0) / counted_ms_.size();
+        std::snprintf(line, sizeof line,
+                      "frames: %llu; frame time over %zu intervals: median %.2f ms (%.2f fps), mean %.2f ms (%.2f fps)\n",
+                      static_cast<unsigned long long>(frames), counted_ms_.size(), med, 1000.0 / med, mean,
+                      1000.0 / mean);
+        text += line;
+    }
+    if (timing_frames_ == 0) return text + "per-pass times: no timing frame ran\n";
+    std::snprintf(line, sizeof line, "per-pass times, median of %llu timing frames (%s):\n",
+                  static_cast<unsigned long long>(timing_frames_), method_.c_str());
+    text += line;
+    for (const auto& [name, times] : pass_ms_) {
+        std::snprintf(line, sizeof line, "  %-28s %9.2f ms", name.c_str(), median(times));
+        text += line;
+        if (times.size() != timing_frames_) {
+            std::snprintf(line, sizeof line, "  (ran in %zu of them)", times.size());
+            text += line;
+        }
+        text += "\n";
+    }
+    std::snprintf(line, sizeof line, "  %-28s %9.2f ms  (tonemap + overlay: one submission, fence-timed)\n",
+                  "present", median(present_ms_));
+    text += line;
+    std::snprintf(line, sizeof line, "  %-28s %9.2f ms  (sum of the above, each timing frame)\n", "frame",
+                  median(total_ms_));
+    return text + line;
+}
+
+}  // namespace vkw::window
