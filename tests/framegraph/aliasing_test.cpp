@@ -1,7 +1,7 @@
 // Transient memory aliasing: plan_aliasing on hand-made requests (offsets, heap size,
 // alignment, predecessors) and, through FrameGraph::compile, the heap of a chain of
 // transients and the wait that memory reuse adds to the first barrier.
-#include "framegraph_test_support.hpp"
+#include "tests/framegraph/framegraph_test_support.hpp"
 
 #include <algorithm>
 

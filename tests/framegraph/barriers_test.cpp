@@ -3,7 +3,7 @@
 // by hand. Transients in one graph have overlapping lifetimes, so the aliasing
 // estimate adds no waits. A transient buffer's first write takes no barrier; an
 // image's first write takes UNDEFINED -> layout with src stages NONE.
-#include "framegraph_test_support.hpp"
+#include "tests/framegraph/framegraph_test_support.hpp"
 
 namespace vkw::fg::test {
 namespace {

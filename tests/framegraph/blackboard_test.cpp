@@ -1,5 +1,5 @@
 // The typed blackboard: values round-trip by key, and a missing key is an error naming it.
-#include "framegraph_test_support.hpp"
+#include "tests/framegraph/framegraph_test_support.hpp"
 
 namespace vkw::fg::test {
 namespace {

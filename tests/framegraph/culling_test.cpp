@@ -1,6 +1,6 @@
 // FrameGraph culling (unread outputs, side effects, requested outputs, effects the
 // frame does not need) and the execution order of the passes that survive.
-#include "framegraph_test_support.hpp"
+#include "tests/framegraph/framegraph_test_support.hpp"
 
 namespace vkw::fg::test {
 namespace {

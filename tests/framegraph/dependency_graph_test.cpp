@@ -1,6 +1,6 @@
 // DependencyGraph on bare nodes: reference-count culling (pins, forced culls, shared
 // producers), the stable topological order and the cycle error.
-#include "framegraph_test_support.hpp"
+#include "tests/framegraph/framegraph_test_support.hpp"
 
 #include "engine/framegraph/dependency_graph.hpp"
 

@@ -1,6 +1,6 @@
 // Graph-building mistakes the frame graph refuses with a short, precise InternalError:
 // reading what nobody wrote, stale handles, duplicate pass names, two layouts in one pass.
-#include "framegraph_test_support.hpp"
+#include "tests/framegraph/framegraph_test_support.hpp"
 
 namespace vkw::fg::test {
 namespace {

@@ -5,7 +5,7 @@
 // To regenerate after an intended change, run the tests with VKWATER_UPDATE_GOLDEN=1:
 //   VKWATER_UPDATE_GOLDEN=1 ./build/tests/framegraph/test_framegraph --gtest_filter='framegraph_golden*'
 // then read the diff of golden/ before committing it.
-#include "framegraph_test_support.hpp"
+#include "tests/framegraph/framegraph_test_support.hpp"
 
 #include <cstdlib>
 #include <filesystem>

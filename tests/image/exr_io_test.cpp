@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "engine/image/exr_io.hpp"
-#include "image_test_support.hpp"
+#include "tests/image/image_test_support.hpp"
 
 namespace vkw {
 namespace {

@@ -14,7 +14,7 @@
 #include "engine/image/exr_io.hpp"
 #include "engine/image/file_paths.hpp"
 #include "engine/image/png_preview.hpp"
-#include "image_test_support.hpp"
+#include "tests/image/image_test_support.hpp"
 
 namespace vkw {
 namespace {

@@ -11,7 +11,7 @@
 
 #include "engine/image/png_preview.hpp"
 #include "engine/image/tone_curve.hpp"
-#include "image_test_support.hpp"
+#include "tests/image/image_test_support.hpp"
 
 namespace vkw {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "engine/scene/builtin_meshes.hpp"
 #include "engine/scene/scene_loader.hpp"
-#include "scene_test_support.hpp"
+#include "tests/scene/scene_test_support.hpp"
 
 namespace vkw {
 namespace {

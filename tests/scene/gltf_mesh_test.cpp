@@ -5,8 +5,8 @@
 
 #include "engine/scene/gltf_mesh.hpp"
 #include "engine/scene/scene_loader.hpp"
-#include "gltf_test_files.hpp"
-#include "scene_test_support.hpp"
+#include "tests/scene/gltf_test_files.hpp"
+#include "tests/scene/scene_test_support.hpp"
 
 namespace vkw {
 namespace {

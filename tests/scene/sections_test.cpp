@@ -6,7 +6,7 @@
 
 #include "engine/framegraph/frame_needs.hpp"
 #include "engine/scene/scene_loader.hpp"
-#include "scene_test_support.hpp"
+#include "tests/scene/scene_test_support.hpp"
 
 namespace vkw {
 namespace {

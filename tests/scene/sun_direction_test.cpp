@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/scene/scene_loader.hpp"
-#include "scene_test_support.hpp"
+#include "tests/scene/scene_test_support.hpp"
 
 namespace vkw {
 namespace {

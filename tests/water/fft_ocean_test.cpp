@@ -15,7 +15,7 @@
 #include "engine/water/fft_ocean.hpp"
 #include "engine/water/fft_ocean_surface.hpp"
 #include "engine/water/ocean_grid.hpp"
-#include "water_test_support.hpp"
+#include "tests/water/water_test_support.hpp"
 
 namespace vkw {
 namespace {

@@ -8,7 +8,7 @@
 #include "engine/water/flat_surface.hpp"
 #include "engine/water/surface.hpp"
 #include "engine/water/wave_sum_surface.hpp"
-#include "water_test_support.hpp"
+#include "tests/water/water_test_support.hpp"
 
 namespace vkw {
 namespace {

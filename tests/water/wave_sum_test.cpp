@@ -10,7 +10,7 @@
 #include "engine/core/errors.hpp"
 #include "engine/water/validate_waves.hpp"
 #include "engine/water/wave_sum_surface.hpp"
-#include "water_test_support.hpp"
+#include "tests/water/water_test_support.hpp"
 
 namespace vkw {
 namespace {
