@@ -2,8 +2,8 @@
 # Regenerates the committed sweeps docs/sweeps/{calm,pool,lake}.{csv,svg}: `vkwater bench` at the
 # references' size (400x300) against tests/references/<scene>.exr, over the water (= photon)
 # grid, the caustics (off: the flat-surface stand-in; on with the bilinear or the adaptive splat
-# kernel, or the baselines: the footprint kernel, seed 004's area ratio, seed 003's procedural
-# caustic, and seed 002's camera-space splats) and the godrays (off, or a 32 or 128 beam
+# kernel, or the baselines: the footprint kernel, Tipprasert 2006's area ratio, Guardado & Sánchez-Crespo 2004's procedural
+# caustic, and Ojeda & Susín 2013's camera-space splats) and the godrays (off, or a 32 or 128 beam
 # grid; 128 is the default).
 # Usage: docs/sweeps/run.sh [BUILD_DIR] [FRAMES] [SCENE...]
 #   (defaults: build, 30 timed frames per setting, calm pool lake pool-map-scale)

@@ -62,7 +62,7 @@ DepthBlend read_depth_blend(FieldReader& fields) {
     return blend;
 }
 
-// water: the surface's shading (the Fresnel form, seed 001's depth colour).
+// water: the surface's shading (the Fresnel form, Optical Phenomena c. 2008's depth colour).
 WaterShadingSettings read_water_shading(FieldReader& fields) {
     const WaterShadingSettings defaults;
     WaterShadingSettings shading;

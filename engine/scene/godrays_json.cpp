@@ -27,7 +27,7 @@ GodraySettings read_godray_settings(FieldReader& fields) {
     godrays.march_steps = static_cast<uint32_t>(
         fields.integer("march_steps", Range::closed(1.0, 4096.0, "steps"), defaults.march_steps));
     fields.finish();  // a misspelt key explains more than a value out of the set
-    // Two sizes only: the full output, or half of it per side (seed 000's godray buffer).
+    // Two sizes only: the full output, or half of it per side (de la Fuente 2011's godray buffer).
     if (godrays.resolution_scale != 0.5 && godrays.resolution_scale != 1.0) {
         fields.fail("resolution_scale", format_number(godrays.resolution_scale) + " is not one of the two sizes",
                     "0.5 or 1");

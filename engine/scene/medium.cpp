@@ -1,4 +1,4 @@
-// The medium presets, exactly the table of PHYSICS.md section 1.
+// The medium presets, exactly the table of docs/model.md section 1.
 #include "engine/scene/medium.hpp"
 
 #include <array>
@@ -6,8 +6,8 @@
 namespace vkw {
 namespace {
 
-// Sources, as cited next to the table in PHYSICS.md section 1:
-// - seed 000, table 5.1 and section 5.1: every preset uses pure-water absorption (sigma_a);
+// Sources, as cited next to the table in docs/model.md section 1:
+// - de la Fuente 2011, table 5.1 and section 5.1: every preset uses pure-water absorption (sigma_a);
 //   pure-water scattering from b_w = 0.00288 (lambda / 500 nm)^-4.32 (the "pure" sigma_s);
 //   the particle scattering of the clear-ocean, coastal and turbid-harbour waters.
 // - Petzold's measured mean cosine of ocean-particle scattering, about 0.92, hence g = 0.9

@@ -1,4 +1,4 @@
-// The water's optical properties (PHYSICS.md section 1, "Medium"): homogeneous absorption and
+// The water's optical properties (docs/model.md section 1, "Medium"): homogeneous absorption and
 // scattering per RGB channel and a Henyey-Greenstein phase function, and the named presets.
 #pragma once
 

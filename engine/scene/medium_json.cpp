@@ -1,4 +1,4 @@
-// The "medium" section of the scene schema: a named preset (medium.cpp, PHYSICS.md section 1)
+// The "medium" section of the scene schema: a named preset (medium.cpp, docs/model.md section 1)
 // or explicit coefficients, never both.
 #include "engine/scene/scene_json.hpp"
 

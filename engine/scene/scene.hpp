@@ -1,7 +1,7 @@
 // The scene as the renderers see it: camera, sun, sky, floor, water, medium, receivers and
 // effect settings, in double precision (the CPU reference renderer works in doubles).
 // Units: metres, y up, right-handed; irradiance in W m^-2 and radiance in W m^-2 sr^-1 per RGB
-// channel (PHYSICS.md section 1).
+// channel (docs/model.md section 1).
 //
 // The default member values are the defaults of the optional fields of the scene file
 // (scenes/README.md); the loader reads them from here, so they are stated only once.
@@ -68,7 +68,7 @@ struct FloorPlane {
 // water volume below it down to level - depth (or to the floor when depth is not given).
 struct Water {
     double level = 0.0;                   // metres, mean surface height
-    double ior = 1.333;                   // index of refraction, in [1, 2] (PHYSICS.md section 1)
+    double ior = 1.333;                   // index of refraction, in [1, 2] (docs/model.md section 1)
     double half_extent = 10.0;            // metres, > 0
     // Surface grid cells per side, in [2, 4096]. The device's own limits (buffer sizes,
     // dispatch counts) are checked by the renderer, not here.
@@ -80,7 +80,7 @@ struct Water {
 
 enum class ReceiverType : uint8_t { Plane, Box, Sphere, Terrain, Gltf };
 
-// A Lambertian object (PHYSICS.md section 1): the built-in shape or glTF mesh, already
+// A Lambertian object (docs/model.md section 1): the built-in shape or glTF mesh, already
 // transformed to world space.
 struct Receiver {
     std::string name;                     // from the file; default: its field path, "receivers[2]"
@@ -98,8 +98,8 @@ enum class EffectMode : uint8_t { Auto, On, Off };
 // How the water shading finds the scene's objects along reflected and refracted rays
 // (effects.reflection.method, effects.refraction.method; passes/scene_views/scene_view.hpp).
 enum class SceneLookup : uint8_t {
-    Projective,   // the estimated hit, refined by fixed-point steps (seeds 000 and 001)
-    ScreenSpace,  // a ray march through the view's depth, then bisection (seed 002)
+    Projective,   // the estimated hit, refined by fixed-point steps (de la Fuente 2011 and Optical Phenomena c. 2008)
+    ScreenSpace,  // a ray march through the view's depth, then bisection (Ojeda & Susín 2013)
 };
 
 struct EffectSettings {
@@ -107,7 +107,7 @@ struct EffectSettings {
     // reflection and refraction only: the method and its number of steps
     SceneLookup method = SceneLookup::Projective;
     int max_steps = 64;
-    // refraction, screen-space only: seed 002's blend to the direct view where less than this
+    // refraction, screen-space only: Ojeda & Susín 2013's blend to the direct view where less than this
     // much water (m, along the view ray) lies over what is behind; 0: off (the exact default)
     double shallow_blend = 0.0;
 };
@@ -118,7 +118,7 @@ inline constexpr std::size_t kEffectCount = kAllEffects.size();
 // effects.godrays.method: how the in-scatter of the sun's beams under the water is computed
 // (passes/godrays/godrays.hpp).
 enum class GodrayMethod : uint8_t {
-    Lines,    // each photon's beam walked as a line over the pixels it crosses (seed 000 section 4.6)
+    Lines,    // each photon's beam walked as a line over the pixels it crosses (de la Fuente 2011 section 4.6)
     Marched,  // the baseline: each view ray marched through the water
 };
 
@@ -135,19 +135,19 @@ struct GodraySettings {
 enum class CausticKernel : uint8_t {
     Bilinear,  // a tent one texel wide: the 2x2 bilinear splat
     Adaptive,  // a tent as wide as the photon's neighbours land apart (1 to 4 texels per axis)
-    Footprint, // the photon's sub-cell's footprint, by area (seed 004's area ratio; up to 8 texels per axis)
+    Footprint, // the photon's sub-cell's footprint, by area (Tipprasert 2006's area ratio; up to 8 texels per axis)
 };
 
 // effects.caustics.method: what produces the caustic map.
 enum class CausticMethod : uint8_t {
     Photons,     // the photon grid (passes/caustics/caustics_photons.hpp)
-    Procedural,  // seed 003's backward ray and sun lobe, a baseline (passes/caustics/caustics_procedural.hpp)
+    Procedural,  // Guardado & Sánchez-Crespo 2004's backward ray and sun lobe, a baseline (passes/caustics/caustics_procedural.hpp)
 };
 
 // effects.caustics.splat: where the photons' flux is gathered.
 enum class CausticSplat : uint8_t {
     LightSpace,   // the light-space map along the refracted sun, read by every receiver (passes/caustics/caustics_photons.hpp)
-    CameraSpace,  // gaussians on the receivers the camera sees without the water (seed 002;
+    CameraSpace,  // gaussians on the receivers the camera sees without the water (Ojeda & Susín 2013;
                   // passes/caustics/caustics_camera_splats.hpp)
 };
 
@@ -179,23 +179,23 @@ struct CausticBlurSettings {
 
 // effects.water.fresnel: how the surface splits light between reflection and refraction.
 enum class SurfaceFresnel : uint8_t {
-    Exact,    // the Fresnel equations (PHYSICS.md section 2), total internal reflection included
+    Exact,    // the Fresnel equations (docs/model.md section 2), total internal reflection included
     Schlick,  // Schlick's approximation, taken on the less dense side (common/fresnel.glsl)
-    Power,    // seed 001's power term F = (1 - E.N)^q; total internal reflection kept from the exact form
+    Power,    // Optical Phenomena c. 2008's power term F = (1 - E.N)^q; total internal reflection kept from the exact form
 };
 
-// effects.water.depth_blend: seed 001's depth colour, C_w + exp(-k d) (C - C_w), in place of the
+// effects.water.depth_blend: Optical Phenomena c. 2008's depth colour, C_w + exp(-k d) (C - C_w), in place of the
 // medium's attenuation and in-scatter along refracted rays (d: their path in the water).
 struct DepthBlend {
-    glm::dvec3 colour{0.0, 0.2, 0.1};  // C_w, as radiance (the seed's table: a display colour)
-    double k = 0.5;                     // 1/m (the seed's table)
+    glm::dvec3 colour{0.0, 0.2, 0.1};  // C_w, as radiance (the paper's table: a display colour)
+    double k = 0.5;                     // 1/m (the paper's table)
 };
 
 // The settings of effects.water beside its mode: the surface's shading. The defaults are the
-// model of PHYSICS.md section 1; the others are the seeds' approximations, there to be measured.
+// model of docs/model.md section 1; the others are the published approximations, there to be measured.
 struct WaterShadingSettings {
     SurfaceFresnel fresnel = SurfaceFresnel::Exact;
-    double fresnel_power = 4.5;  // q of the power term, in [1, 10] (the seed's table: 4.5)
+    double fresnel_power = 4.5;  // q of the power term, in [1, 10] (the paper's table: 4.5)
     std::optional<DepthBlend> depth_blend;
 };
 
@@ -226,7 +226,7 @@ struct Scene {
 //   L = mix(horizon, zenith, pow(dir.y, exponent)) for dir.y >= 0, ground below.
 glm::dvec3 sky_radiance(const Sky& sky, const glm::dvec3& dir);
 
-// L_sky_avg of PHYSICS.md section 1: (1/pi) * integral over the upper hemisphere of
+// L_sky_avg of docs/model.md section 1: (1/pi) * integral over the upper hemisphere of
 // L cos(theta) d(omega). Constant: radiance; gradient, in closed form:
 //   horizon + (zenith - horizon) * 2 / (exponent + 2).
 glm::dvec3 sky_average_radiance(const Sky& sky);

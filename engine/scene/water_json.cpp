@@ -8,7 +8,7 @@ Water read_water(FieldReader& fields) {
     const Water defaults;
     Water water;
     water.level = fields.number("level", Range::any("m"), defaults.level);
-    // Below 1, total internal reflection would occur above the surface (PHYSICS.md section 1).
+    // Below 1, total internal reflection would occur above the surface (docs/model.md section 1).
     water.ior = fields.number("ior", Range::closed(1.0, 2.0), defaults.ior);
     water.half_extent = fields.number("half_extent", Range::above(0.0, "m"), defaults.half_extent);
     // Only the schema's range here: what the device can hold is checked by the renderer.

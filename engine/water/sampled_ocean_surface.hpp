@@ -1,4 +1,4 @@
-// The FFT ocean, fast and with a bounded error, for the CPU reference renderer (issue 10).
+// The FFT ocean, fast and with a bounded error, for the CPU reference renderer.
 // FftOceanSurface sums all n^2 modes at every point (exact, about a millisecond per point at
 // n = 256): far too slow for crossing view rays and for mapping millions of caustic beams.
 //

@@ -30,7 +30,7 @@ struct SurfacePoint {
 // parts of a folding surface do). Where the tangents are parallel or zero, |cross| below
 // 1e-12 (the cusp of a Gerstner wave at steepness 1), the normal is undefined (the two sides
 // of a cusp have opposite horizontal normals); the symmetric choice (0, 1, 0) is returned
-// there instead of NaN or rounding noise (PHYSICS.md section 8).
+// there instead of NaN or rounding noise (docs/model.md section 8).
 SurfacePoint make_surface_point(const glm::dvec3& position, const glm::dvec3& dP_du,
                                 const glm::dvec3& dP_dv);
 

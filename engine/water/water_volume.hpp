@@ -1,5 +1,5 @@
 // The closed mesh of the water body, for the stencil split of the scene into "above" and
-// "under" the water (seed 000 section 4.2: the volume's front and back faces are counted,
+// "under" the water (de la Fuente 2011 section 4.2: the volume's front and back faces are counted,
 // so it must be watertight and consistently wound).
 //
 // Layout (R = grid_resolution, E = half_extent):

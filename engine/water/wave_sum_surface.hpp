@@ -1,4 +1,4 @@
-// A sum of directional sine and Gerstner waves with analytic first derivatives (seed 003's
+// A sum of directional sine and Gerstner waves with analytic first derivatives (Guardado & Sánchez-Crespo 2004's
 // "derivatives, not finite differences"; the Gerstner form of GPU Gems 1 ch. 1, y up).
 //
 // For wave i with amplitude A, wave number k = 2 pi / wavelength, unit direction of travel

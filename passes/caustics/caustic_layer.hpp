@@ -1,4 +1,4 @@
-// The caustic layer (EXR channels caustic.R/G/B; issue 10 item 4, issue 11 item 3): per pixel,
+// The caustic layer (EXR channels caustic.R/G/B): per pixel,
 // the sun's irradiance (W m^-2) on the receiver the pixel sees under the water (through the
 // surface for a camera above it), 0 elsewhere: what `vkwater reference` writes beside its image,
 // so that the caustics can be compared alone. Only when asked for (RenderOptions::caustic_layer).

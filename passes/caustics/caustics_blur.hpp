@@ -1,5 +1,5 @@
-// The caustic map's density-adaptive, energy-preserving blur (issue 7 item 5;
-// shaders/caustics/caustic_blur.comp): two separable passes over the resolved irradiance map,
+// The caustic map's density-adaptive, energy-preserving blur
+// (shaders/caustics/caustic_blur.comp): two separable passes over the resolved irradiance map,
 // each source texel spread over a tent whose width grows where photons are sparse
 // (r = r0 sqrt(E_flat / E), at most 4 texels; r0 = effects.caustic_blur.radius), with weights
 // normalised over the taps on the map, so the map's total flux is kept to fp32 rounding. The

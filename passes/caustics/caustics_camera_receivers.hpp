@@ -1,4 +1,4 @@
-// The receivers the camera sees without the water (seed 002 section 4, step 1), for the
+// The receivers the camera sees without the water (Ojeda & Susín 2013 section 4, step 1), for the
 // camera-space caustic splats (passes/caustics/caustics_camera_splats.hpp): the floor plane and the receiver
 // meshes below the mean level plus the clip margin, drawn from the camera with the scene views'
 // guard band (shaders/scene_views/scene_view.glsl, so photons and refracted view rays that land

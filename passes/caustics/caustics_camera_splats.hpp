@@ -1,4 +1,4 @@
-// Camera-space caustic splats (issue 8 item 1; seed 002 section 4; effects.caustics.splat =
+// Camera-space caustic splats (Ojeda & Susín 2013 section 4; effects.caustics.splat =
 // camera-space): the photon grid of the light-space map, traced identically
 // (shaders/caustics/caustic_grid_photon.glsl), splatted not into a map along the sun but onto the
 // receivers the camera sees without the water (passes/caustics/caustics_camera_receivers.hpp), as gaussians
@@ -12,7 +12,7 @@
 // does not see (hidden, off the view, or only in a reflection) get no splat and fall back to the
 // flat-surface stand-in.
 // Written by compute: rasterised points run at about 5 M/s on lavapipe against about 300 M/s for
-// compute atomics (LAVAPIPE.md), so no rasterised variant.
+// compute atomics (docs/lavapipe.md), so no rasterised variant.
 // Memory: the view (RGBA32F, 16 B), its depth (4 B), the flux pyramid (3 x uint64, 24 B, times 1.33
 // for the levels) and the irradiance (RGBA32F, 16 B) per pixel of the guard-banded view: about 68 B
 // x 1.5^2 per output pixel.

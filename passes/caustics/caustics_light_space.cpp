@@ -17,7 +17,7 @@ constexpr uint32_t kMaxPhotonsPerSide = 65536;  // R S: photon indices stay with
 // kept at least this fraction of its u extent so that A_ls (a divisor in the resolve) stays > 0.
 constexpr double kMinAspect = 1e-6;
 
-// Unpolarised Fresnel transmittance from air into the water (PHYSICS.md section 2), double.
+// Unpolarised Fresnel transmittance from air into the water (docs/model.md section 2), double.
 double transmittance(double cos_i, double n, double& cos_t) {
     const double sin2_t = (1.0 - cos_i * cos_i) / (n * n);
     cos_t = std::sqrt(std::max(0.0, 1.0 - sin2_t));

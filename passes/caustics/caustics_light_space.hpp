@@ -1,4 +1,4 @@
-// The inputs of the caustic passes and the light-space frame of their map (issue 7 items 1-4),
+// The inputs of the caustic passes and the light-space frame of their map,
 // computed once on the CPU in double:
 // - direction: the map is a projection along the flat-water refracted sun t (the beam's mean
 //   direction under the water), so every receiver point the flat beam reaches is visible in it:

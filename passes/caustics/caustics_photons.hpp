@@ -1,4 +1,4 @@
-// The photon grid of the surface caustics (issue 7 items 2-4):
+// The photon grid of the surface caustics:
 // one compute pass that traces S x S photons per cell of the GPU water grid (S = 1: one photon per
 // cell, its intercepted area the cell's true vector area; shaders/caustics/caustic_photon.glsl),
 // refracts them with the exact Fresnel of common/fresnel.glsl, carries them to the floor plane,

@@ -1,12 +1,12 @@
-// Seed 003's procedural caustic as a baseline (effects.caustics.method = procedural; issue 8):
+// Guardado & Sánchez-Crespo 2004's procedural caustic as a baseline (effects.caustics.method = procedural):
 // no photons. Each texel of the light-space caustic map (the same frame as the photons', so every
 // receiver reads it through the same lookup) takes the point where its line along the flat-water
 // refracted sun t crosses the mean level, the water's normal there (the surface grid, bilinear
 // between vertices, looked up by grid parameter: no horizontal-displacement inversion), and
-// traces seed 003's backward ray: up along -t, refracted into the air, compared with the
+// traces Guardado & Sánchez-Crespo 2004's backward ray: up along -t, refracted into the air, compared with the
 // direction of the sun. Its irradiance is the flat surface's, E_perp attenuated to the floor,
 // times a sun-disk lobe exp(-(theta / 4 degrees)^2) of the angle theta between the refracted ray
-// and the sun (seed 003's blurred "sun map"; 4 degrees is this baseline's one free parameter).
+// and the sun (Guardado & Sánchez-Crespo 2004's blurred "sun map"; 4 degrees is this baseline's one free parameter).
 // Flat water gives theta = 0 everywhere, the stand-in exactly; under waves it only darkens (no
 // focusing, no energy conservation): the aesthetic method the seed describes, there to be measured.
 #pragma once

@@ -1,4 +1,4 @@
-// The caustic map a receiver samples (issue 7 item 4): the fixed-point flux of
+// The caustic map a receiver samples: the fixed-point flux of
 // add_caustic_photon_pass converted to irradiance on a plane normal to the sun,
 // E_perp = Phi_texel / A_ls per RGB, in an RGBA32F image (W x H, alpha 1), plus the uniform
 // buffer of its light-space frame. A receiver converts with E = E_perp |s . N_r| by including

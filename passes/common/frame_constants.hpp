@@ -10,7 +10,7 @@
 
 namespace vkw {
 
-// Solid angle of the sun's disk as the model fixes it (PHYSICS.md section 1), and the
+// Solid angle of the sun's disk as the model fixes it (docs/model.md section 1), and the
 // angular radius it corresponds to: 2 pi (1 - cos r) = 6.80e-5 sr for r = 0.2666 deg.
 inline constexpr double kSunDiskSolidAngle = 6.80e-5;
 inline constexpr double kSunDiskAngularRadiusDeg = 0.2666;

@@ -100,7 +100,7 @@ void decide_scene_lookups(fg::FrameNeeds& needs, const Scene& scene, const Water
 // Godrays (volume caustics): the sun's refracted beams scattered toward the camera, as lines
 // (passes/godrays/godrays.hpp). They need a lit, scattering medium in view. Under flat water with
 // nothing over it to shadow the beams, the beams are uniform and the shading's analytic
-// in-scatter (PHYSICS.md section 6) is already exact, so the lines would only add their
+// in-scatter (docs/model.md section 6) is already exact, so the lines would only add their
 // sampling error.
 void decide_godrays(fg::FrameNeeds& needs, const Scene& scene, const WaterBounds& bounds, bool water_visible,
                     bool sun_up) {

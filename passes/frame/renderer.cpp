@@ -40,7 +40,7 @@ namespace {
 // Texels per side of the light-space caustic map: matched to the photon grid (R photons
 // per side, plus the fit's one-texel border), so that each texel receives about one
 // photon on flat water and the 2x2 splat kernel leaves no holes between photons (the
-// photon-density sizing of the splat, seed 000's point size regulation, comes later).
+// photon-density sizing of the splat, de la Fuente 2011's point size regulation, comes later).
 // The caustic map's texels per side: map_scale texels per water cell, plus a texel of border on
 // each side (scale 1: texel = cell, passes/caustics/caustics_light_space.hpp).
 uint32_t caustic_map_texels(uint32_t grid_resolution, double map_scale) {
@@ -380,7 +380,7 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
                                       passes::godray_configuration(scene.effects.godrays) + " output " +
                                       (output ? output->key : std::string("readback"));
     *constants_ = make_frame_constants(scene, options.width, options.height);
-    // Counted once (PHYSICS.md section 1): the godray passes, when they run, are the
+    // Counted once (docs/model.md section 1): the godray passes, when they run, are the
     // in-scatter of sunlight, and the shading's analytic in-scatter is switched off. (An
     // effect without a decision counts as needed; godrays have passes only once decided.)
     const fg::EffectDecision* godrays = needs.find(Effect::VolumeCaustics);

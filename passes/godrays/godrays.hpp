@@ -1,5 +1,5 @@
-// Godrays, the volume caustics (issue 9): the in-scatter of the sun's refracted beams along the
-// view rays in the water (PHYSICS.md section 6), in place of the shading's analytic in-scatter
+// Godrays, the volume caustics: the in-scatter of the sun's refracted beams along the
+// view rays in the water (docs/model.md section 6), in place of the shading's analytic in-scatter
 // (the renderer clears frame.medium_options.x while these passes run: counted once). Two methods
 // (effects.godrays.method):
 //   lines    add_godray_beams_pass -> add_godray_depth_pass -> add_godray_lines_passes ->

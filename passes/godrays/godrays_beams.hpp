@@ -1,7 +1,7 @@
-// The godray beams (issue 9 item 1): one photon per cell of a coarse G x G grid over the water
+// The godray beams: one photon per cell of a coarse G x G grid over the water
 // surface, traced exactly as the caustic photons are (shaders/caustics/caustic_photon.glsl: the
 // cell's vector area, exact Fresnel, refraction, the same drop rules) but without extinction, so
-// each carries Phi0 = E_s max(0, -s.a) T(theta_i), the flux just below the surface (PHYSICS.md
+// each carries Phi0 = E_s max(0, -s.a) T(theta_i), the flux just below the surface (docs/model.md
 // section 6). Its beam runs from the entry point along the refracted direction t to the floor
 // plane, or to max_depth below the mean level. The cell's corners are the GPU surface grid
 // (passes/water/water_surface.hpp, R x R cells) interpolated bilinearly at i R / G: with G = R the

@@ -1,4 +1,4 @@
-// One direction of the godray blur (issue 9 item 2; shaders/godrays/godray_blur.comp): binomial
+// One direction of the godray blur (shaders/godrays/godray_blur.comp): binomial
 // weights 1 4 6 4 1 / 16 along x or y, taps on another surface (scene distance off by more than 5%)
 // left out and the rest renormalised. Run along x, then along y: a 5 x 5 binomial kernel of
 // variance 1 pixel^2 per axis that never carries light across a depth edge.

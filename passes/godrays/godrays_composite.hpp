@@ -1,4 +1,4 @@
-// The godrays added to the HDR colour (issue 9 item 2; shaders/godrays/godray_composite.frag): a
+// The godrays added to the HDR colour (shaders/godrays/godray_composite.frag): a
 // full-screen triangle with additive blending that upsamples the godray radiance depth-aware (the
 // bilinear taps on this pixel's surface; the nearest in distance where none is). The radiance
 // already holds T / n^2 where the view enters the water from above, so this is a plain sum.

@@ -1,4 +1,4 @@
-// The scene at the godray resolution (issue 9 item 2): per godray pixel, the distance along its
+// The scene at the godray resolution: per godray pixel, the distance along its
 // ray to the farthest scene surface among the output pixels it covers, and whether the camera ray
 // starts in the water (shaders/godrays/godray_depth.comp). The lines test beam points against it,
 // the blur and the upsampling keep to one surface with it, and the marched baseline ends its

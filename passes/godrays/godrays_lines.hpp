@@ -1,4 +1,4 @@
-// The godray lines (issue 9 items 1 and 2; PHYSICS.md section 6; seed 000 section 4.6): every beam
+// The godray lines (docs/model.md section 6; de la Fuente 2011 section 4.6): every beam
 // of add_godray_beams_pass is walked over the godray pixels it crosses by a compute shader (a DDA
 // along the line's major axis, shaders/godrays/godray_lines.comp), depositing the in-scattered
 // radiance Delta L = Phi0 sigma_s p(cos alpha) exp(-sigma_t (d_in + s_w)) l_pix / A_pix in each,

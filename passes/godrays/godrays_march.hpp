@@ -1,4 +1,4 @@
-// The marched baseline of the godrays (issue 9 item 4; shaders/godrays/godray_march.comp): each
+// The marched baseline of the godrays (shaders/godrays/godray_march.comp): each
 // godray pixel's view ray is followed through the water in `steps` equal steps per segment (from a
 // camera in the water to the scene, and on along the surface's reflection; from the air along the
 // ray refracted by the flat surface, times T / n^2). At each step's midpoint the sun's light is the

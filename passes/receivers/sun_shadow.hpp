@@ -1,4 +1,4 @@
-// The sun's shadow map (PHYSICS.md section 1: the sun is shadowed by objects): the receiver
+// The sun's shadow map (docs/model.md section 1: the sun is shadowed by objects): the receiver
 // meshes' depth seen along a beam, orthographic in the branchless basis of
 // caustics_light_space.hpp (finite for an overhead sun), fitted on the CPU in double. Two halves
 // side by side in one D32_SFLOAT image, reversed like the scene depth (1 nearest the light, 0,
@@ -7,7 +7,7 @@
 //     (shadows above the water, and at the point where the refracted beam enters the water);
 //   - right, for scenes with water: along the flat surface's refracted beam t, the meshes under
 //     the water (clipped at the mean level), fitted to the part of the box below it (shadows
-//     under the water: PHYSICS.md section 1 shadows the beam along t). Under waves the beam's
+//     under the water: docs/model.md section 1 shadows the beam along t). Under waves the beam's
 //     direction varies; the shadow follows the mean direction (an approximation).
 // Only the meshes occlude; the floor is a plane under everything and never shadows anything.
 // Receivers read it through LightingInputs (bindings 6 and 7) with

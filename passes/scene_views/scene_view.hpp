@@ -1,14 +1,14 @@
-// Scene views for the water's reflection and refraction of objects (issue 6; seed 000
-// section 4.4, seed 001 sections 3 and 5, seed 002 section 5): the receiver meshes on
+// Scene views for the water's reflection and refraction of objects (de la Fuente 2011
+// section 4.4, Optical Phenomena c. 2008 sections 3 and 5, Ojeda & Susín 2013 section 5): the receiver meshes on
 // one side of the water plane, rendered offscreen with the field of view widened by a
 // guard band (shaders/scene_views/scene_view.glsl), each texel holding the radiance that
 // leaves the receiver toward the view's eye and its distance. The water's shader then
 // follows its reflected and refracted rays through them (water/scene_lookup.glsl).
 //   - reflection, projective: the mirror image of the camera's side (the mirrored camera);
-//   - reflection, screen-space: the camera's side from the camera (seed 002's 'over');
-//   - refraction, both methods: the other side from the camera (seed 002's 'below').
+//   - reflection, screen-space: the camera's side from the camera (Ojeda & Susín 2013's 'over');
+//   - refraction, both methods: the other side from the camera (Ojeda & Susín 2013's 'below').
 // The floor and the sky are not in the views: the lookups meet them exactly (the
-// floor is a plane, the ray-plane intersection of seed 000 section 4.4).
+// floor is a plane, the ray-plane intersection of de la Fuente 2011 section 4.4).
 // The sides follow the camera's medium per frame (frame constants); the clip planes lie
 // the waves' amplitude plus a millimetre beyond the mean level, so objects in the band of
 // the waves are in both views.

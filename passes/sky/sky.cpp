@@ -20,7 +20,7 @@ void add_sky_pass(fg::FrameGraph& graph) {
         [&](fg::PassBuilder& builder, Data& d) {
             d.constants = builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants));
             // HDR radiance in 32-bit float: the sun's disk alone exceeds half-float range
-            // once E_s > 4.4 W m^-2 (PHYSICS.md section 1).
+            // once E_s > 4.4 W m^-2 (docs/model.md section 1).
             d.hdr = builder.create_image("hdr colour", {VK_FORMAT_R32G32B32A32_SFLOAT});
             d.hdr = builder.color_attachment(d.hdr, fg::LoadOp::DontCare);
             if (graph.blackboard().has(keys::kCameraMedium)) {

@@ -17,9 +17,9 @@ struct WaterPush {
     uint32_t reflection_steps, refraction_steps;
     float scene_size;
     float shallow_blend;
-    uint32_t fresnel;  // 0 exact, 1 Schlick, 2 seed 001's power term
+    uint32_t fresnel;  // 0 exact, 1 Schlick, 2 Optical Phenomena c. 2008's power term
     float fresnel_power;
-    uint32_t depth_blend;  // 1: seed 001's depth colour
+    uint32_t depth_blend;  // 1: Optical Phenomena c. 2008's depth colour
     float blend_k;
     float pad;  // water_colour is a vec4 at offset 48
     float water_colour[4];

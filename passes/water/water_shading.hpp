@@ -23,7 +23,7 @@ struct WaterSceneLookups {
     float shallow_blend = 0.0f;  // m: screen-space refraction blends to the direct view under this much water
 };
 
-// The surface's shading model (effects.water): the Fresnel form and seed 001's depth colour.
+// The surface's shading model (effects.water): the Fresnel form and Optical Phenomena c. 2008's depth colour.
 struct WaterSurfaceShading {
     SurfaceFresnel fresnel = SurfaceFresnel::Exact;
     float fresnel_power = 4.5f;

@@ -1,5 +1,5 @@
 // The stencil split of the view into "ray starts above" and "ray starts under" the water
-// (seed 000 section 4.2; issue 5 item 1): for every pixel, the medium of the camera ray's
+// (de la Fuente 2011 section 4.2): for every pixel, the medium of the camera ray's
 // origin on the near plane, published as the mask keys::kCameraMedium (R8_UNORM, 1 in the
 // water, 0 in the air) that the floor and water shading read per pixel. Serves
 // Effect::UnderwaterView: culled when no ray can start in the water.

@@ -1,4 +1,4 @@
-// The camera-space caustic irradiance a receiver point reads (issue 8 item 1): the point is
+// The camera-space caustic irradiance a receiver point reads: the point is
 // projected into the receivers' water-less view (caustic_camera_view.glsl; for a refracted view
 // ray, the projection of where the ray meets the receiver, not of where the camera sees it through
 // the water), and the resolved irradiance of passes/caustics/caustics_camera_splats.hpp is read bilinearly

@@ -1,5 +1,5 @@
 #version 460
-// Photon grid -> camera-space caustic flux (issue 8 item 1; seed 002 section 4): each photon of
+// Photon grid -> camera-space caustic flux (Ojeda & Susín 2013 section 4): each photon of
 // the grid (caustic_grid_photon.glsl, the very photons of the light-space map) that lands on a
 // receiver the camera sees without the water is splatted as a gaussian lying in that receiver's
 // tangent plane, into a per-pixel flux buffer of the receivers' view
@@ -16,7 +16,7 @@
 //   M M^T with M the steps to where the photon's grid neighbours' rays meet that plane (the photon
 //   density sizing: a lattice of them is the affine image of an isotropic one and sums flat, and
 //   a focal line keeps its width across the line), plus kMinSigmaPixels of the view's pixels;
-//   seed 000's point size regulation by distance follows from projecting a splat of fixed size on
+//   de la Fuente 2011's point size regulation by distance follows from projecting a splat of fixed size on
 //   the receiver, and its cost is held by the level pyramid (caustic_camera_view.glsl);
 // - taps: every pixel within the ellipse of kSplatCutoff sigmas on the splat's level that shows
 //   the same receiver plane (the same plane test: a splat stops at silhouettes) gets weight

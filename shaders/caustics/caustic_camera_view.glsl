@@ -58,7 +58,7 @@ bool camera_pixel_coord(vec3 p, vec2 size, out vec2 x) {
 // The splats' flux pyramid (passes/caustics/caustics_camera_splats.hpp): level L has pixels 2^L x 2^L view
 // pixels wide (ceil(W / 2^L) x ceil(H / 2^L) of them), stored level after level, three uint64 per
 // pixel. A splat that takes more than kMaxSplatTaps pixels of one level goes to the first level
-// where it fits (seed 000's point size regulation, done by level so that a splat never costs more
+// where it fits (de la Fuente 2011's point size regulation, done by level so that a splat never costs more
 // than that many taps); the resolve adds the levels up.
 const int kCameraCausticLevels = 4;
 const float kMaxSplatTaps = 256.0;  // pixels of the splat's level

@@ -1,10 +1,10 @@
-// The footprint splat of a caustic photon (effects.caustics.kernel = footprint): seed 004's area
+// The footprint splat of a caustic photon (effects.caustics.kernel = footprint): Tipprasert 2006's area
 // ratio done in the light-space map. A photon stands for its sub-cell of the surface; the rays of
 // the sub-cell's four corners, refracted with their own normals and run the photon's path length,
 // land on the corners of its footprint, and the photon's flux is spread over the footprint
 // uniformly, each texel taking the share of the footprint's area it covers (exact polygon
 // clipping of the footprint's two triangles against the texel's square). So the map holds
-// flux / footprint area on the footprint: seed 004's I = Phi / A_d, with T and exp(-sigma_t l) in
+// flux / footprint area on the footprint: Tipprasert 2006's I = Phi / A_d, with T and exp(-sigma_t l) in
 // Phi, and texel values that are box averages of the irradiance (no tent blur). A footprint over
 // more than kMaxFootprintTexels texels on an axis (a sub-cell spread far out of focus) or with no
 // area (its rays cross in a point or a line) falls back to the adaptive tent.

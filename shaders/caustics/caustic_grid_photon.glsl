@@ -1,4 +1,4 @@
-// The photon of one invocation of the photon grid (issue 7 item 2), shared by the kernels that
+// The photon of one invocation of the photon grid, shared by the kernels that
 // splat it (caustic_photons.comp into the light-space map, caustic_camera_splats.comp into the
 // camera's view) so that both trace identical photons: sub-cell (a, b) of cell (i, j) is
 // invocation (i S + a, j_local S + b) of a chunk of cell rows; it leaves from the sub-cell's centre

@@ -1,4 +1,4 @@
-// The caustic irradiance a receiver reads (issue 7 item 4): the point is projected along the
+// The caustic irradiance a receiver reads: the point is projected along the
 // map's direction t (the flat-water refracted sun) into the light-space map that
 // passes/caustics/caustics_resolve.hpp writes (irradiance on a plane normal to t, E_perp = Phi_texel /
 // A_ls), bilinearly between texel centres, and converted to the receiver:

@@ -1,4 +1,4 @@
-// One caustic photon (issue 7 item 2, PHYSICS.md sections 4 and 8): sub-cell (a, b) of cell
+// One caustic photon (docs/model.md sections 4 and 8): sub-cell (a, b) of cell
 // (i, j) of the GPU water grid (passes/water/water_surface.hpp), refracted with the exact Fresnel of
 // common/fresnel.glsl and carried to the floor plane (the receiver meshes in front of it are
 // found by caustic_receiver_hit.glsl). Shared by the fixed-point kernel, the godray beams and any
@@ -11,7 +11,7 @@
 #include "water/water_vertex.glsl"
 
 // A refracted ray whose y component is above -kCausticUpEpsilon is dropped: it points up or runs
-// so flat that the division by t.y would send it arbitrarily far (PHYSICS.md section 8).
+// so flat that the division by t.y would send it arbitrarily far (docs/model.md section 8).
 const float kCausticUpEpsilon = 1e-6;
 
 struct CausticPhoton {
@@ -61,7 +61,7 @@ bool caustic_patch_ray(CausticCell cell, vec2 at, CausticLightSpace space, out v
 // positive), the refracted ray points up, or the surface lies below the floor.
 // Intercepted area: the sub-cell's vector area a = (d2 x d1) / 2 from its diagonals, which is
 // exactly |dP/du x dP/dv| du dv (times the unit normal) at the centre of a bilinear patch; for a
-// heightfield -s.a = (cos theta_s - u_h . grad h) dA_h, PHYSICS.md section 4's intercepted area,
+// heightfield -s.a = (cos theta_s - u_h . grad h) dA_h, docs/model.md section 4's intercepted area,
 // so no slope factor is applied again.
 // Optics (Fresnel, refraction): the interpolated vertex normals at the centre, which are the
 // surface model's analytic normals rather than the chord's.

@@ -1,5 +1,5 @@
 #version 460
-// Seed 003's procedural caustic, one texel of the light-space caustic map per invocation
+// Guardado & Sánchez-Crespo 2004's procedural caustic, one texel of the light-space caustic map per invocation
 // (passes/caustics/caustics_procedural.hpp says what and why).
 #extension GL_GOOGLE_include_directive : require
 

@@ -1,10 +1,10 @@
-// Where a caustic photon meets the receivers under the water (issue 7 item 2): the first surface
+// Where a caustic photon meets the receivers under the water: the first surface
 // along its refracted ray among the floor plane (exact) and the receiver meshes as the sun shadow
 // map's beam half sees them (passes/receivers/sun_shadow.hpp: their depth along the flat-water refracted
 // sun t0, clipped at the mean level), and whether objects above the water stop it before it
 // enters. Included by the photon kernel in its VKWATER_SUN_SHADOW variant (scenes with meshes).
 //
-// The search (after Shah, Konttinen and Pattanaik's iterative estimate, seed 000): along the
+// The search (after Shah, Konttinen and Pattanaik's iterative estimate, de la Fuente 2011): along the
 // photon's ray x(l) = entry + l t, the gap f(l) = (depth of the nearest receiver in x's column
 // along t0) - (depth of x) is positive before the receiver and 0 on it. Starting from the floor
 // (exact, f = 0 there unless a mesh is in front), one fixed-point step l += f / (t . t0), then

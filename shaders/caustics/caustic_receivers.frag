@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The receivers as the camera sees them without the water (seed 002 section 4, step 1), for the
+// The receivers as the camera sees them without the water (Ojeda & Susín 2013 section 4, step 1), for the
 // camera-space caustic splats (passes/caustics/caustics_camera_receivers.hpp): the floor and the meshes
 // below the mean level plus the clip margin, each texel holding the receiver's unit normal turned
 // toward the eye (rgb) and its distance from the eye (a; 0 where no receiver is seen).

@@ -1,6 +1,6 @@
-// The splat kernel of a caustic photon in the light-space map (issue 7 item 4): a separable tent
+// The splat kernel of a caustic photon in the light-space map: a separable tent
 // whose half-width on each axis is the spacing of the photon's neighbours where they land (the
-// photon-density sizing of the splat, seed 000's point size regulation done in light space),
+// photon-density sizing of the splat, de la Fuente 2011's point size regulation done in light space),
 // at least one texel and at most kMaxSplatHalfWidth. The weights sum to one: the caller splits
 // the photon's integer flux over the taps by cumulative rounding, so the taps sum to it exactly.
 // Under flat water (texel = water cell, photons on texel centres) the half-width is one texel

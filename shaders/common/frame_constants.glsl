@@ -14,7 +14,7 @@ layout(set = 0, binding = 0, std140) uniform FrameConstants {
     vec4 sky_horizon;         // rgb: gradient sky at the horizon
     vec4 sky_ground;          // rgb: every direction below the horizon
     vec4 sky_params;          // x: model (0 constant, 1 gradient), y: gradient exponent
-    vec4 sky_average;         // rgb: L_sky_avg (PHYSICS.md section 1), computed on the CPU
+    vec4 sky_average;         // rgb: L_sky_avg (docs/model.md section 1), computed on the CPU
     vec4 sun_disk;            // x: cos of the disk's angular radius, y: its solid angle (sr)
     vec4 floor_plane;         // x: height y of the floor, y: half extent
     vec4 floor_albedo;        // rgb
@@ -26,7 +26,7 @@ layout(set = 0, binding = 0, std140) uniform FrameConstants {
                               //    the stencil split is culled, see water/camera_medium.glsl)
     vec4 camera_near;         // x: near-plane distance, m (the stencil split's clip depth)
     vec4 medium_options;      // x: 1 when the shading adds the analytic in-scatter of the sun's beam; 0 when the
-                              //    godray passes supply the in-scatter instead (counted once, PHYSICS.md section 1)
+                              //    godray passes supply the in-scatter instead (counted once, docs/model.md section 1)
 } frame;
 
 // sigma_s for the analytic single scattering along view rays: zero when the godrays

@@ -1,4 +1,4 @@
-// Fresnel reflectance of a perfect dielectric interface (PHYSICS.md section 2), for
+// Fresnel reflectance of a perfect dielectric interface (docs/model.md section 2), for
 // unpolarised light, from either side. The one place in the shaders where R and T are
 // computed; every pass that crosses the water surface includes this file.
 #ifndef VKWATER_FRESNEL_GLSL

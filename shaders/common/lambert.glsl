@@ -1,4 +1,4 @@
-// Lambertian receivers above the water (PHYSICS.md section 1): L = rho E / pi with
+// Lambertian receivers above the water (docs/model.md section 1): L = rho E / pi with
 // E = E_s max(0, -s.N) V (direct sun, V the visibility of the sun) + pi L_sky_avg (skylight,
 // no occlusion). V is the sun shadow map's compare with VKWATER_SUN_SHADOW (the scene has
 // objects) and 1 without.

@@ -1,4 +1,4 @@
-// The water as a participating medium (PHYSICS.md sections 1 and 6): per-channel
+// The water as a participating medium (docs/model.md sections 1 and 6): per-channel
 // extinction of every unscattered path, the Henyey-Greenstein phase function, and the
 // analytic single scattering of the sun's refracted beam along a view ray in water
 // under a flat surface. Optical depth is carried and exponentiated once; no division
@@ -27,7 +27,7 @@ vec3 one_minus_exp_over_x(vec3 x) {
     return vec3(one_minus_exp_over_x(x.r), one_minus_exp_over_x(x.g), one_minus_exp_over_x(x.b));
 }
 
-// Radiance in the water along a view segment (PHYSICS.md section 6): it starts at
+// Radiance in the water along a view segment (docs/model.md section 6): it starts at
 // depth z0 >= 0, runs a length s in unit direction v and ends at radiance l_behind;
 // the sun's refracted beam t (unit, t.y < 0) has irradiance e_perp0 on a plane normal
 // to it just below the surface. Per channel.

@@ -1,4 +1,4 @@
-// Sky radiance of the model (PHYSICS.md section 1): a constant per channel or the
+// Sky radiance of the model (docs/model.md section 1): a constant per channel or the
 // gradient of scenes/README.md, plus the sun's disk (angular radius 0.2666 degrees,
 // solid angle 6.80e-5 sr) with radiance E_s / 6.80e-5, which only shows (in view and
 // in reflections) and lights nothing.

@@ -3,7 +3,7 @@
 // water, each cell's corners interpolated bilinearly from the GPU surface grid (R x R cells), traced
 // by the caustics' own photon code (caustics/caustic_photon.glsl: vector area, exact Fresnel,
 // refraction, the drop rules) with no extinction, so that its energy times E_s is Phi0, the flux
-// just below the surface (PHYSICS.md section 6). The beam runs from the entry point along t to
+// just below the surface (docs/model.md section 6). The beam runs from the entry point along t to
 // the floor, or to max_depth below the mean level. Variant VKWATER_SUN_SHADOW: objects above the
 // water block the photon at its entry point, and receiver meshes under the water end its beam
 // where the caustic photons end (the sun shadow map's beam half, caustics/caustic_receiver_hit.glsl).

@@ -63,7 +63,7 @@ float sinhc(float y) {
     return abs(y) < 1e-3 ? 1.0 + y * y / 6.0 : (exp(y) - exp(-y)) / (2.0 * y);
 }
 
-// A thin tube's step at level 0 (screen parameters us < ue): PHYSICS.md section 6's line estimate.
+// A thin tube's step at level 0 (screen parameters us < ue): docs/model.md section 6's line estimate.
 // The refracted view's sight is recomputed with the exact surface crossing (the line's is
 // interpolated within its piece, which is good enough to place the pixels but would bias s_w and
 // A_pix, and so the light).

@@ -1,5 +1,5 @@
 #version 460
-// Godray lines (passes/godrays/godrays_lines.hpp; PHYSICS.md section 6, seed 000 section 4.6): each beam
+// Godray lines (passes/godrays/godrays_lines.hpp; docs/model.md section 6, de la Fuente 2011 section 4.6): each beam
 // of godray_beams.comp is walked along its line on the screen, one invocation per beam and view
 // (gl_GlobalInvocationID.z: direct, mirrored or refracted, godray_view.glsl), and deposits its
 // in-scattered radiance into 64-bit fixed-point counters (godray_fixed_point.glsl) of two
@@ -18,7 +18,7 @@
 // distance, within which the surface crossing is taken as affine. The tube's width in pixels across
 // the narrower side of the pixel cone, 2^lambda with lambda = log2(h / (sqrt(Omega) min(cone))),
 // decides how the step deposits (godray_line_estimate.glsl, godray_chords.glsl):
-// - lambda < 0, thinner than a pixel: PHYSICS.md section 6's line estimate at level 0,
+// - lambda < 0, thinner than a pixel: docs/model.md section 6's line estimate at level 0,
 //     Delta L = Phi0 sigma_s p(cos alpha) exp(-sigma_t (d_in + s_w)) l_pix / A_pix,
 //   l_pix the beam length of the step (the exponential integrated over it), spread across the line
 //   over the tube's projected cross-section with the column (a trapezoid, from the projection's
@@ -35,7 +35,7 @@
 // the view ray): a wide tube seen end-on gives each ray the chord it really has; a thin one spreads
 // its step over its projected cross-section, in pixels whose cone is wider than the tube; either way
 // one beam adds to a pixel at most the radiance of its tube seen end-on, sigma_s p E_tube / sigma_t
-// (PHYSICS.md section 6 with the tube's irradiance).
+// (docs/model.md section 6 with the tube's irradiance).
 // Depth: the line estimate tests each pixel of its profile against the scene; a chord is cut at
 // the scene's distance (direct) or kept only where the pixel sees the water surface (mirrored,
 // refracted).
@@ -283,7 +283,7 @@ void main() {
     for (int l = 0; l <= pc.levels; ++l) level_offset[l] = godray_level_offset(image_size, l);
     flat_sun = godray_flat_refracted_sun();
     sigma_t = frame.medium_sigma_t.rgb;
-    // The view ray starts at the eye (PHYSICS.md section 6), not at the near plane: beams are clipped
+    // The view ray starts at the eye (docs/model.md section 6), not at the near plane: beams are clipped
     // just past walk_start() (rounding keeps a clipped end in front of it).
     const float near = 1.001 * walk_start();
 

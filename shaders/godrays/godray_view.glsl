@@ -1,6 +1,6 @@
 // The camera as the godray passes see it, at their own resolution (the output's or half of it):
 // world points to continuous pixel coordinates, pixel rays and their solid angles, the scene's
-// distance behind a pixel, and the three ways a point under the water is seen (PHYSICS.md
+// distance behind a pixel, and the three ways a point under the water is seen (docs/model.md
 // section 6): directly from a camera in the water, mirrored in the surface from below, and
 // refracted through the FLAT surface at the mean level from a camera above it.
 #ifndef VKWATER_GODRAY_VIEW_GLSL
@@ -119,7 +119,7 @@ void godray_pixel_view(uint kind, vec3 d, out vec3 v, out float weight) {
     }
 }
 
-// How the pixel that sees a beam point p sees it (PHYSICS.md section 6).
+// How the pixel that sees a beam point p sees it (docs/model.md section 6).
 struct GodraySight {
     vec3 seen;         // the point whose projection is the pixel: p, its mirror image, or its surface crossing
     vec3 v;            // unit direction of the view ray at p, away from the camera (cos(alpha) = dot(t, -v))

@@ -1,4 +1,4 @@
-// Whether the sun reaches a point (PHYSICS.md section 1: the sun is shadowed by objects, above
+// Whether the sun reaches a point (docs/model.md section 1: the sun is shadowed by objects, above
 // the water along s and below it along the refracted beam t), from the map of
 // passes/receivers/sun_shadow.hpp: the point is projected into an orthographic light space and compared
 // once with the nearest texel's occluder depth. The map's left half looks along s at every

@@ -1,6 +1,6 @@
 // The scene views (passes/scene_views/scene_view.hpp): receiver meshes seen from the camera or from
 // its mirror image in the mean water plane, with the field of view widened by a guard
-// band so that perturbed lookups stay inside (seed 001 found 50% enough). Each texel
+// band so that perturbed lookups stay inside (Optical Phenomena c. 2008 found 50% enough). Each texel
 // holds the radiance leaving the receiver toward the view's eye (rgb) and its distance
 // from that eye (a; 0 where the view sees no receiver). Shared by the views' shaders,
 // which draw them, and the water's, which look them up (water/scene_lookup.glsl).

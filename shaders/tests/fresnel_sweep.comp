@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // Test kernel: evaluates shaders/common/fresnel.glsl from both sides of the interface.
 // Samples i < count use cos_i = i / (count - 1); the next 7 use the cosines in
-// `table_cos` (the angles PHYSICS.md tabulates). Output per sample, 10 floats:
+// `table_cos` (the angles docs/model.md tabulates). Output per sample, 10 floats:
 // cos_i as used, (R, T) exact from air, (R, T) exact from water,
 // (R, T) Schlick from air, (R, T) Schlick from water, and a zero.
 #include "common/fresnel.glsl"

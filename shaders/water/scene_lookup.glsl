@@ -1,11 +1,11 @@
 // Following a ray reflected or refracted at the water surface through a scene view
 // (passes/scene_views/scene_view.hpp, scene_views/scene_view.glsl) to the receiver mesh it meets.
 // Two methods, chosen per scene (effects.reflection.method, effects.refraction.method):
-//   - projective (seeds 000 and 001): the hit is first estimated at the distance of what
-//     the view shows straight behind the surface point (seed 001 eq. 1), then refined by
+//   - projective (de la Fuente 2011 and Optical Phenomena c. 2008): the hit is first estimated at the distance of what
+//     the view shows straight behind the surface point (Optical Phenomena c. 2008 eq. 1), then refined by
 //     fixed-point steps: look up where the estimate projects, move the estimate to the
 //     distance of what is there, until it moves by less than 1e-4 of itself;
-//   - screen-space (seed 002 section 5): march the ray through the view's distances in
+//   - screen-space (Ojeda & Susín 2013 section 5): march the ray through the view's distances in
 //     steps of a few texels on the view, each no longer than the gap between the ray and
 //     what the view shows there (so a step cannot pass through the surface under that
 //     texel), then bisect the last step.

@@ -7,7 +7,7 @@
 struct SceneOptics {
     vec4 refracted_sun;  // xyz: the sun's direction below a flat surface (unit, downward); w: cos(theta_t)
     vec4 e_perp0;        // rgb: E_s cos(theta_s) T(theta_s) / cos(theta_t), just below the surface; 0 without sun
-    vec4 transmission;   // x: T_hemi(n) (PHYSICS.md section 1), y: T(theta_s)
+    vec4 transmission;   // x: T_hemi(n) (docs/model.md section 1), y: T(theta_s)
 };
 
 #endif

@@ -1,4 +1,4 @@
-// Light under the water for Lambertian receivers (PHYSICS.md sections 1 and 3), and the
+// Light under the water for Lambertian receivers (docs/model.md sections 1 and 3), and the
 // floor as the receiver that refracted view rays meet. The sun term is the caustic
 // irradiance when VKWATER_CAUSTICS (the light-space map of passes/caustics/caustics_*, whose photons end on
 // the floor and the receiver meshes) or VKWATER_CAMERA_CAUSTICS (the camera-space splats of
@@ -29,7 +29,7 @@ bool point_under_water(vec3 p) {
 // the camera-space splats, where the camera sees the point), or the stand-in through the flat
 // surface, E_perp max(0, -t.N) exp(-sigma_t depth / cos_t); plus skylight pi L_sky_avg T_hemi
 // exp(-sigma_t depth) (the vertical path of the model). With objects (VKWATER_SUN_SHADOW) the sun
-// is shadowed along the refracted beam t (PHYSICS.md section 1):
+// is shadowed along the refracted beam t (docs/model.md section 1):
 // - the caustic photons were already stopped by objects above the water and ended on the first
 //   receiver along their ray, so the light-space map needs only its depth test: a point behind the
 //   surface the map sees along t (the shadow map's beam half) reads nothing; the camera-space

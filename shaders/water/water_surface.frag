@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The water surface with the simplest correct lookups (PHYSICS.md sections 1-3, 6, 7):
+// The water surface with the simplest correct lookups (docs/model.md sections 1-3, 6, 7):
 // exact Fresnel and total internal reflection, the sky and the sun's disk in reflection,
 // refraction down to the floor plane, radiance scaled by n^2 across the surface, sigma_t
 // attenuation and single scattering along every path in the water. From above and, for
@@ -30,8 +30,8 @@ layout(push_constant) uniform Params {
     float scene_size;                     // m: how far a screen-space march looks when no floor bounds it
     float shallow_blend;                  // m: see below; 0 off
     uint fresnel_model;                   // SURFACE_FRESNEL_* (effects.water.fresnel)
-    float fresnel_power;                  // q of seed 001's power term
-    uint depth_blend;                     // 1: seed 001's depth colour along refracted rays
+    float fresnel_power;                  // q of Optical Phenomena c. 2008's power term
+    uint depth_blend;                     // 1: Optical Phenomena c. 2008's depth colour along refracted rays
     float blend_k;                        // its k, 1/m
     vec4 water_colour;                    // rgb: its C_w (radiance)
 } params;
@@ -41,7 +41,7 @@ const uint SURFACE_FRESNEL_SCHLICK = 1u;
 const uint SURFACE_FRESNEL_POWER = 2u;
 
 // The surface's Fresnel split as the scene chooses it (effects.water.fresnel): the exact equations
-// (the model, PHYSICS.md section 2); Schlick's approximation; or seed 001's power term
+// (the model, docs/model.md section 2); Schlick's approximation; or Optical Phenomena c. 2008's power term
 // F = (1 - E.N)^q with E.N the cosine on the incoming side, which knows no total internal
 // reflection, so the exact form's is kept (R = 1 outside Snell's window from below).
 Fresnel surface_fresnel(float cos_i, float n_i, float n_t) {
@@ -54,7 +54,7 @@ Fresnel surface_fresnel(float cos_i, float n_i, float n_t) {
     return exact;
 }
 
-// Seed 002's saving: a screen-space march is skipped for a ray whose Fresnel weight is
+// Ojeda & Susín 2013's saving: a screen-space march is skipped for a ray whose Fresnel weight is
 // below this (its object is then missed: an error of at most 1% of the object's radiance
 // against the exact lookup behind it). Water's R is at least 0.02, so in practice it skips
 // only refracted rays near grazing incidence.
@@ -114,7 +114,7 @@ vec3 radiance_in_water(vec3 p, vec3 d, bool reflected, float weight, out float l
 #endif
     }
     if (params.depth_blend != 0u && !reflected) {
-        // Seed 001's depth colour in place of the medium along the refracted ray: what the ray
+        // Optical Phenomena c. 2008's depth colour in place of the medium along the refracted ray: what the ray
         // meets fades to the water's colour C_w by exp(-k d), d its length in the water (a ray
         // that meets nothing sees C_w).
         float a = floor_hit || length_in_water > 0.0 ? exp(-params.blend_k * length_in_water) : 0.0;
@@ -151,7 +151,7 @@ void main() {
             float refracted_length;
             transmitted = radiance_in_water(p, refracted_direction, false, f.T, refracted_length, caustic) / (n * n);
 #ifdef VKWATER_SCENE_VIEWS
-            // Seed 002: in very shallow water the screen-space refraction fades to what lies
+            // Ojeda & Susín 2013: in very shallow water the screen-space refraction fades to what lies
             // straight behind the surface, by the water's depth along the view ray (a chosen
             // approximation: it hides the march's misses where the water thins out; off by default).
             if (params.refraction_method == SCENE_LOOKUP_SCREEN_SPACE && params.shallow_blend > 0.0) {

@@ -1,4 +1,4 @@
-// (c) Energy: the flux the photon pass deposits equals PHYSICS.md section 4's integral over the
+// (c) Energy: the flux the photon pass deposits equals docs/model.md section 4's integral over the
 // same surface, computed independently on the CPU (double-precision quadrature over engine/water's
 // analytic WaveSumSurface, not by summing photons). (d) Two runs are bit-identical. (e) A grazing
 // sun gives finite, non-negative maps and never more flux than the surface intercepts.

@@ -1,4 +1,4 @@
-// Flat water (PHYSICS.md section 3): the floor irradiance read through caustic_lookup.glsl equals
+// Flat water (docs/model.md section 3): the floor irradiance read through caustic_lookup.glsl equals
 // E_s cos(theta_s) T exp(-sigma_t d / cos(theta_t)), and with n = 1 the map is uniform to its
 // rounding. W - 2 = H - 2 = R: a point's map position is where its line along the refracted sun
 // crosses the mean level, so under flat water every photon lands on a texel centre (texel = cell)

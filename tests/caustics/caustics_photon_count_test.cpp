@@ -1,4 +1,4 @@
-// More photons change the noise, not the mean (issue 7): under the sine of sine_caustic_scene.hpp
+// More photons change the noise, not the mean: under the sine of sine_caustic_scene.hpp
 // with the floor at the first cusp d* (focal lines in view), the mean floor irradiance of the
 // caustic map over the lit interior stays within 0.5% from a 128^2 to a 1024^2 photon grid (one
 // photon per water-grid cell), while the map itself changes texel by texel.

@@ -1,6 +1,6 @@
-// Caustics on receiver meshes (issue 7): a tilted plane and a sphere under flat water, the
+// Caustics on receiver meshes: a tilted plane and a sphere under flat water, the
 // photons traced against the sun shadow map's beam half (shaders/caustics/caustic_receiver_hit.glsl)
-// and read back with the receiver's own normal. PHYSICS.md section 3 gives the closed form
+// and read back with the receiver's own normal. docs/model.md section 3 gives the closed form
 //   E = E_perp max(0, -t.N) exp(-sigma_t l),  E_perp = E_s T cos(theta_s) / cos(theta_t),
 // l the path from the surface along the refracted sun t. Checked where the receiver point faces
 // the beam with -t.N >= 0.25 (the issue's band: nearer the terminator the texels around a point

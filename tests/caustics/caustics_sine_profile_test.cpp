@@ -1,4 +1,4 @@
-// Sine surface under a vertical sun (issue 7, PHYSICS.md section 5): h = A sin(k x + phase),
+// Sine surface under a vertical sun (docs/model.md section 5): h = A sin(k x + phase),
 // A k = 0.3, lambda = 0.5 m, n = 1.333, clear-ocean water (sine_caustic_scene.hpp). The floor rows
 // of the real-time caustic map at d = 0.5 d*, d* and 2 d* (d* the first cusp's depth) against the
 // CPU double evaluation of section 5 filtered per texel (sine_floor_profile.hpp), over one whole
@@ -19,7 +19,7 @@
 // - against the box-filtered profile, the issue's 2%. The tent and box filters of the exact E
 //   differ by themselves (computed from the CPU model and printed): 0.04% at 0.5 d*, 1.0% at 2 d*,
 //   but 2.2% at d*, where the cusp (E ~ |X - X_c|^(-2/3)) lies inside one texel. A splat whose
-//   footprint is at least one texel (issue 7 item 4; the bilinear splat is exactly a one-texel
+//   footprint is at least one texel (the bilinear splat is exactly a one-texel
 //   box footprint) cannot meet 2% there whatever the photon count: finer texels only shrink the
 //   difference as h^(1/3) (1.8% at 256 texels, where 2 d* then reaches 1.9%). So at d* the box
 //   check asserts the triangle inequality instead, |map - box| <= |map - tent| + |tent - box|,
@@ -171,7 +171,7 @@ TEST_P(caustics_sine_profile, FloorRowMatchesSection5) {
     }
 }
 
-// The footprint kernel (seed 004's area ratio): each photon's flux spread over its sub-cell's
+// The footprint kernel (Tipprasert 2006's area ratio): each photon's flux spread over its sub-cell's
 // footprint by area, so a texel is the box average of the photons' piecewise-constant irradiance,
 // and the issue's 2% against the box-filtered profile applies at every depth, the cusp's included
 // (the footprints there are thin, folded quads whose flux the clipping puts in the right texels).

@@ -1,4 +1,4 @@
-// Steep waves in deep water (issue 7): sines of slope A k = 0.5, 1 and 2 (lambda 0.5 m) over a
+// Steep waves in deep water: sines of slope A k = 0.5, 1 and 2 (lambda 0.5 m) over a
 // floor 1 m and 1 km down, the sun overhead and 60 degrees from the zenith, with no extinction
 // (so the light reaches the floor 1 km down: the waves then send most photons kilometres off the
 // map, some along nearly horizontal refracted rays, through the far-coordinate path of
@@ -60,7 +60,7 @@ TEST_P(caustics_steep_deep, FiniteNonNegativeAndBoundedByTheInterceptedFlux) {
         for (const float e : run.irradiance) bad += !(std::isfinite(e) && e >= 0.0f);
         EXPECT_EQ(bad, 0u) << what << ": non-finite or negative caustic irradiance";
 
-        // Intercepted: PHYSICS.md section 4's E_s integral of max(0, -s.N) dA over the smooth surface
+        // Intercepted: docs/model.md section 4's E_s integral of max(0, -s.N) dA over the smooth surface
         // (CPU quadrature). Each photon carries at most its cell's max(0, -s.a), a the vector area of
         // the chord patch through the cell's vertices; for a sine along x that is the integral of
         // (cos theta_s - u_h . grad h) over the cell, and max(0, integral) <= integral of max(0, .),

@@ -1,6 +1,6 @@
 // Shared parts of the caustic tests: the graph water surface -> photons -> resolve (-> probes
 // through shaders/caustics/caustic_lookup.glsl) -> readbacks, executed once, and the CPU ground
-// truth in double precision (PHYSICS.md sections 2-4), independent of the photon code.
+// truth in double precision (docs/model.md sections 2-4), independent of the photon code.
 #pragma once
 
 #include "engine/framegraph/executor.hpp"
@@ -161,7 +161,7 @@ inline CausticRun run_caustics(Context& context, const passes::WaterSurfaceInput
     return run;
 }
 
-// PHYSICS.md section 2 in double, air to water: T and cos theta_t.
+// docs/model.md section 2 in double, air to water: T and cos theta_t.
 inline double fresnel_t(double cos_i, double n, double* cos_t_out = nullptr) {
     const double cos_t = std::sqrt(std::max(0.0, 1.0 - (1.0 - cos_i * cos_i) / (n * n)));
     const double rs = (cos_i - n * cos_t) / (cos_i + n * cos_t);
@@ -183,7 +183,7 @@ struct LandingWindow {
     double z_width = 0.0;
 };
 
-// PHYSICS.md section 4 over the grid's whole parameter square [-E, E]^2 of a surface that varies
+// docs/model.md section 4 over the grid's whole parameter square [-E, E]^2 of a surface that varies
 // only along x0 (a sine along x): per RGB, E_s * integral of max(0, -s.N) |dP/du x dP/dv|
 // T(theta_i) exp(-sigma_t l) dx0 dz0, midpoint rule with `samples` points along x0 in double,
 // restricted to the photons landing in `window` (a sun in the xy-plane keeps z: a strip in z is

@@ -1,5 +1,5 @@
-// The sine scene of the section-5 caustic tests (issue 7): h = A sin(k x + phase) with A k = 0.3
-// and lambda = 0.5 m, a vertical sun, n = 1.333, clear-ocean water (PHYSICS.md section 1), the
+// The sine scene of the section-5 caustic tests: h = A sin(k x + phase) with A k = 0.3
+// and lambda = 0.5 m, a vertical sun, n = 1.333, clear-ocean water (docs/model.md section 1), the
 // floor at a multiple of the first cusp's depth d*. Builds the GPU inputs (water surface, caustic
 // passes) and the CPU model (sine_floor_profile.hpp) of the same scene, and reads the map's rows.
 #pragma once

@@ -1,6 +1,6 @@
 // The floor irradiance under a sine surface h = A sin(k x + phase) lit by a vertical sun,
-// PHYSICS.md section 5 evaluated on the CPU in double precision, independently of the photon code
-// (no engine or pass code: only the formulas of PHYSICS.md sections 2 and 5), and filtered per
+// docs/model.md section 5 evaluated on the CPU in double precision, independently of the photon code
+// (no engine or pass code: only the formulas of docs/model.md sections 2 and 5), and filtered per
 // texel of a caustic map row:
 // - Box: the texel average (1/h) * integral over the texel of E(X) dX, the quantity;
 // - Tent: (1/h) * integral of E(X) tent((X - c)/h) dX, tent(u) = max(0, 1 - |u|), c the texel
@@ -37,7 +37,7 @@ struct SineFloor {
     double height(double x) const { return amplitude * std::sin(wavenumber * x + phase); }
     double slope(double x) const { return amplitude * wavenumber * std::cos(wavenumber * x + phase); }
 
-    // PHYSICS.md section 5: f = 1 / ((1 - 1/n) A k^2) and the first cusp's depth d* = f - A.
+    // docs/model.md section 5: f = 1 / ((1 - 1/n) A k^2) and the first cusp's depth d* = f - A.
     double focal_length() const { return 1.0 / ((1.0 - 1.0 / ior) * amplitude * wavenumber * wavenumber); }
     double first_cusp_depth() const { return focal_length() - amplitude; }
 

@@ -1,7 +1,7 @@
-// The camera at the edges (issue 12): on the water plane and 1e-6 m above and below it, a
+// The camera at the edges: on the water plane and 1e-6 m above and below it, a
 // 30-frame path through the surface (discontinuous by design: exempt from the continuity test,
 // checked for flicker instead), and under the water looking along the sun's refracted beam, where
-// the single-scattering closed form reaches its 1 + c = 0 limit (PHYSICS.md section 6).
+// the single-scattering closed form reaches its 1 + c = 0 limit (docs/model.md section 6).
 #include "passes/frame/frame_needs.hpp"
 #include "tests/extreme/extreme_support.hpp"
 #include "tests/support/gpu_test.hpp"
@@ -56,7 +56,7 @@ bool crosses_the_surface(const Scene& scene) {
 // fraction of their mean. Away from the crossing, 2%: the camera moves 1 cm a frame, which moves
 // the mean by under 1% a frame (measured), and a smooth sequence leaves its neighbours' range by
 // its curvature only, far less. Across the crossing, 25%: a frame whose whole view took the other
-// medium alone (the per-frame flag of PHYSICS.md section 8) would swing by the difference between
+// medium alone (the per-frame flag of docs/model.md section 8) would swing by the difference between
 // the views above and below, a factor of 2 here (0.263 and 0.125 on flat water), while the
 // composition changes as the near plane cuts through the waves moved one frame 10% (measured) out
 // of its neighbours' range. A step, the crossing itself, stays inside the middle frame's range.
@@ -108,7 +108,7 @@ TEST_F(extreme_camera, UnderwaterLookingAlongTheBeamsTowardTheSunMatchesTheClose
     // the Henyey-Greenstein peak (g = 0.9) lies there too. Sun 60 degrees from the zenith: t makes
     // asin(sin 60 / 1.333) = 40.5 degrees with the vertical, inside Snell's window, so the sun's
     // disk is seen through it. Godrays are off (flat water: the analytic in-scatter is exact), so
-    // the singular godray term of PHYSICS.md section 6 does not arise here. The wide pool: the
+    // the singular godray term of docs/model.md section 6 does not arise here. The wide pool: the
     // lower rows see the floor by total internal reflection up to 4.4 m south.
     const double sin_t = std::sin(60.0 * 3.14159265358979323846 / 180.0) / 1.333;
     const double cos_t = std::sqrt(1.0 - sin_t * sin_t);

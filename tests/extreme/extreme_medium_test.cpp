@@ -1,4 +1,4 @@
-// The water's medium at the edges (issue 12): extinction from 1e-6 to 1e3 per metre, water 1 km
+// The water's medium at the edges: extinction from 1e-6 to 1e3 per metre, water 1 km
 // deep, and the images' continuity in sigma_t and in the phase function's g.
 #include "tests/extreme/extreme_support.hpp"
 #include "tests/support/gpu_test.hpp"

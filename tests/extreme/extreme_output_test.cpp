@@ -1,4 +1,4 @@
-// The frame's output at the edges (issue 12): a caustic peak of 1e6 W m^-2 sr^-1 written to a
+// The frame's output at the edges: a caustic peak of 1e6 W m^-2 sr^-1 written to a
 // half-float EXR (clamped to 65504 and counted, the rest to half precision), and a NaN injected
 // into one texel of the HDR target, which the finite check must name by pass, resource and texel.
 #include "engine/core/errors.hpp"
@@ -61,7 +61,7 @@ TEST_F(extreme_output, MillionCausticPeakInAHalfFloatExr) {
 // with vkCmdClearAttachments, declared after the water pass and before the readback. The blur
 // does not exist yet: today the readback is the last pass that reads an HDR target, so the NaN
 // goes right before it. When the blur comes, this injection belongs before the blur, and the
-// no-spreading check below becomes the blur's test (PHYSICS.md section 8: sanitise at the producer).
+// no-spreading check below becomes the blur's test (docs/model.md section 8: sanitise at the producer).
 constexpr int kNanX = 17, kNanY = 5;
 
 FrameOutput nan_then_readback(VkBuffer readback) {

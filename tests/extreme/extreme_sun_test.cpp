@@ -1,4 +1,4 @@
-// The sun at the edges (issue 12): grazing at 85, 89, 89.9 degrees from the zenith, on the
+// The sun at the edges: grazing at 85, 89, 89.9 degrees from the zenith, on the
 // horizon (90) and below it (91), exactly overhead and 1e-7 rad away from it; over flat water
 // (where both renderers are closed form and must agree to fp32 rounding) and over a sine of slope
 // 0.3 (caustics). And the images' continuity in the sun's angle.

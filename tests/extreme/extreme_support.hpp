@@ -1,4 +1,4 @@
-// Shared parts of the extreme-case suite (issue 12): one small scene the cases override, the
+// Shared parts of the extreme-case suite: one small scene the cases override, the
 // real-time renderer (lavapipe, validation, finite check after every pass) and the CPU reference
 // on the same scene, the per-image checks every case makes, the continuity measure, and the
 // caustic passes' receiver flux against the flux the surface intercepts.
@@ -149,7 +149,7 @@ inline double mean_radiance(const ImageRGBA32F& image) {
 // few hundred fp32 roundings, 1e-5 relative per value).
 inline constexpr double kFlatWaterRelMse = 1e-10;
 
-// Continuity (issue 12, item 4): RMS(delta) = sqrt(relMSE(image(p + delta), image(p))).
+// Continuity (item 4): RMS(delta) = sqrt(relMSE(image(p + delta), image(p))).
 struct Continuity {
     double rms_delta = 0.0, rms_half = 0.0;
     double ratio() const { return rms_delta / rms_half; }
@@ -161,7 +161,8 @@ inline Continuity continuity(const std::function<ImageRGBA32F(double)>& image_at
 }
 
 // A smooth response halves its difference with the step: RMS(delta) / RMS(delta / 2) = 2 up to
-// the curvature's share. [1.6, 2.5] is issue 12's band.
+// the curvature's share. [1.6, 2.5] is the band the suite accepts:
+// a ratio near 1 would mean a jump (a discontinuity), near 4 a hidden second-order error.
 inline constexpr double kContinuityRatioLow = 1.6, kContinuityRatioHigh = 2.5;
 
 // The real-time renderer's continuity at p, delta against the reference's, on the scenes
@@ -301,7 +302,7 @@ struct CaseImages {
     ImageRGBA32F real_time, reference;
 };
 
-// What every case asserts (issue 12, item 2): (1) and (2) on both renderers' images, and (3) on
+// What every case asserts (item 2): (1) and (2) on both renderers' images, and (3) on
 // both renderers' receiver flux (the real-time caustic passes run on their own too when the frame
 // culls them, the sun on or below the horizon, as a forced-on frame would: they must deposit
 // nothing then; the reference's beams only exist under wavy water, flat water's floor irradiance

@@ -1,4 +1,4 @@
-// The water's surface at the edges (issue 12): n = 1 (nothing refracts), total internal
+// The water's surface at the edges: n = 1 (nothing refracts), total internal
 // reflection seen from below, steep sines (slope 0.5, 1 and 2), folding Gerstner waves
 // (steepness sum 1.5 with allow_folding), zero-area cells (a Gerstner cusp on a grid vertex),
 // and the images' continuity in n.

@@ -1,4 +1,4 @@
-// The godrays where numbers break (PHYSICS.md section 8): a grazing sun, the sun overhead, a camera
+// The godrays where numbers break (docs/model.md section 8): a grazing sun, the sun overhead, a camera
 // in the water looking toward the sun (the beams seen end-on, the singular case of the line
 // estimate), and optical depths sigma_t x depth from 1e-6 to 1e3, with both methods. Every pass's
 // float targets are scanned for NaN/Inf (the frame graph's finite check), and every pixel must be

@@ -1,4 +1,4 @@
-// Flat water against PHYSICS.md section 6, through the whole frame (beams, lines, resolve, blur,
+// Flat water against docs/model.md section 6, through the whole frame (beams, lines, resolve, blur,
 // composite): nothing but the in-scatter lights these scenes (black sky, black floor far below),
 // so each pixel is the godrays alone. The views: a horizontal ray at depth 2 m from a camera in the
 // water, and a vertical ray down from a camera 3 m above the surface; g = 0 and g = 0.9; every
@@ -8,7 +8,7 @@
 // h = 2 E / G) swept along the refracted sun, carrying E_tube = E_perp0, and they tile the lit water.
 // Where a tube is at least one pixel wide where it is seen (h / sqrt(A_pix) >= 1), every pixel
 // takes the exact chord of its centre ray through each tube slice (passes/godrays/godrays_lines.hpp), so a
-// pixel's sum is PHYSICS.md section 6's integral over the lit part of its ray. The line count and
+// pixel's sum is docs/model.md section 6's integral over the lit part of its ray. The line count and
 // the resolution are chosen for that: G = 64 (h = 0.125 m) on 7 x 7 pixels (one pyramid level, no
 // upsampling), with the fields of view below; each test checks the condition over its whole lit
 // path before comparing. What remains is fp32 rounding, bounded in kRounding below.

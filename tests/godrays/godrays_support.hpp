@@ -1,6 +1,6 @@
 // Shared parts of the godray tests: small scenes of flat water with nothing but the in-scatter to
 // see (sky 0, floor albedo 0), the GPU render, and the expected radiance of a camera ray from
-// PHYSICS.md section 6 in double precision through the reference renderer's optics
+// docs/model.md section 6 in double precision through the reference renderer's optics
 // (tools/reference/optics.hpp, tested against the closed forms by tests/reference), which share
 // nothing with the godray shaders but the equations.
 #pragma once
@@ -71,7 +71,7 @@ inline void lit_interval(const Scene& scene, const glm::dvec3& o, const glm::dve
     }
 }
 
-// PHYSICS.md section 6: the in-scattered radiance of the flat beam seen along the camera ray d from
+// docs/model.md section 6: the in-scattered radiance of the flat beam seen along the camera ray d from
 // the scene's eye, per channel: directly for a camera in the water, through the flat surface with
 // T(theta_v) / n^2 from above. Nothing else lights these scenes.
 inline glm::dvec3 expected_in_scatter(const Scene& scene, const glm::dvec3& d) {

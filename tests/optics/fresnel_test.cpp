@@ -1,6 +1,6 @@
 // shaders/common/fresnel.glsl, run on the device by a compute kernel, against an
 // independent double-precision Fresnel (the angle form of the equations, not the
-// cosine form the shader uses) and against PHYSICS.md section 2's table:
+// cosine form the shader uses) and against docs/model.md section 2's table:
 // R + T = 1, both in [0, 1], 10^4 angles from each side; TIR exactly R = 1 beyond
 // the critical angle; the tabulated air-to-water transmittances.
 #include "tests/support/compute_runner.hpp"
@@ -60,7 +60,7 @@ struct Push {
 };
 
 constexpr double kTableDeg[7] = {0, 30, 45, 60, 75, 85, 89};
-// PHYSICS.md section 2: air to water, n = 1.333, as printed (5 or 6 decimals).
+// docs/model.md section 2: air to water, n = 1.333, as printed (5 or 6 decimals).
 constexpr double kTableT[7] = {0.979627, 0.97856, 0.97210, 0.94031, 0.78762, 0.41648, 0.10372};
 
 class FresnelShader : public GpuTest {

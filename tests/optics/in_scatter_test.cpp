@@ -1,4 +1,4 @@
-// shaders/common/medium.glsl's single scattering along a view ray (PHYSICS.md
+// shaders/common/medium.glsl's single scattering along a view ray (docs/model.md
 // section 6), run on the device over 9720 cases (g = 0, 0.9 and -0.3; rays from below
 // and from above the horizontal; 1 + c = 0 and +-1e-3 around it; sigma_t from 1e-4 to
 // 100 per metre), against the double-precision closed form of the reference renderer
@@ -98,7 +98,7 @@ TEST(in_scatter_reference, SpecialCasesOfPhysicsSection6) {
         for (int j = 0; j < n; ++j) sum += ref::henyey_greenstein(-1.0 + (j + 0.5) * 2.0 / n, g);
         EXPECT_NEAR(2 * 3.14159265358979323846 * sum * 2.0 / n, 1.0, 1e-6) << "g " << g;
     }
-    // T_hemi(1.333) = 0.93359 (PHYSICS.md section 1, printed to 5 decimals).
+    // T_hemi(1.333) = 0.93359 (docs/model.md section 1, printed to 5 decimals).
     EXPECT_NEAR(ref::hemispherical_transmittance(1.333), 0.93359, 5e-6);
     EXPECT_NEAR(ref::hemispherical_transmittance(1.0), 1.0, 1e-9);
 }

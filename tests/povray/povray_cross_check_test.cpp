@@ -1,4 +1,4 @@
-// An independent cross-check of the reference renderer's floor caustics (issue 12): POV-Ray 3.7's
+// An independent cross-check of the reference renderer's floor caustics: POV-Ray 3.7's
 // photon map renders the sun's irradiance on a window of the floor (tools/povray) for the `calm`
 // scene and for calm with a sine surface; the reference's beam-mapped floor map
 // (tools/reference/floor_caustics.hpp) computes the same irradiance. Compared: the wavy-to-flat
@@ -161,7 +161,7 @@ TEST(povray_cross_check, SineOverFlatFloorIrradianceMatchesTheReference) {
     // photon noise: 3% per pixel measured on flat water, over the 64 pixels of a bin whose gathers
     // (radius ~2 pixels) overlap, about 16 independent estimates: 0.75%; the gather's smoothing over
     // ~1.6 cm where the irradiance bends (bins crossed by a focal line are left out). A ratio of two
-    // bins doubles the noise: about 2 x 0.75% + 0.86% = 2.4% < 5%, the limit issue 12 sets.
+    // bins doubles the noise: about 2 x 0.75% + 0.86% = 2.4% < 5%, the limit this cross-check sets.
     // Totals: RGBE as above, 0.86%, the noise averaged over 64 bins (0.2%), and the gather's reach
     // over the window's rim (flux in and out cancel to first order): within the 1% limit.
     constexpr double kBinLimit = 0.05, kTotalLimit = 0.01;

@@ -1,5 +1,5 @@
 // The in-scatter under waves (tools/reference/caustic_in_scatter.hpp): flat water's beams give
-// PHYSICS.md section 6's closed form on every kind of ray, and under a sine the modulated
+// docs/model.md section 6's closed form on every kind of ray, and under a sine the modulated
 // in-scatter along a horizontal ray equals a crude independent estimate (the section-5
 // histogram of the sine's refraction map at the ray's depth, integrated along the ray).
 #include "engine/scene/scene_loader.hpp"
@@ -55,7 +55,7 @@ TEST(reference_caustic_in_scatter, FlatWaterGivesTheSection6ClosedForm) {
 }
 
 TEST(reference_caustic_in_scatter, SineAgreesWithAnIndependentEstimate) {
-    // A k = 0.3, vertical sun: focal lines below the first cusp at d* = 0.35 m (PHYSICS.md 5).
+    // A k = 0.3, vertical sun: focal lines below the first cusp at d* = 0.35 m (docs/model.md 5).
     const double wavelength = 0.5, k = 2.0 * std::numbers::pi / wavelength, amplitude = 0.3 / k;
     const Scene scene = scattering_sine_scene(amplitude, 90.0);
     const auto surface = make_surface(scene.water->waves, 0.0, 0.0);

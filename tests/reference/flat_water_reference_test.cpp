@@ -1,4 +1,4 @@
-// The CPU reference renderer against the closed forms of PHYSICS.md for flat water:
+// The CPU reference renderer against the closed forms of docs/model.md for flat water:
 // radiance seen from above (section 3) at view elevations 5, 20, 45 and 90 degrees,
 // the floor's sun irradiance under the water for several sun angles (its caustic
 // layer), Snell's window radius seen from below (section 7), determinism, and a clear
@@ -38,7 +38,7 @@ Scene calm_scene(double sun_elevation_deg, const std::string& camera = R"("posit
 
 double fresnel_t(double cos_i) { return 1.0 - fresnel_reflectance(cos_i, 1.0, kIor); }
 
-// PHYSICS.md section 3, written out here from its pieces: the floor's irradiance
+// docs/model.md section 3, written out here from its pieces: the floor's irradiance
 // E_floor = E_s cos(theta_s) T(theta_s) exp(-sigma_t d / cos(theta_t)) plus skylight,
 // then the view path of section 6 and the surface.
 glm::dvec3 closed_form_from_above(const Scene& scene, const glm::dvec3& view) {
@@ -120,7 +120,7 @@ TEST(reference_flat_water, CausticLayerIsTheUniformFloorIrradianceInEveryPixel) 
 }
 
 TEST(reference_flat_water, SnellsWindowRadiusIsFocalLengthTimesTanCritical) {
-    // PHYSICS.md section 7: viewer 2 m down looking straight up, fov 120 degrees, albedo 0,
+    // docs/model.md section 7: viewer 2 m down looking straight up, fov 120 degrees, albedo 0,
     // constant sky, sigma_s = 0, no sun: only the transmitted sky is left.
     const std::string text = R"({
       "camera": {"position": [0, -2, 0], "target": [0, 0, 0], "fov_y_deg": 120},
@@ -145,7 +145,7 @@ TEST(reference_flat_water, SnellsWindowRadiusIsFocalLengthTimesTanCritical) {
     }
     const double focal_px = (size / 2.0) / std::tan(60.0 * kPi / 180.0);
     const double expected = focal_px * std::tan(std::asin(1.0 / kIor));
-    EXPECT_NEAR(radius_px, expected, 1.0);  // PHYSICS.md: within one pixel
+    EXPECT_NEAR(radius_px, expected, 1.0);  // docs/model.md: within one pixel
 }
 
 TEST(reference_flat_water, OutputIsIdenticalForAnyThreadCount) {

@@ -1,5 +1,5 @@
 // The reference renderer's floor caustics under wavy water (tools/reference/
-// floor_caustics.hpp): the flux reaching the floor equals PHYSICS.md section 4's
+// floor_caustics.hpp): the flux reaching the floor equals docs/model.md section 4's
 // integral computed independently here (midpoint quadrature over the analytic surface,
 // not the beams' own sum), and a flat surface's beams give the closed-form irradiance.
 #include "engine/scene/scene_loader.hpp"
@@ -35,7 +35,7 @@ TEST(reference_floor_caustics, FluxOnTheFloorEqualsTheSection4Integral) {
             const double extent = scene.water->half_extent;
             const glm::dvec3 expected = section4_flux(scene, *surface, -extent, 2.0 * extent, 2000);
             for (int c = 0; c < 3; ++c) {
-                // PHYSICS.md: within 0.5%. The beams are flat triangles with their chord's
+                // docs/model.md: within 0.5%. The beams are flat triangles with their chord's
                 // normal (an O(h^2) error, h = 1/128 of the wavelength here) and the midpoint rule
                 // errs by O(h^2) too; both are far inside it.
                 EXPECT_NEAR(map.total_flux()[c], expected[c], 0.005 * expected[c]) << "channel " << c;
@@ -64,7 +64,7 @@ TEST(reference_floor_caustics, FlatSurfaceBeamsGiveTheClosedFormIrradiance) {
 TEST(reference_floor_caustics, SineProfileMatchesSection5BeforeAtAndPastTheFocus) {
     const double wavelength = 0.5, k = 2.0 * 3.14159265358979323846 / wavelength, amplitude = 0.3 / k;  // A k = 0.3
     const double focal = 1.0 / ((1.0 - 1.0 / kIor) * amplitude * k * k);
-    const double first_cusp = focal - amplitude;  // d* (PHYSICS.md section 5)
+    const double first_cusp = focal - amplitude;  // d* (docs/model.md section 5)
     const double sigma_t = 0.1, extent = 1.0, floor_extent = 1.5;
     const int texels = 384;  // 7.8 mm, 64 per wavelength
     for (double factor : {0.5, 1.0, 2.0}) {

@@ -43,7 +43,7 @@ TEST(reference_manifest, EveryEntryMatchesItsSceneFileAndImage) {
 }
 
 TEST(reference_manifest, EveryBuiltInSceneHasAReference) {
-    // Issue 10: a 400x300 reference of every built-in scene (scenes/*.json).
+    // A 400x300 reference of every built-in scene (scenes/*.json).
     const nlohmann::json entries = manifest();
     int scenes = 0;
     for (const auto& file : std::filesystem::directory_iterator(kReferences / "../../scenes")) {

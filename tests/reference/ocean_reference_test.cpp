@@ -1,4 +1,4 @@
-// The reference renderer on the FFT ocean (refused before issue 10's ocean work): a small
+// The reference renderer on the FFT ocean (which it once refused): a small
 // render of scenes/ocean.json (64 modes over 32 m, coarse caustics) is finite and
 // non-negative with the caustic in-scatter on, lights the floor it sees through the water, and
 // reports what it approximates.

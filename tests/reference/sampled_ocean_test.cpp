@@ -1,7 +1,7 @@
 // The FFT ocean as the reference renderer evaluates it (engine/water/sampled_ocean_surface.hpp:
 // zero-padded FFT samples and Hermite patches) against the exact Fourier series
 // (FftOceanSurface), and its periodic floor caustic map (tools/reference/floor_caustics.hpp)
-// against PHYSICS.md section 4's flux computed independently over the exact series.
+// against docs/model.md section 4's flux computed independently over the exact series.
 // The ocean is scenes/ocean.json's (JONSWAP, 10 m/s wind, choppiness 0.8) on a 64-mode grid
 // over 32 m, which keeps ocean.json's 0.5 m mode spacing and shortest wave (0.71 m) while the
 // exact series (4096 modes per point) stays fast enough for 10^4 points.
@@ -131,7 +131,7 @@ TEST(reference_sampled_ocean, PeriodicFloorMapCarriesTheSection4FluxOfOnePeriod)
     // Independent: midpoint quadrature over the exact series, 128 x 128 points per period.
     const glm::dvec3 expected = section4_flux(scene, *oceans.exact, 0.0, period, 128);
     for (int c = 0; c < 3; ++c) {
-        // PHYSICS.md section 4: within 0.5%. The beams' flat triangles (chord normals, cells 1/6
+        // docs/model.md section 4: within 0.5%. The beams' flat triangles (chord normals, cells 1/6
         // of the shortest wave) and the midpoint rule (spectrally accurate for the periodic
         // smooth part, O(h^2) at the kinks where facets turn from the sun) both stay inside it.
         EXPECT_NEAR(map.total_flux()[c], expected[c], 0.005 * expected[c]) << "channel " << c;

@@ -1,4 +1,4 @@
-// PHYSICS.md section 4's flux through the surface onto the floor, computed independently of
+// docs/model.md section 4's flux through the surface onto the floor, computed independently of
 // the beams (midpoint quadrature over the surface's parameter square, not their own sum):
 //   Phi = E_s * integral of max(0, -s . (dP/dz0 x dP/dx0)) T(theta_i) exp(-sigma_t l) dx0 dz0,
 // where dP/dz0 x dP/dx0 is the upward normal scaled by the surface's area per parameter area;

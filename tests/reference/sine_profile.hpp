@@ -1,4 +1,4 @@
-// PHYSICS.md section 5's sine profile by an independent method (no beams): shared by the
+// docs/model.md section 5's sine profile by an independent method (no beams): shared by the
 // floor-map test and the in-scatter test (the irradiance on a plane at any depth).
 #pragma once
 
@@ -11,7 +11,7 @@
 
 namespace vkw::ref {
 
-// PHYSICS.md section 5, h = A sin(kx), vertical sun: the texel-averaged floor irradiance,
+// docs/model.md section 5, h = A sin(kx), vertical sun: the texel-averaged floor irradiance,
 // computed here by an independent method: the exact 1-D map X(x) = x + (d + h) t_x / (-t_y)
 // sampled at 2^22 points per metre, each carrying its flux E_s T exp(-sigma_t l) dx into the
 // texel of its landing point (a histogram of the map, converging as dx -> 0).

@@ -6,7 +6,7 @@
 // - energy: from a camera in the water, the irradiance the shading reads integrated over the
 //   visible floor (each pixel's floor area from the camera's own rays) against the reference's,
 //   which under flat water is the flux of exactly the photons landing there (E_flat times that area);
-//   and under a sine wave, from straight above, against PHYSICS.md section 4's integral (CPU, double)
+//   and under a sine wave, from straight above, against docs/model.md section 4's integral (CPU, double)
 //   restricted to the photons that land in the frame's footprint.
 // Where the comparisons look: pixels at least `margin` pixels from any edge in the reference (a
 // splat reaches at most 7.5 pixels of its level from its photon, kMaxSplatTaps = 16 x 16; closer

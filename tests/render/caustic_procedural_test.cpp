@@ -1,4 +1,4 @@
-// Seed 003's procedural caustic, the baseline (effects.caustics.method = procedural,
+// Guardado & Sánchez-Crespo 2004's procedural caustic, the baseline (effects.caustics.method = procedural,
 // passes/caustics/caustics_procedural.hpp): under flat water its backward ray returns along the sun, so it
 // is the flat-surface stand-in; under waves it stays finite and non-negative for every sun.
 #include "passes/frame/renderer.hpp"

@@ -1,6 +1,6 @@
 // First pixels: the default scene without its water (a constant sky over a sunlit
 // Lambertian floor) rendered on the device, written to OpenEXR, read back with OpenEXR,
-// and checked against the model (PHYSICS.md section 1):
+// and checked against the model (docs/model.md section 1):
 //   floor radiance = rho (E_s cos(theta_s) + pi L_sky) / pi,   sky radiance = L_sky.
 #include "engine/image/exr_io.hpp"
 #include "passes/common/frame_constants.hpp"

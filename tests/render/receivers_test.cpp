@@ -1,6 +1,6 @@
 // Receiver meshes on the device: the top face of a box above the water is a Lambertian
 // surface lit by the sun and the sky, L = rho (E_s cos(theta_s) + pi L_sky) / pi (the
-// model's closed form, PHYSICS.md section 1), read at the pixel that sees its centre.
+// model's closed form, docs/model.md section 1), read at the pixel that sees its centre.
 #include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tests/support/gpu_test.hpp"

@@ -158,7 +158,7 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
 TEST_F(SceneLookupRulesShallow, ShallowBlendFadesScreenSpaceRefractionToTheDirectView) {
-    // Seed 002's blend weights the refracted result by (water depth along the view) / blend,
+    // Ojeda & Susín 2013's blend weights the refracted result by (water depth along the view) / blend,
     // clamped to 1. A blend depth far below any depth in the frame (1e-9 m against 0.5 m or
     // more) leaves every weight at 1: the image equals the unblended one exactly. A blend of
     // 10 m (5 to 20 times the depths here) mixes in the direct view: it moves the box's part

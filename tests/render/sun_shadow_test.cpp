@@ -1,5 +1,5 @@
 // The sun shadow map (passes/receivers/sun_shadow.hpp): a 2 m box standing on a floor with no water,
-// the sun 60 degrees high toward +x. Closed forms of the model (PHYSICS.md section 1), at the
+// the sun 60 degrees high toward +x. Closed forms of the model (docs/model.md section 1), at the
 // pixels that see chosen world points (projected with the frame's own view_proj):
 // - a floor point inside the box's shadow gets skylight only: L = rho pi L_sky / pi;
 // - a floor point far outside it gets sun and sky: L = rho (E_s sin(60) + pi L_sky) / pi;
@@ -33,7 +33,7 @@ const float* pixel_seeing(const RenderResult& result, const FrameConstants& cons
     return result.image.pixel(x, y);
 }
 
-// The floor's radiance under clear flat water (sigma = 0, PHYSICS.md section 3), channel c:
+// The floor's radiance under clear flat water (sigma = 0, docs/model.md section 3), channel c:
 // in a shadow (skylight through T_hemi only) and lit (plus the sun E_s cos(theta_s) T).
 struct ClearWaterFloor {
     double shadowed, lit;

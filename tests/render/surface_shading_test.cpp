@@ -1,8 +1,8 @@
-// The surface's alternative shading (effects.water; seed 001 sections 5-7) against closed forms:
+// The surface's alternative shading (effects.water; Optical Phenomena c. 2008 sections 5-7) against closed forms:
 // a camera 3 m above flat water over a black floor, the sun below the horizon and a medium that
-// only absorbs, so that a pixel of the surface is R L_sky plus, with seed 001's depth colour,
+// only absorbs, so that a pixel of the surface is R L_sky plus, with Optical Phenomena c. 2008's depth colour,
 // T C_w (1 - exp(-k d)) / n^2 (d: the refracted ray's path to the floor); without it the refracted
-// ray brings nothing. R is seed 001's power term (1 - E.N)^q, Schlick's approximation or the exact
+// ray brings nothing. R is Optical Phenomena c. 2008's power term (1 - E.N)^q, Schlick's approximation or the exact
 // form, evaluated here in double from the pixel's own ray (flat water: the normal is +y).
 #include "engine/core/errors.hpp"
 #include "passes/frame/renderer.hpp"

@@ -1,5 +1,5 @@
 // The water shading core on the device against closed forms (the shading issue's tests):
-// flat water seen from above at camera elevations 5, 20, 45 and 90 degrees (PHYSICS.md
+// flat water seen from above at camera elevations 5, 20, 45 and 90 degrees (docs/model.md
 // section 3, through the reference renderer, which its own tests hold to the closed
 // form within 1e-8); Snell's window's radius measured on the real-time image (section
 // 7); and finite output while the view sweeps through the horizon and with the camera on
@@ -46,7 +46,7 @@ TEST_F(WaterShading, FlatWaterFromAboveMatchesTheClosedFormAtFourElevations) {
 }
 
 TEST_F(WaterShading, SnellsWindowRadiusOnTheRealTimeImage) {
-    // PHYSICS.md section 7: albedo 0, constant sky, sigma_s = 0, E_s = 0 (scenes/underwater.json),
+    // docs/model.md section 7: albedo 0, constant sky, sigma_s = 0, E_s = 0 (scenes/underwater.json),
     // looking straight up with a 120 degree field of view.
     const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/underwater.json");
     const uint32_t size = 301;

@@ -49,7 +49,7 @@ using WaterBody = GpuTest;
 TEST_F(WaterBody, RaysFromTheWaterThatMeetNothingSeeNothing) {
     // Under flat water in a 4 m pool, looking level: the rays below the horizon that pass the
     // floor's edge leave the water body through its side and meet nothing, which the model
-    // makes black (PHYSICS.md section 1), not the sky. Where the reference is black the real-time
+    // makes black (docs/model.md section 1), not the sky. Where the reference is black the real-time
     // image must be exactly black too, but for pixels next to a lit one (the floor's far edge is
     // a rasterised edge in one renderer and a ray test in the other: its row can differ by one).
     const Scene scene = parse_scene(R"({

@@ -45,7 +45,7 @@ TEST(scene_builtin, UnderwaterLooksUpFrom2MetresWithAWideField) {
     EXPECT_EQ(scene.water->level - scene.camera.position.y, 2.0);
     EXPECT_EQ(glm::normalize(scene.camera.target - scene.camera.position), glm::dvec3(0.0, 1.0, 0.0));
     EXPECT_EQ(scene.camera.fov_y_deg, 120.0);
-    // PHYSICS.md section 7: the window's full cone (97.2 degrees) fits in the field of view, and the
+    // docs/model.md section 7: the window's full cone (97.2 degrees) fits in the field of view, and the
     // radius measurement needs nothing but the transmitted sky.
     EXPECT_GT(scene.camera.fov_y_deg, 2.0 * degrees(std::asin(1.0 / scene.water->ior)));
     EXPECT_EQ(scene.floor.albedo, glm::dvec3(0.0));

@@ -1,4 +1,4 @@
-// The medium: presets give exactly the values of PHYSICS.md section 1's table (typed in here
+// The medium: presets give exactly the values of docs/model.md section 1's table (typed in here
 // again from the document, not taken from the code's table), explicit coefficients, and the
 // exclusive forms.
 #include <gtest/gtest.h>

@@ -47,7 +47,7 @@ TEST(scene_pool, LoadsWithExpectedValues) {
 }
 
 TEST(scene_pool, WavesFocusNearTheFloor) {
-    // PHYSICS.md section 5: first cusp under a vertical sun at d* = f - A, f = 1 / ((1 - 1/n) A k^2);
+    // docs/model.md section 5: first cusp under a vertical sun at d* = f - A, f = 1 / ((1 - 1/n) A k^2);
     // each of the two perpendicular sines focuses on its own axis.
     const Scene scene = load_scene(test::kSourceDir / "scenes/pool.json");
     const WaveSettings& waves = scene.water->waves;
@@ -69,7 +69,7 @@ TEST(scene_pool, WavesFocusNearTheFloor) {
 }
 
 TEST(scene_pool, FloorAndSkyRadianceAreOfTheSameOrder) {
-    // PHYSICS.md section 1 without water: L_floor = rho (E_s cos(theta_s) + pi L_sky) / pi.
+    // docs/model.md section 1 without water: L_floor = rho (E_s cos(theta_s) + pi L_sky) / pi.
     const Scene scene = load_scene(test::kSourceDir / "scenes/pool.json");
     const double cos_theta = -scene.sun.direction.y;
     for (int c = 0; c < 3; ++c) {

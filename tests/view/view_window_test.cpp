@@ -120,7 +120,7 @@ TEST_F(ViewWindow, ScriptedRunResizesCrossesTheSurfaceAndTogglesCausticsWithoutV
 
 TEST_F(ViewWindow, SwitchingToTheSeedsMethodsLiveStaysValidationClean) {
     // The methods the panel's "Methods" section switches: camera-space splats (their view and
-    // flux follow the window's size, so a resize rebuilds them), the procedural caustic, seed 001's
+    // flux follow the window's size, so a resize rebuilds them), the procedural caustic, Optical Phenomena c. 2008's
     // surface shading, and back.
     const fs::path script = write_text("methods.txt", "5: set effects.caustics.splat=camera-space\n"
                                                       "15: resize 200 150\n"

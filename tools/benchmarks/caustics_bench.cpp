@@ -1,4 +1,4 @@
-// caustics_bench: what the surface caustics cost on this device (issue 7's benchmark table).
+// caustics_bench: what the surface caustics cost on this device.
 // For each photon grid R^2 (one photon per water-grid cell, a map of one texel per cell):
 //  1. the caustic passes of one frame (flux clear, photon trace + int64 fixed-point splat,
 //     resolve), each submitted alone and fence-timed on the CPU clock (the frame graph's timing
@@ -7,7 +7,8 @@
 //  2. scatter-only kernels with the photon pass's 12 atomics per photon into a target of the same
 //     size, timed the same way in the same frames: int64 fixed point (the photon pass's
 //     accumulation) and 32-bit float by a compare-and-swap loop; the ratio scatter / (trace +
-//     splat) (issue 7's target: at least 0.5);
+//     splat) (the goal: at least 0.5, so that
+//     tracing costs no more than the deposit it feeds);
 //  3. a 2-thread C++ scatter of the same photons (private maps + reduction; shared map with
 //     atomic fetch_add), median of --runs;
 //  4. where the device has shaderBufferFloat32AtomicAdd (vkw::Context does not enable it): the

@@ -1,7 +1,7 @@
 // Box downsampling for the errors at reduced resolution: each factor x factor block of pixels
 // becomes one pixel holding the block's mean. An error that only moves light inside a block
 // (a caustic line drawn a texel off) vanishes; one that changes a block's energy stays. So the
-// error at 4x separates energy errors from sub-texel misplacement (issue 11).
+// error at 4x separates energy errors from sub-texel misplacement.
 #pragma once
 
 #include "engine/image/image.hpp"

@@ -40,7 +40,7 @@ double rel_mse(const RgbView& test, const RgbView& reference, std::span<const st
 // is darker). Throws UserError if mean(b) <= 0.
 double mean_bias(const RgbView& test, const RgbView& reference, std::span<const std::size_t> pixels);
 
-// Mean CIE 1976 L*u*v* distance (seed 004, eq. 2-9: the mean over the compared pixels of
+// Mean CIE 1976 L*u*v* distance (Tipprasert 2006, eq. 2-9: the mean over the compared pixels of
 // sqrt(dL*^2 + du*^2 + dv*^2)), for comparison with older work. Both images are multiplied by
 // one exposure, 0.18 / (mean luminance of the reference over P), so the reference's mean
 // luminance becomes middle grey 0.18; each exposed value is clamped to [0, 1] (what an sRGB

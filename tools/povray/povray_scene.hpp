@@ -1,5 +1,5 @@
 // A scene as POV-Ray 3.7 input that renders the sun's irradiance on the floor, for an
-// independent cross-check of the CPU reference renderer's floor caustics (issue 12).
+// independent cross-check of the CPU reference renderer's floor caustics.
 //
 // What the file holds: the sun as a parallel light of colour E_s shooting photons
 // (refraction on, reflection off: the model drops reflected sunlight); the water body as

@@ -82,7 +82,7 @@ glm::dvec3 BeamIrradiance::irradiance(const glm::dvec3& point, const glm::dvec3&
                 }
                 if (!reaches) continue;
                 const double twice_area = glm::dot(glm::cross(footprint[1] - footprint[0], footprint[2] - footprint[0]), normal);
-                // The beam's flux through the surface triangle (PHYSICS.md section 4).
+                // The beam's flux through the surface triangle (docs/model.md section 4).
                 glm::dvec3 surface_normal =
                     glm::cross(v[2]->position - v[0]->position, v[1]->position - v[0]->position);
                 const double twice_surface_area = glm::length(surface_normal);

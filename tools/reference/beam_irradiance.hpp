@@ -1,7 +1,7 @@
-// The sun's irradiance at any receiver point under a wavy surface (issue 10), from the same
-// exact beams as floor_caustics.hpp (seed 004's illumination volumes): the surface is cut
+// The sun's irradiance at any receiver point under a wavy surface, from the same
+// exact beams as floor_caustics.hpp (Tipprasert 2006's illumination volumes): the surface is cut
 // into triangles on an M x M parameter grid; each triangle's refracted beam carries the flux
-// E_s max(0, -s.N) A T(theta_i) (PHYSICS.md section 4) and meets the receiver's tangent
+// E_s max(0, -s.N) A T(theta_i) (docs/model.md section 4) and meets the receiver's tangent
 // plane in a footprint triangle through the three refracted vertex rays. A point inside a
 // footprint receives flux / footprint area, attenuated by exp(-sigma_t l) along the beam and
 // shadowed by whatever the caller's visibility test finds between the point and the surface

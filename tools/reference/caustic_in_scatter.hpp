@@ -1,5 +1,5 @@
-// The in-scatter of the sun's refracted beams under a wavy surface (godrays in the reference,
-// issue 10). PHYSICS.md section 6 integrates sigma_s p(cos alpha) E_perp(z) exp(-sigma_t u)
+// The in-scatter of the sun's refracted beams under a wavy surface (godrays in the
+// reference). docs/model.md section 6 integrates sigma_s p(cos alpha) E_perp(z) exp(-sigma_t u)
 // along a view ray with the flat surface's beam, E_perp(z) = E_perp0 exp(-sigma_t z / cos t).
 // Under waves the sun's irradiance inside the water varies sideways as well: at depth z it is
 // the beam-mapped caustic irradiance E_h on the horizontal plane at that depth, the same exact

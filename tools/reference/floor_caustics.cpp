@@ -72,7 +72,7 @@ FloorCausticMap::FloorCausticMap(const Scene& scene, const WaterSurface& surface
                 const Vertex& b = *quad[triangle[1]];
                 const Vertex& c = *quad[triangle[2]];
                 if (!a.valid || !b.valid || !c.valid) continue;
-                // The beam's flux through the surface triangle (PHYSICS.md section 4).
+                // The beam's flux through the surface triangle (docs/model.md section 4).
                 glm::dvec3 normal = glm::cross(c.position - a.position, b.position - a.position);
                 const double twice_area = glm::length(normal);
                 if (twice_area == 0.0) continue;

@@ -1,11 +1,11 @@
-// The sun's irradiance on the floor under a wavy surface, without kernel bias (issue 10,
-// seed 004's illumination volumes done exactly): the water surface is cut into
+// The sun's irradiance on the floor under a wavy surface, without kernel bias
+// (Tipprasert 2006's illumination volumes done exactly): the water surface is cut into
 // triangles on an M x M parameter grid; each triangle's refracted beam carries the flux
-// E_s max(0, -s.N) A T(theta_i) exp(-sigma_t l) (PHYSICS.md section 4) onto the floor,
+// E_s max(0, -s.N) A T(theta_i) exp(-sigma_t l) (docs/model.md section 4) onto the floor,
 // where its footprint is the triangle through the three refracted vertex rays' floor
 // hits. Each footprint spreads its flux evenly and deposits it into the floor's texels
 // by exact polygon overlap, so a texel holds the texel-averaged irradiance (the box
-// filter PHYSICS.md section 5 compares against), folds and focal lines included (a
+// filter docs/model.md section 5 compares against), folds and focal lines included (a
 // footprint's area may tend to 0, its deposit stays finite). The map is built at M and
 // 2M and the difference is the estimated error.
 //

@@ -1,4 +1,4 @@
-// The optics of the light-transport model (PHYSICS.md sections 1-3 and 6) in double
+// The optics of the light-transport model (docs/model.md sections 1-3 and 6) in double
 // precision, for the CPU reference renderer and as the expected values of the
 // shader tests. Written independently of the GLSL in shaders/common/: nothing is
 // shared between the two but the equations.
@@ -30,7 +30,7 @@ double one_minus_exp_over_x(double x);
 // T_hemi(n) = 2 * integral_0^{pi/2} T(theta) cos(theta) sin(theta) d(theta), air to water.
 double hemispherical_transmittance(double ior);
 
-// PHYSICS.md section 6 for one channel: radiance in the water along a view ray that
+// docs/model.md section 6 for one channel: radiance in the water along a view ray that
 // starts (or enters) at depth z0 >= 0 and runs a length s in unit direction v, with
 // the sun's refracted beam t (unit, downward) of irradiance e_perp0 on a plane normal
 // to it just below the surface (E_s T cos(theta_s) / cos(theta_t)).

@@ -19,7 +19,7 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Ray origins are pushed off the surface they leave by this much (metres): far above
 // double rounding at scene scale (1e-15 * 1e3 m), far below any feature of a scene.
 constexpr double kOffset = 1e-9;
-constexpr double kSunDiskSolidAngle = 6.80e-5;       // PHYSICS.md section 1
+constexpr double kSunDiskSolidAngle = 6.80e-5;       // docs/model.md section 1
 constexpr double kSunDiskAngularRadiusDeg = 0.2666;
 
 glm::dvec3 exp3(const glm::dvec3& x) { return {std::exp(x.x), std::exp(x.y), std::exp(x.z)}; }

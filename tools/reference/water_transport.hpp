@@ -1,4 +1,4 @@
-// Light transport of the model (PHYSICS.md section 1), in double precision: view rays
+// Light transport of the model (docs/model.md section 1), in double precision: view rays
 // from the air or from the water, one reflection and one refraction at the surface
 // (exact Fresnel, total internal reflection, radiance scaled by n^2 entering and 1/n^2
 // leaving), Lambertian receivers lit by the shadowed sun and by skylight, sigma_t

@@ -1,5 +1,5 @@
 // vkwater reference SCENE --out ref.exr: the CPU reference renderer of the model
-// (PHYSICS.md section 1), for measuring the real-time renderer's error.
+// (docs/model.md section 1), for measuring the real-time renderer's error.
 #include "engine/core/errors.hpp"
 #include "engine/image/exr_io.hpp"
 #include "engine/image/file_paths.hpp"

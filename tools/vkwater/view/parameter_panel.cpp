@@ -184,14 +184,14 @@ bool enum_combo(const char* label, Enum& value, const char* const (&names)[N]) {
 }
 }  // namespace
 
-// The methods the seeds compare (issue 8): the caustics' producer and splat, the surface's
-// Fresnel form and seed 001's depth colour, switched live to see what each changes.
+// The methods the published methods compare: the caustics' producer and splat, the surface's
+// Fresnel form and Optical Phenomena c. 2008's depth colour, switched live to see what each changes.
 bool ParameterPanel::draw_methods(Scene& scene) {
     if (!ImGui::CollapsingHeader("Methods")) return false;
-    static constexpr const char* kMethods[] = {"photons", "procedural (seed 003)"};
-    static constexpr const char* kKernels[] = {"bilinear", "adaptive", "footprint (seed 004)"};
-    static constexpr const char* kSplats[] = {"light-space map", "camera-space (seed 002)"};
-    static constexpr const char* kFresnels[] = {"exact", "Schlick", "power term (seed 001)"};
+    static constexpr const char* kMethods[] = {"photons", "procedural (Guardado & Sánchez-Crespo 2004)"};
+    static constexpr const char* kKernels[] = {"bilinear", "adaptive", "footprint (Tipprasert 2006)"};
+    static constexpr const char* kSplats[] = {"light-space map", "camera-space (Ojeda & Susín 2013)"};
+    static constexpr const char* kFresnels[] = {"exact", "Schlick", "power term (Optical Phenomena c. 2008)"};
     CausticSettings& caustics = scene.effects.caustics;
     bool changed = enum_combo("caustics", caustics.method, kMethods);
     changed |= enum_combo("splat kernel", caustics.kernel, kKernels);
@@ -202,7 +202,7 @@ bool ParameterPanel::draw_methods(Scene& scene) {
     }
     changed |= enum_combo("Fresnel", scene.effects.water.fresnel, kFresnels);
     bool blend = scene.effects.water.depth_blend.has_value();
-    if (ImGui::Checkbox("depth colour (seed 001)", &blend)) {
+    if (ImGui::Checkbox("depth colour (Optical Phenomena c. 2008)", &blend)) {
         scene.effects.water.depth_blend = blend ? std::optional<DepthBlend>(DepthBlend{}) : std::nullopt;
         changed = true;
     }
