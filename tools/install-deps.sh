@@ -7,6 +7,8 @@ set -euo pipefail
 packages=(
   # build
   build-essential cmake pkg-config ninja-build
+  # the committed C++ format (.clang-format; tools/check-format.sh, a test): version 14 exactly
+  clang-format-14
   # Vulkan: loader + headers, the software driver (lavapipe), tools, validation layers
   libvulkan-dev mesa-vulkan-drivers vulkan-tools vulkan-validationlayers
   # shader compilers and SPIR-V tools

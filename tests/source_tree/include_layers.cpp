@@ -1,4 +1,4 @@
-#include "tests/layers/include_layers.hpp"
+#include "tests/source_tree/include_layers.hpp"
 
 #include <algorithm>
 

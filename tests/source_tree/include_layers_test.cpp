@@ -1,9 +1,9 @@
 // Every `#include "..."` in engine/, passes/, tools/ and tests/ is read and held against the
-// layer table (tests/layers/include_layers.cpp): engine/ knows no pass and no tool, passes/ knows
+// layer table (tests/source_tree/include_layers.cpp): engine/ knows no pass and no tool, passes/ knows
 // no tool and only passes/frame composes the frame, the reference renderer sees only
 // engine/{core,scene,water,image}. A failure names the file, its line and the edge. Quoted
 // includes are root-relative, so every one must name a file from the repository root.
-#include "tests/layers/include_layers.hpp"
+#include "tests/source_tree/include_layers.hpp"
 
 #include <gtest/gtest.h>
 
@@ -75,7 +75,7 @@ TEST(Layers, EveryIncludeEdgeIsAllowed) {
     for (const IncludeEdge& edge : edges) {
         const std::string where = edge.file + ":" + std::to_string(edge.line) + ": #include \"" + edge.target + "\"";
         const std::string_view from = layer_of(table, edge.file);
-        EXPECT_FALSE(from.empty()) << where << ": the file lies in no layer of tests/layers/include_layers.cpp";
+        EXPECT_FALSE(from.empty()) << where << ": the file lies in no layer of tests/source_tree/include_layers.cpp";
         if (!fs::exists(kRoot / edge.target)) {
             ADD_FAILURE() << where << ": not a root-relative path (includes name files from the repository root)";
             continue;
@@ -84,7 +84,7 @@ TEST(Layers, EveryIncludeEdgeIsAllowed) {
         EXPECT_FALSE(to.empty()) << where << ": the included file lies in no layer";
         if (from.empty() || to.empty()) continue;
         EXPECT_TRUE(may_include(table, from, to))
-            << where << ": " << from << " -> " << to << " is not an allowed edge (tests/layers/include_layers.cpp)";
+            << where << ": " << from << " -> " << to << " is not an allowed edge (tests/source_tree/include_layers.cpp)";
         ++checked;
     }
     EXPECT_EQ(checked, edges.size());
