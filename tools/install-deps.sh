@@ -13,6 +13,8 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-tools vulkan-validationlayers
   # shader compilers and SPIR-V tools
   glslang-tools glslc spirv-tools
+  # SPIR-V reflection of every pipeline's shaders against its layout (engine/vk/spirv_reflection.cpp)
+  libspirv-cross-c-shared-dev
   # libraries
   libglm-dev libglfw3-dev libtinygltf-dev libopenexr-dev nlohmann-json3-dev libcli11-dev
   libimgui-dev libstb-dev libgtest-dev

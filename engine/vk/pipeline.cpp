@@ -4,6 +4,7 @@
 #include "engine/vk/context.hpp"
 #include "engine/vk/resources.hpp"
 #include "engine/vk/shader_module.hpp"
+#include "engine/vk/spirv_reflection.hpp"
 
 #include <memory>
 
@@ -30,8 +31,11 @@ void Pipeline::create_layout(const Context& context, const PipelineLayoutDesc& d
 
 Pipeline::Pipeline(const Context& context, const ComputePipelineDesc& desc, const std::string& name)
     : bind_point_(VK_PIPELINE_BIND_POINT_COMPUTE) {
-    create_layout(context, desc.layout, name);
+    // The check comes before any object of this pipeline exists: a throw from a constructor
+    // runs no destructor, so a layout made first would leak.
     ShaderModule shader(context, desc.shader);
+    check_pipeline_layout(name, desc.layout, {reflect_spirv(shader.words(), shader.file())});
+    create_layout(context, desc.layout, name);
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -43,17 +47,24 @@ Pipeline::Pipeline(const Context& context, const ComputePipelineDesc& desc, cons
 }
 
 Pipeline::Pipeline(const Context& context, const GraphicsPipelineDesc& desc, const std::string& name) {
-    create_layout(context, desc.layout, name);
     ShaderModule vertex(context, desc.vertex_shader);
     std::unique_ptr<ShaderModule> fragment;
+    std::vector<ReflectedStage> reflected = {reflect_spirv(vertex.words(), vertex.file())};
+    if (!desc.fragment_shader.empty()) {
+        fragment = std::make_unique<ShaderModule>(context, desc.fragment_shader);
+        reflected.push_back(reflect_spirv(fragment->words(), fragment->file()));
+    }
+    // Before the layout, as in the compute constructor: nothing is left to leak on a throw.
+    check_pipeline_layout(name, desc.layout, reflected);
+    create_layout(context, desc.layout, name);
+
     std::vector<VkPipelineShaderStageCreateInfo> stages;
     VkPipelineShaderStageCreateInfo stage{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     stage.stage = VK_SHADER_STAGE_VERTEX_BIT;
     stage.module = vertex.handle();
     stage.pName = "main";
     stages.push_back(stage);
-    if (!desc.fragment_shader.empty()) {
-        fragment = std::make_unique<ShaderModule>(context, desc.fragment_shader);
+    if (fragment) {
         stage.stage = VK_SHADER_STAGE_FRAGMENT_BIT;
         stage.module = fragment->handle();
         stages.push_back(stage);

@@ -6,7 +6,6 @@
 
 #include <cstdlib>
 #include <fstream>
-#include <vector>
 
 namespace vkw {
 
@@ -20,7 +19,8 @@ std::filesystem::path shader_directory() {
     return exe.parent_path().parent_path() / "share" / "vkwater" / "shaders";
 }
 
-ShaderModule::ShaderModule(const Context& context, const std::string& name) : device_(context.device()) {
+ShaderModule::ShaderModule(const Context& context, const std::string& name)
+    : device_(context.device()), file_(name + ".spv") {
     const std::filesystem::path path = shader_directory() / (name + ".spv");
     std::ifstream file(path, std::ios::binary | std::ios::ate);
     if (!file) {
@@ -29,13 +29,13 @@ ShaderModule::ShaderModule(const Context& context, const std::string& name) : de
     }
     const std::streamsize size = file.tellg();
     if (size <= 0 || size % 4 != 0) throw InternalError("shader '" + path.string() + "' is not SPIR-V");
-    std::vector<uint32_t> words(static_cast<size_t>(size) / 4);
+    words_.resize(static_cast<size_t>(size) / 4);
     file.seekg(0);
-    file.read(reinterpret_cast<char*>(words.data()), size);
+    file.read(reinterpret_cast<char*>(words_.data()), size);
 
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     info.codeSize = static_cast<size_t>(size);
-    info.pCode = words.data();
+    info.pCode = words_.data();
     VKW_CHECK(vkCreateShaderModule(device_, &info, nullptr, &module_), "shader '" + name + "'");
     context.set_name(module_, VK_OBJECT_TYPE_SHADER_MODULE, name);
 }

@@ -5,8 +5,10 @@
 
 #include <vulkan/vulkan.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace vkw {
 
@@ -22,10 +24,16 @@ public:
     ShaderModule(const ShaderModule&) = delete;
     ShaderModule& operator=(const ShaderModule&) = delete;
     VkShaderModule handle() const { return module_; }
+    // The SPIR-V as loaded, kept for reflection (engine/vk/spirv_reflection.hpp) without a second read.
+    const std::vector<uint32_t>& words() const { return words_; }
+    // The file under shaders/, e.g. "sky/sky.frag.frame.spv".
+    const std::string& file() const { return file_; }
 
 private:
     VkDevice device_ = VK_NULL_HANDLE;
     VkShaderModule module_ = VK_NULL_HANDLE;
+    std::vector<uint32_t> words_;
+    std::string file_;
 };
 
 }  // namespace vkw

@@ -24,7 +24,7 @@ static_assert(sizeof(CameraSplatPush) == 128, "the push-constant size every devi
 // Mirrors the push constants of shaders/caustics/caustic_camera_resolve.comp.
 struct CameraResolvePush {
     float lsb[4];
-    uint32_t width, height, pad[2];
+    uint32_t width, height;  // no tail padding: the block ends here, at 24 bytes
 };
 
 constexpr uint32_t kGroupSide = 8;  // local_size of caustic_camera_resolve.comp

@@ -1,0 +1,55 @@
+// What a SPIR-V module asks of its pipeline layout (descriptor bindings and the push-constant
+// block), read from the module itself, and the check that a pipeline's declared layout provides
+// it. A pass's C++ layout and its GLSL are written apart; without the check a mismatch shows up
+// only as a validation message when validation is on, and as undefined behaviour when it is not.
+#pragma once
+
+#include "engine/vk/pipeline.hpp"
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vkw {
+
+struct ReflectedBinding {
+    uint32_t set = 0;
+    uint32_t binding = 0;
+    VkDescriptorType type = VK_DESCRIPTOR_TYPE_MAX_ENUM;
+    uint32_t count = 1;  // descriptors in the binding (arrays of arrays: the product); 1 for runtime arrays
+};
+
+struct ReflectedStage {
+    std::string shader;  // the file, e.g. "sky/sky.frag.frame.spv" (for messages)
+    VkShaderStageFlagBits stage = VK_SHADER_STAGE_ALL;
+    std::vector<ReflectedBinding> bindings;  // those the entry point uses, sorted by (set, binding)
+    uint32_t push_constant_bytes = 0;        // the push-constant block's declared size (read or not); 0: none
+};
+
+// Reflects a SPIR-V module with one entry point. `shader` only names it in the result and in
+// errors. Throws InternalError when the module cannot be parsed.
+ReflectedStage reflect_spirv(const std::vector<uint32_t>& words, const std::string& shader);
+
+// "storage buffer", "combined image sampler", ...
+std::string descriptor_type_name(VkDescriptorType type);
+
+// Throws InternalError naming the pass, the shader and the binding when `declared` does not provide
+// what a stage uses (the rules are in the .cpp). Returns the declared bindings that no stage uses.
+std::vector<VkDescriptorSetLayoutBinding> check_pipeline_layout(const std::string& pass,
+                                                                const PipelineLayoutDesc& declared,
+                                                                const std::vector<ReflectedStage>& stages);
+
+// Every pipeline checked in this process, for the figures of a test: pipelines checked, and the
+// declared bindings that none of a pipeline's stages uses.
+struct LayoutCheckRecord {
+    std::string pass;
+    std::vector<std::string> shaders;
+    std::vector<VkDescriptorSetLayoutBinding> unused;
+    uint32_t declared_push_bytes = 0;
+    std::vector<uint32_t> shader_push_bytes;  // per stage, in the order of `shaders`
+};
+std::vector<LayoutCheckRecord> layout_check_records();
+
+}  // namespace vkw
