@@ -3,23 +3,22 @@
 namespace vkw::fg {
 namespace {
 
-constexpr VkAccessFlags2 kWriteAccess =
-    VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
-    VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_HOST_WRITE_BIT |
-    VK_ACCESS_2_SHADER_WRITE_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
+constexpr VkAccessFlags2 kWriteAccess = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
+                                        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                                        VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_HOST_WRITE_BIT |
+                                        VK_ACCESS_2_SHADER_WRITE_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
 
 // What one resource has seen so far while walking its timeline.
 struct Tracker {
-    AccessState last_write;                          // stages + write access of the last writer
-    VkPipelineStageFlags2 read_stages = 0;           // stages that read since that write
-    VkPipelineStageFlags2 visible_stages = 0;        // the last write is visible to these...
-    VkAccessFlags2 visible_access = 0;               // ...for these accesses
+    AccessState last_write;                    // stages + write access of the last writer
+    VkPipelineStageFlags2 read_stages = 0;     // stages that read since that write
+    VkPipelineStageFlags2 visible_stages = 0;  // the last write is visible to these...
+    VkAccessFlags2 visible_access = 0;         // ...for these accesses
     VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
 };
 
 // The barrier that moves `tracker` to `next`, or nothing when none is needed.
-std::optional<Barrier> step(Tracker& tracker, const AccessState& next, bool writes, uint32_t resource,
-                            bool is_image) {
+std::optional<Barrier> step(Tracker& tracker, const AccessState& next, bool writes, uint32_t resource, bool is_image) {
     const bool layout_change = is_image && tracker.layout != next.layout;
     Barrier barrier{resource, is_image, {}, next};
     barrier.src.stages = tracker.last_write.stages | tracker.read_stages;

@@ -346,8 +346,12 @@ void FrameExecutor::begin_rendering(VkCommandBuffer cmd, uint32_t pass) {
         vkCmdBeginRendering(cmd, &rendering);
     }
     // Flip Y so that +y is up in NDC as in OpenGL and glTF; row 0 of the image is the top.
-    const VkViewport viewport{0.0f, static_cast<float>(extent.height), static_cast<float>(extent.width),
-                              -static_cast<float>(extent.height), 0.0f, 1.0f};
+    const VkViewport viewport{0.0f,
+                              static_cast<float>(extent.height),
+                              static_cast<float>(extent.width),
+                              -static_cast<float>(extent.height),
+                              0.0f,
+                              1.0f};
     const VkRect2D scissor{{0, 0}, extent};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
@@ -474,10 +478,10 @@ FrameReport FrameExecutor::execute() {
                   "timestamp queries");
         const double period_ns = context_.properties().limits.timestampPeriod;
         for (uint32_t position = 0; position < count; ++position) {
-            report.passes.push_back({graph_.passes()[compiled.order[position]].name,
-                                     static_cast<double>(ticks[2 * position + 1] - ticks[2 * position]) * period_ns *
-                                         1e-6,
-                                     graph_.created_bytes(compiled.order[position])});
+            report.passes.push_back(
+                {graph_.passes()[compiled.order[position]].name,
+                 static_cast<double>(ticks[2 * position + 1] - ticks[2 * position]) * period_ns * 1e-6,
+                 graph_.created_bytes(compiled.order[position])});
         }
     }
     return report;

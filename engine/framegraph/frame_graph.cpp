@@ -251,8 +251,8 @@ const CompiledGraph& FrameGraph::compile(uint32_t output_width, uint32_t output_
                 const EffectDecision* decision = needs_.find(*passes_[writer].serves);
                 throw InternalError("pass '" + passes_[p].name + "' reads '" + resources_[use.resource].name +
                                     "' from pass '" + passes_[writer].name + "', which serves effect '" +
-                                    decision->effect.name + "' that this frame does not need (" +
-                                    decision->reason + ")");
+                                    decision->effect.name + "' that this frame does not need (" + decision->reason +
+                                    ")");
             }
         }
     }
@@ -327,8 +327,8 @@ std::vector<ResourceTimeline> FrameGraph::build_timelines(const std::vector<uint
         const PassDecl& pass = passes_[order[position]];
         for (const ResourceUse& use : pass.uses) {
             const ResourceDecl& decl = resources_[use.resource];
-            const AccessState state =
-                access_state(use.use, pass.kind, use.shader_stages, decl.is_image && format_is_depth(decl.image.format));
+            const AccessState state = access_state(use.use, pass.kind, use.shader_stages,
+                                                   decl.is_image && format_is_depth(decl.image.format));
             auto& accesses = timelines[use.resource].accesses;
             if (!accesses.empty() && accesses.back().position == position) {
                 // Several uses of one resource in one pass merge into one state.

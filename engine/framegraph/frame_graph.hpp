@@ -33,8 +33,8 @@ enum class SizeClass : uint8_t { Absolute, OutputRelative };
 struct ImageInfo {
     VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;
     SizeClass size_class = SizeClass::OutputRelative;
-    float scale = 1.0f;                     // OutputRelative: fraction of the output size
-    uint32_t width = 0, height = 0;         // Absolute
+    float scale = 1.0f;              // OutputRelative: fraction of the output size
+    uint32_t width = 0, height = 0;  // Absolute
 };
 
 struct BufferInfo {
@@ -89,9 +89,9 @@ struct ResourceDecl {
     BufferInfo buffer;
     ImportedImage imported_image;
     ImportedBuffer imported_buffer;
-    uint32_t version = 0;                        // current version
-    std::vector<uint32_t> writer_of_version;     // pass index that produced version v (v >= 1)
-    VkImageUsageFlags image_usage = 0;           // union of declared uses
+    uint32_t version = 0;                     // current version
+    std::vector<uint32_t> writer_of_version;  // pass index that produced version v (v >= 1)
+    VkImageUsageFlags image_usage = 0;        // union of declared uses
     VkBufferUsageFlags buffer_usage = 0;
 };
 
@@ -159,14 +159,14 @@ struct CulledPass {
 
 // What compile() derives. Positions index passes in execution order.
 struct CompiledGraph {
-    std::vector<uint32_t> order;                      // pass indices, execution order
+    std::vector<uint32_t> order;  // pass indices, execution order
     std::vector<CulledPass> culled;
-    std::vector<ResourceTimeline> timelines;          // per resource (index = resource)
-    std::vector<bool> resource_live;                  // used by at least one living pass
-    std::vector<uint32_t> first_use, last_use;        // execution positions, for live resources
+    std::vector<ResourceTimeline> timelines;    // per resource (index = resource)
+    std::vector<bool> resource_live;            // used by at least one living pass
+    std::vector<uint32_t> first_use, last_use;  // execution positions, for live resources
     BarrierPlan barriers;
-    AliasPlan aliasing;                               // transients only, estimated sizes
-    std::vector<uint32_t> aliased_resources;          // resource index of each aliasing request
+    AliasPlan aliasing;                       // transients only, estimated sizes
+    std::vector<uint32_t> aliased_resources;  // resource index of each aliasing request
     uint32_t output_width = 0, output_height = 0;
 };
 

@@ -23,9 +23,9 @@ struct EffectTag {
     constexpr EffectTag() = default;
     constexpr EffectTag(uint32_t tag_id, const char* tag_name) : id(tag_id), name(tag_name) {}
     template <typename E>
-        requires std::is_enum_v<E> && requires(E e) {
-            { effect_name(e) } -> std::convertible_to<const char*>;
-        }
+    requires std::is_enum_v<E> && requires(E e) {
+        { effect_name(e) } -> std::convertible_to<const char*>;
+    }
     constexpr EffectTag(E effect) : id(static_cast<uint32_t>(effect)), name(effect_name(effect)) {}
 
     // The name takes part so that two enums' values with the same number stay apart.

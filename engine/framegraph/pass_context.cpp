@@ -95,8 +95,8 @@ void PassContext::bind(const Pipeline& pipeline, const std::vector<DescriptorBin
         write.dstBinding = binding.binding;
         write.descriptorCount = 1;
         write.descriptorType = binding.type;
-        const bool is_buffer = binding.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER ||
-                               binding.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+        const bool is_buffer =
+            binding.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER || binding.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
         if (is_buffer) {
             write.pBufferInfo = &binding.buffer;
         } else {

@@ -49,7 +49,8 @@ struct DescriptorBinding {
 
 class PassContext {
 public:
-    PassContext(FrameExecutor& executor, VkCommandBuffer cmd, uint32_t pass) : executor_(executor), cmd_(cmd), pass_(pass) {}
+    PassContext(FrameExecutor& executor, VkCommandBuffer cmd, uint32_t pass)
+        : executor_(executor), cmd_(cmd), pass_(pass) {}
 
     VkCommandBuffer cmd() const { return cmd_; }
     const Context& context() const;

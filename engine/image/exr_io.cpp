@@ -40,16 +40,13 @@ std::string one_line(std::string text) {
     return text;
 }
 
-std::size_t bytes_per_value(Imf::PixelType type) {
-    return type == Imf::HALF ? sizeof(half) : sizeof(float);
-}
+std::size_t bytes_per_value(Imf::PixelType type) { return type == Imf::HALF ? sizeof(half) : sizeof(float); }
 
 // Points one slice per channel at an interleaved buffer (channels.size() values per pixel,
 // pixel (0, 0) at `base` corresponding to the window's top-left corner). Used by both the
 // writer and the reader so the layout is defined in one place.
-void add_interleaved_slices(Imf::FrameBuffer& frame_buffer, const std::string& prefix,
-                            ChannelNames channels, Imf::PixelType type, const void* base,
-                            const Imath::Box2i& window, double fill_value) {
+void add_interleaved_slices(Imf::FrameBuffer& frame_buffer, const std::string& prefix, ChannelNames channels,
+                            Imf::PixelType type, const void* base, const Imath::Box2i& window, double fill_value) {
     const std::size_t value_bytes = bytes_per_value(type);
     const std::size_t pixel_bytes = value_bytes * channels.size();
     for (std::size_t c = 0; c < channels.size(); ++c) {
@@ -96,8 +93,7 @@ std::vector<half> to_half_clamped(std::span<const float> values, std::size_t& cl
 
 }  // namespace
 
-ExrWriteReport write_exr(const std::filesystem::path& path, const ImageRGBA32F& image,
-                         ExrPixelType pixel_type) {
+ExrWriteReport write_exr(const std::filesystem::path& path, const ImageRGBA32F& image, ExrPixelType pixel_type) {
     require_consistent_image(image);
     require_writable_file_path(path);
 
@@ -149,15 +145,12 @@ void require_full_resolution(const std::filesystem::path& path, const Imf::Chann
 }
 
 bool has_any_channel(const Imf::ChannelList& channels, const std::string& prefix, ChannelNames names) {
-    return std::any_of(names.begin(), names.end(), [&](const char* n) {
-        return channels.findChannel(prefix + n) != nullptr;
-    });
+    return std::any_of(names.begin(), names.end(),
+                       [&](const char* n) { return channels.findChannel(prefix + n) != nullptr; });
 }
 
 ImageRGBA32F read_pixels(const std::filesystem::path& path, Imf::InputFile& file) {
-    auto fail = [&](const std::string& why) {
-        throw UserError("cannot read " + quoted_path(path) + ": " + why);
-    };
+    auto fail = [&](const std::string& why) { throw UserError("cannot read " + quoted_path(path) + ": " + why); };
 
     const Imath::Box2i window = file.header().dataWindow();
     const std::int64_t width = std::int64_t{window.max.x} - window.min.x + 1;
@@ -192,8 +185,7 @@ ImageRGBA32F read_pixels(const std::filesystem::path& path, Imf::InputFile& file
     add_interleaved_slices(frame_buffer, "", kRgba, Imf::FLOAT, image.rgba.data(), window, 1.0);
     for (ExtraLayer& layer : image.layers) {
         for (const char* name : kRgb) require_full_resolution(path, channels, layer.name + "." + name);
-        add_interleaved_slices(frame_buffer, layer.name + ".", kRgb, Imf::FLOAT, layer.rgb.data(),
-                               window, 0.0);
+        add_interleaved_slices(frame_buffer, layer.name + ".", kRgb, Imf::FLOAT, layer.rgb.data(), window, 0.0);
     }
     file.setFrameBuffer(frame_buffer);
     file.readPixels(window.min.y, window.max.y);

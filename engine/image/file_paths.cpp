@@ -22,9 +22,7 @@ std::string quoted_path(const fs::path& path) {
 }
 
 void require_writable_file_path(const fs::path& path) {
-    auto fail = [&](const std::string& why) {
-        throw UserError("cannot write " + quoted_path(path) + ": " + why);
-    };
+    auto fail = [&](const std::string& why) { throw UserError("cannot write " + quoted_path(path) + ": " + why); };
 
     if (path.empty()) fail("the path is empty");
 
@@ -51,9 +49,7 @@ void require_writable_file_path(const fs::path& path) {
 }
 
 void require_readable_file_path(const fs::path& path) {
-    auto fail = [&](const std::string& why) {
-        throw UserError("cannot read " + quoted_path(path) + ": " + why);
-    };
+    auto fail = [&](const std::string& why) { throw UserError("cannot read " + quoted_path(path) + ": " + why); };
 
     if (path.empty()) fail("the path is empty");
     std::error_code ec;

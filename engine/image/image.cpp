@@ -11,21 +11,19 @@ void require_consistent_image(const ImageRGBA32F& image) {
     auto fail = [](const std::string& why) { throw InternalError("inconsistent image: " + why); };
 
     if (image.width <= 0 || image.height <= 0) {
-        fail("size " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-             " is empty");
+        fail("size " + std::to_string(image.width) + "x" + std::to_string(image.height) + " is empty");
     }
     const std::size_t pixels = image.pixel_count();
     if (image.rgba.size() != pixels * 4) {
-        fail("rgba holds " + std::to_string(image.rgba.size()) + " floats, expected " +
-             std::to_string(pixels * 4));
+        fail("rgba holds " + std::to_string(image.rgba.size()) + " floats, expected " + std::to_string(pixels * 4));
     }
     std::set<std::string> names;
     for (const ExtraLayer& layer : image.layers) {
         if (layer.name.empty()) fail("an extra layer has an empty name");
         if (!names.insert(layer.name).second) fail("extra layer '" + layer.name + "' appears twice");
         if (layer.rgb.size() != pixels * 3) {
-            fail("layer '" + layer.name + "' holds " + std::to_string(layer.rgb.size()) +
-                 " floats, expected " + std::to_string(pixels * 3));
+            fail("layer '" + layer.name + "' holds " + std::to_string(layer.rgb.size()) + " floats, expected " +
+                 std::to_string(pixels * 3));
         }
     }
 }

@@ -22,9 +22,7 @@ struct ImageRGBA32F {
     std::vector<float> rgba;  // 4 floats per pixel, row-major, row 0 is the TOP row of the picture
     std::vector<ExtraLayer> layers;
 
-    std::size_t pixel_count() const {
-        return static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-    }
+    std::size_t pixel_count() const { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
 
     float* pixel(int x, int y) { return rgba.data() + offset(x, y); }
     const float* pixel(int x, int y) const { return rgba.data() + offset(x, y); }
@@ -32,8 +30,7 @@ struct ImageRGBA32F {
 private:
     std::size_t offset(int x, int y) const {
         assert(x >= 0 && x < width && y >= 0 && y < height);
-        return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                static_cast<std::size_t>(x)) * 4;
+        return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 4;
     }
 };
 

@@ -7,8 +7,8 @@
 #include <array>
 #include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -24,11 +24,9 @@ constexpr std::array<std::uint8_t, 3> kNonFiniteColor = {255, 0, 255};
 
 }  // namespace
 
-std::size_t write_png_preview(const std::filesystem::path& path, const ImageRGBA32F& image,
-                              float exposure) {
+std::size_t write_png_preview(const std::filesystem::path& path, const ImageRGBA32F& image, float exposure) {
     if (!std::isfinite(exposure) || exposure <= 0.0f) {
-        throw UserError("PNG preview exposure must be a finite number > 0, got " +
-                        std::to_string(exposure));
+        throw UserError("PNG preview exposure must be a finite number > 0, got " + std::to_string(exposure));
     }
     require_consistent_image(image);
     require_writable_file_path(path);

@@ -13,7 +13,6 @@ namespace vkw {
 // sRGB -> 8 bit. Pixels with any non-finite R, G or B are drawn magenta; returns how many.
 // Throws UserError for an unwritable path or an exposure that is not finite and > 0,
 // InternalError if the image's sizes are inconsistent.
-std::size_t write_png_preview(const std::filesystem::path& path, const ImageRGBA32F& image,
-                              float exposure);
+std::size_t write_png_preview(const std::filesystem::path& path, const ImageRGBA32F& image, float exposure);
 
 }  // namespace vkw

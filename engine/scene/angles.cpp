@@ -15,10 +15,22 @@ void sin_cos_deg(double deg, double& s, double& c) {
     const double rc = std::cos(rest);
     // ((q mod 4) + 4) mod 4 handles negative angles.
     switch (((static_cast<long long>(quadrant) % 4) + 4) % 4) {
-        case 0: s = rs;  c = rc;  break;
-        case 1: s = rc;  c = -rs; break;
-        case 2: s = -rs; c = -rc; break;
-        default: s = -rc; c = rs; break;
+        case 0:
+            s = rs;
+            c = rc;
+            break;
+        case 1:
+            s = rc;
+            c = -rs;
+            break;
+        case 2:
+            s = -rs;
+            c = -rc;
+            break;
+        default:
+            s = -rc;
+            c = rs;
+            break;
     }
 }
 

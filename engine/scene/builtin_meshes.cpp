@@ -66,15 +66,20 @@ std::array<TerrainWave, kTerrainWaves> terrain_waves(const TerrainShape& shape) 
 }  // namespace
 
 Mesh make_plane_mesh(const glm::dvec2& half_size) {
-    return grid_mesh(half_size, 1, [](double, double) { return 0.0; },
-                     [](double, double) { return glm::vec3(0.0f, 1.0f, 0.0f); });
+    return grid_mesh(
+        half_size, 1, [](double, double) { return 0.0; }, [](double, double) { return glm::vec3(0.0f, 1.0f, 0.0f); });
 }
 
 Mesh make_box_mesh(const glm::dvec3& half_size) {
     // Each face: centre n * h and edges u, v with cross(u, v) = n.
     const glm::dvec3 x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
     const std::array<std::array<glm::dvec3, 3>, 6> faces = {{
-        {x, y, z}, {-x, z, y}, {y, z, x}, {-y, x, z}, {z, x, y}, {-z, y, x},
+        {x, y, z},
+        {-x, z, y},
+        {y, z, x},
+        {-y, x, z},
+        {z, x, y},
+        {-z, y, x},
     }};
     Mesh mesh;
     for (const auto& [n, u_axis, v_axis] : faces) {

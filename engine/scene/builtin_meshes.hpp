@@ -32,9 +32,9 @@ Mesh make_sphere_mesh(double radius);
 // = 2 pi u_{2i}, 2 pi u_{2i+1}, u_j the j-th output of splitmix64 seeded with `seed`, mapped
 // to [0, 1) by its top 53 bits.
 struct TerrainShape {
-    double size = 10.0;          // m, side of the square x, z in [-size/2, size/2]
-    uint32_t resolution = 64;    // cells per side: (resolution + 1)^2 vertices
-    double height = 1.0;         // m, amplitude bound: |h| <= height
+    double size = 10.0;        // m, side of the square x, z in [-size/2, size/2]
+    uint32_t resolution = 64;  // cells per side: (resolution + 1)^2 vertices
+    double height = 1.0;       // m, amplitude bound: |h| <= height
     uint64_t seed = 1;
 };
 

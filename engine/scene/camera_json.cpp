@@ -30,9 +30,10 @@ Camera read_camera(FieldReader& fields) {
     if (!(camera.near_plane < camera.far_plane)) {
         // Say so when far was not written: "far: 500" would puzzle someone who only set near.
         const std::string far_text = format_number(camera.far_plane) + (fields.has("far") ? "" : " (the default)");
-        fields.fail("far", far_text + " is not greater than " + fields.path_of("near") + " = " +
-                               format_number(camera.near_plane),
-                    "value > " + fields.path_of("near"));
+        fields.fail(
+            "far",
+            far_text + " is not greater than " + fields.path_of("near") + " = " + format_number(camera.near_plane),
+            "value > " + fields.path_of("near"));
     }
     if (target && direction) fields.fail("", "both target and direction are given", kViewForms);
     if (!target && !direction) {

@@ -37,7 +37,8 @@ CausticSettings read_caustic_settings(FieldReader& fields) {
     caustics.jitter = fields.boolean("jitter", defaults.jitter);
     caustics.kernel = fields.choice("kernel", kKernels, defaults.kernel);
     caustics.splat = fields.choice("splat", kSplats, defaults.splat);
-    caustics.map_scale = fields.number("map_scale", Range::closed(0.25, 4.0, "texels per water cell"), defaults.map_scale);
+    caustics.map_scale =
+        fields.number("map_scale", Range::closed(0.25, 4.0, "texels per water cell"), defaults.map_scale);
     fields.finish();
     if (caustics.splat == CausticSplat::CameraSpace && caustics.method != CausticMethod::Photons) {
         fields.fail("splat", "camera-space splats gather the photons' flux, so they need method \"photons\"",

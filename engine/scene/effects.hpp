@@ -20,10 +20,9 @@ enum class Effect : uint8_t {
 };
 
 // Every effect, in declaration order.
-inline constexpr std::array<Effect, 7> kAllEffects = {Effect::Water,           Effect::UnderwaterView,
-                                                      Effect::Reflection,      Effect::Refraction,
-                                                      Effect::SurfaceCaustics, Effect::VolumeCaustics,
-                                                      Effect::CausticBlur};
+inline constexpr std::array<Effect, 7> kAllEffects = {
+    Effect::Water,           Effect::UnderwaterView, Effect::Reflection, Effect::Refraction,
+    Effect::SurfaceCaustics, Effect::VolumeCaustics, Effect::CausticBlur};
 
 // The effect's name in scene files (effects.<name>) and reports.
 constexpr const char* effect_name(Effect effect) {

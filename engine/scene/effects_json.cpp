@@ -67,7 +67,8 @@ WaterShadingSettings read_water_shading(FieldReader& fields) {
     const WaterShadingSettings defaults;
     WaterShadingSettings shading;
     shading.fresnel = fields.choice("fresnel", kFresnels, defaults.fresnel);
-    shading.fresnel_power = fields.number("fresnel_power", Range::closed(1.0, 10.0, "exponent q"), defaults.fresnel_power);
+    shading.fresnel_power =
+        fields.number("fresnel_power", Range::closed(1.0, 10.0, "exponent q"), defaults.fresnel_power);
     if (fields.has("depth_blend")) {
         shading.depth_blend = fields.object("depth_blend", Presence::optional, read_depth_blend);
     }
@@ -106,7 +107,7 @@ EffectsSettings read_effects(FieldReader& fields) {
         }
         const auto reader = effect.value == Effect::Reflection   ? read_scene_lookup_effect
                             : effect.value == Effect::Refraction ? read_refraction_effect
-                                                                     : read_effect;
+                                                                 : read_effect;
         effects[effect.value] = fields.object(effect.name, Presence::optional, reader);
     }
     return effects;

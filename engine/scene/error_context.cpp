@@ -18,7 +18,8 @@ bool paths_overlap(std::string_view a, std::string_view b) {
 
 // A message must stay on one line: the CLI prints it as is and tests match it by substring.
 std::string one_line(std::string text) {
-    std::replace_if(text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+    std::replace_if(
+        text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
     return text;
 }
 
@@ -31,11 +32,13 @@ void ErrorContext::note_override(std::string path, std::string text) {
 }
 
 void ErrorContext::fail(std::string_view where, std::string_view what, std::string_view accepted) const {
-    std::string message = file_name_ + ": " + std::string(where.empty() ? "top level" : where) + ": " + std::string(what);
+    std::string message =
+        file_name_ + ": " + std::string(where.empty() ? "top level" : where) + ": " + std::string(what);
     if (!accepted.empty()) message += " (accepted: " + std::string(accepted) + ")";
     // The latest override wins in the JSON, so it is the one to blame.
-    const auto note = std::find_if(overrides_.rbegin(), overrides_.rend(),
-                                   [&](const OverrideNote& n) { return !where.empty() && paths_overlap(n.path, where); });
+    const auto note = std::find_if(overrides_.rbegin(), overrides_.rend(), [&](const OverrideNote& n) {
+        return !where.empty() && paths_overlap(n.path, where);
+    });
     if (note != overrides_.rend()) message += " [from override '" + note->text + "']";
     throw UserError(one_line(std::move(message)));
 }

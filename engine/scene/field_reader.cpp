@@ -232,9 +232,7 @@ void FieldReader::fail_type(const std::string& path, std::string_view expected, 
     errors_.fail(path, "expected " + std::string(expected) + ", got " + describe_value(value), accepted);
 }
 
-std::string FieldReader::path_of(std::string_view key) const {
-    return key.empty() ? path_ : field_path(path_, key);
-}
+std::string FieldReader::path_of(std::string_view key) const { return key.empty() ? path_ : field_path(path_, key); }
 
 const json& FieldReader::empty_object() {
     static const json empty = json::object();

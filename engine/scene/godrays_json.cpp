@@ -19,13 +19,13 @@ GodraySettings read_godray_settings(FieldReader& fields) {
     const GodraySettings defaults;
     GodraySettings godrays;
     // 1024^2 beams of 48 bytes fill 48 MiB, within one storage binding (128 MiB on lavapipe).
-    godrays.grid = static_cast<uint32_t>(
-        fields.integer("grid", Range::closed(2.0, 1024.0, "beams per side"), defaults.grid));
+    godrays.grid =
+        static_cast<uint32_t>(fields.integer("grid", Range::closed(2.0, 1024.0, "beams per side"), defaults.grid));
     godrays.resolution_scale = fields.number("resolution_scale", Range::closed(0.5, 1.0), defaults.resolution_scale);
     godrays.max_depth = fields.optional_number("max_depth", Range::above(0.0, "m"));
     godrays.method = fields.choice("method", kMethods, defaults.method);
-    godrays.march_steps = static_cast<uint32_t>(
-        fields.integer("march_steps", Range::closed(1.0, 4096.0, "steps"), defaults.march_steps));
+    godrays.march_steps =
+        static_cast<uint32_t>(fields.integer("march_steps", Range::closed(1.0, 4096.0, "steps"), defaults.march_steps));
     fields.finish();  // a misspelt key explains more than a value out of the set
     // Two sizes only: the full output, or half of it per side (de la Fuente 2011's godray buffer).
     if (godrays.resolution_scale != 0.5 && godrays.resolution_scale != 1.0) {

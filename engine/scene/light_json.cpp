@@ -22,8 +22,9 @@ glm::dvec3 normalised_direction(FieldReader& fields, const glm::dvec3& given) {
     const glm::dvec3 direction = *unit;
     if (!(direction.y < 0.0)) {
         fields.fail("direction",
-                    format_vec3(given) + " does not point downward; it is the direction the light travels, not the "
-                                         "direction toward the sun",
+                    format_vec3(given) +
+                        " does not point downward; it is the direction the light travels, not the "
+                        "direction toward the sun",
                     "a non-zero vector with y < 0, e.g. [0, -1, 0] for an overhead sun");
     }
     return direction;

@@ -11,10 +11,10 @@
 namespace vkw {
 
 struct Medium {
-    std::string preset;                   // the preset it came from; empty when given explicitly
-    glm::dvec3 sigma_a{0.0, 0.0, 0.0};    // absorption, 1/m, >= 0
-    glm::dvec3 sigma_s{0.0, 0.0, 0.0};    // scattering, 1/m, >= 0
-    double g = 0.0;                       // Henyey-Greenstein parameter, in (-1, 1)
+    std::string preset;                 // the preset it came from; empty when given explicitly
+    glm::dvec3 sigma_a{0.0, 0.0, 0.0};  // absorption, 1/m, >= 0
+    glm::dvec3 sigma_s{0.0, 0.0, 0.0};  // scattering, 1/m, >= 0
+    double g = 0.0;                     // Henyey-Greenstein parameter, in (-1, 1)
 
     glm::dvec3 sigma_t() const { return sigma_a + sigma_s; }  // extinction
 };

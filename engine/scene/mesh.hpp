@@ -15,9 +15,9 @@ namespace vkw {
 
 struct Mesh {
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;    // unit, one per position
-    std::vector<glm::vec2> uvs;        // one per position, or empty when the source has none
-    std::vector<uint32_t> indices;     // three per triangle
+    std::vector<glm::vec3> normals;  // unit, one per position
+    std::vector<glm::vec2> uvs;      // one per position, or empty when the source has none
+    std::vector<uint32_t> indices;   // three per triangle
     glm::dvec3 bounds_min{0.0};
     glm::dvec3 bounds_max{0.0};
     // glTF baseColorFactor (linear RGBA); white for the built-in shapes.

@@ -86,9 +86,10 @@ void apply_one(json& root, const std::string& text, ErrorContext& errors) {
                             "[index] only after an array field");
             }
             if (*step.index >= node->size()) {
-                errors.fail(step_path(path, step), where + " indexes past the end of an array of " +
-                                                       std::to_string(node->size()) + " elements",
-                            "an index below " + std::to_string(node->size()));
+                errors.fail(
+                    step_path(path, step),
+                    where + " indexes past the end of an array of " + std::to_string(node->size()) + " elements",
+                    "an index below " + std::to_string(node->size()));
             }
         } else if (!node->is_object()) {
             errors.fail(path, where + " sets a field inside a value that is not an object: " + describe_value(*node),

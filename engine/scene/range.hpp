@@ -16,11 +16,11 @@ struct Range {
     bool max_inclusive = true;
     std::string unit;  // appended to the wording; empty for dimensionless values
 
-    static Range any(std::string unit = {});                                 // any finite value
-    static Range closed(double lo, double hi, std::string unit = {});        // lo <= v <= hi
-    static Range open(double lo, double hi, std::string unit = {});          // lo < v < hi
-    static Range at_least(double lo, std::string unit = {});                 // v >= lo
-    static Range above(double lo, std::string unit = {});                    // v > lo
+    static Range any(std::string unit = {});                           // any finite value
+    static Range closed(double lo, double hi, std::string unit = {});  // lo <= v <= hi
+    static Range open(double lo, double hi, std::string unit = {});    // lo < v < hi
+    static Range at_least(double lo, std::string unit = {});           // v >= lo
+    static Range above(double lo, std::string unit = {});              // v > lo
 
     bool contains(double value) const;
     std::string describe() const;

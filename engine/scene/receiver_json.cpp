@@ -25,7 +25,7 @@ constexpr std::array<Named<bool>, 2> kTextureUse = {{{"material", true}, {"none"
 
 // Every shape field of every type, declared when the type itself is missing.
 constexpr std::array<std::string_view, 8> kShapeFields = {"half_size", "radius", "size", "resolution",
-                                                          "height", "seed", "file", "texture"};
+                                                          "height",    "seed",   "file", "texture"};
 
 Mesh read_gltf(FieldReader& fields, const std::filesystem::path& base_dir, std::optional<glm::dvec3>& albedo) {
     const auto file = fields.optional_string("file");
@@ -52,12 +52,9 @@ Mesh read_gltf(FieldReader& fields, const std::filesystem::path& base_dir, std::
 Mesh read_shape(FieldReader& fields, ReceiverType type, const std::filesystem::path& base_dir,
                 std::optional<glm::dvec3>& albedo) {
     switch (type) {
-        case ReceiverType::Plane:
-            return make_plane_mesh(fields.vec2("half_size", Range::above(0.0, "m")));
-        case ReceiverType::Box:
-            return make_box_mesh(fields.vec3("half_size", Range::above(0.0, "m")));
-        case ReceiverType::Sphere:
-            return make_sphere_mesh(fields.number("radius", Range::above(0.0, "m")));
+        case ReceiverType::Plane: return make_plane_mesh(fields.vec2("half_size", Range::above(0.0, "m")));
+        case ReceiverType::Box: return make_box_mesh(fields.vec3("half_size", Range::above(0.0, "m")));
+        case ReceiverType::Sphere: return make_sphere_mesh(fields.number("radius", Range::above(0.0, "m")));
         case ReceiverType::Terrain: {
             const TerrainShape defaults;
             TerrainShape shape;
@@ -70,8 +67,7 @@ Mesh read_shape(FieldReader& fields, ReceiverType type, const std::filesystem::p
             fields.finish();  // no mesh from placeholders of missing fields
             return make_terrain_mesh(shape);
         }
-        case ReceiverType::Gltf:
-            return read_gltf(fields, base_dir, albedo);
+        case ReceiverType::Gltf: return read_gltf(fields, base_dir, albedo);
     }
     return {};
 }

@@ -25,14 +25,14 @@
 namespace vkw {
 
 struct Camera {
-    glm::dvec3 position{0.0, 0.0, 0.0};   // required in a scene file
+    glm::dvec3 position{0.0, 0.0, 0.0};  // required in a scene file
     // A point the camera looks at, != position. The file gives either `target` or `direction`;
     // a direction d becomes target = position + d / |d|.
     glm::dvec3 target{0.0, 0.0, -1.0};
-    double fov_y_deg = 60.0;              // full vertical field of view, in (1, 179)
-    double near_plane = 0.05;             // metres, 0 < near_plane < far_plane
-    double far_plane = 500.0;             // metres
-    double exposure = 1.0;                // linear scale on radiance before display, > 0
+    double fov_y_deg = 60.0;   // full vertical field of view, in (1, 179)
+    double near_plane = 0.05;  // metres, 0 < near_plane < far_plane
+    double far_plane = 500.0;  // metres
+    double exposure = 1.0;     // linear scale on radiance before display, > 0
 };
 
 struct Sun {
@@ -49,33 +49,33 @@ enum class SkyModel : uint8_t { Constant, Gradient };
 // Sky radiance L(dir) in W m^-2 sr^-1 for a unit direction dir (see sky_radiance below).
 struct Sky {
     SkyModel model = SkyModel::Constant;
-    glm::dvec3 radiance{0.0, 0.0, 0.0};   // Constant: the radiance of every direction; required
-    glm::dvec3 zenith{0.0, 0.0, 0.0};     // Gradient: straight up; required
-    glm::dvec3 horizon{0.0, 0.0, 0.0};    // Gradient: at the horizon; required
-    glm::dvec3 ground{0.0, 0.0, 0.0};     // Gradient: every direction below the horizon; default horizon
-    double exponent = 0.5;                // Gradient: > 0, shape of the blend
+    glm::dvec3 radiance{0.0, 0.0, 0.0};  // Constant: the radiance of every direction; required
+    glm::dvec3 zenith{0.0, 0.0, 0.0};    // Gradient: straight up; required
+    glm::dvec3 horizon{0.0, 0.0, 0.0};   // Gradient: at the horizon; required
+    glm::dvec3 ground{0.0, 0.0, 0.0};    // Gradient: every direction below the horizon; default horizon
+    double exponent = 0.5;               // Gradient: > 0, shape of the blend
 };
 
 // Horizontal Lambertian plane y = height: a square of side 2 * half_extent centred
 // under the origin (x and z in [-half_extent, half_extent]).
 struct FloorPlane {
-    double height = -1.5;                 // metres; the pool floor 1.5 m below the water level
-    glm::dvec3 albedo{0.5, 0.5, 0.5};     // in [0, 1] per channel
-    double half_extent = 10.0;            // metres, > 0
+    double height = -1.5;              // metres; the pool floor 1.5 m below the water level
+    glm::dvec3 albedo{0.5, 0.5, 0.5};  // in [0, 1] per channel
+    double half_extent = 10.0;         // metres, > 0
 };
 
 // The water body: a surface around y = level over the square |x|, |z| <= half_extent, and the
 // water volume below it down to level - depth (or to the floor when depth is not given).
 struct Water {
-    double level = 0.0;                   // metres, mean surface height
-    double ior = 1.333;                   // index of refraction, in [1, 2] (docs/model.md section 1)
-    double half_extent = 10.0;            // metres, > 0
+    double level = 0.0;         // metres, mean surface height
+    double ior = 1.333;         // index of refraction, in [1, 2] (docs/model.md section 1)
+    double half_extent = 10.0;  // metres, > 0
     // Surface grid cells per side, in [2, 4096]. The device's own limits (buffer sizes,
     // dispatch counts) are checked by the renderer, not here.
     uint32_t grid_resolution = 256;
-    double time = 0.0;                    // seconds at which the waves are evaluated
-    std::optional<double> depth;          // metres below level, > 0; nullopt: down to the floor
-    WaveSettings waves;                   // the file's water.seed is waves.seed
+    double time = 0.0;            // seconds at which the waves are evaluated
+    std::optional<double> depth;  // metres below level, > 0; nullopt: down to the floor
+    WaveSettings waves;           // the file's water.seed is waves.seed
 };
 
 enum class ReceiverType : uint8_t { Plane, Box, Sphere, Terrain, Gltf };
@@ -83,13 +83,13 @@ enum class ReceiverType : uint8_t { Plane, Box, Sphere, Terrain, Gltf };
 // A Lambertian object (docs/model.md section 1): the built-in shape or glTF mesh, already
 // transformed to world space.
 struct Receiver {
-    std::string name;                     // from the file; default: its field path, "receivers[2]"
+    std::string name;  // from the file; default: its field path, "receivers[2]"
     ReceiverType type = ReceiverType::Plane;
     // Lambertian albedo in [0, 1]; multiplies the base colour texture when the mesh has one.
     // Default: 0.5 grey, or the glTF material's baseColorFactor for a glTF mesh.
     glm::dvec3 albedo{0.5, 0.5, 0.5};
-    glm::dmat4 object_to_world{1.0};      // translation * rotation * scale, as in the file
-    Mesh mesh;                            // world space
+    glm::dmat4 object_to_world{1.0};  // translation * rotation * scale, as in the file
+    Mesh mesh;                        // world space
 };
 
 // effects.<name>.mode: auto lets the frame's needs decide; on and off force the decision.
@@ -124,29 +124,29 @@ enum class GodrayMethod : uint8_t {
 
 // The settings of effects.godrays beside its mode (scenes/README.md).
 struct GodraySettings {
-    uint32_t grid = 128;                 // photon beams per side over the water, in [2, 1024]
-    double resolution_scale = 0.5;       // of the output size: 1 or 0.5
-    std::optional<double> max_depth;     // m below the mean level where beams stop; nullopt: at the floor
+    uint32_t grid = 128;              // photon beams per side over the water, in [2, 1024]
+    double resolution_scale = 0.5;    // of the output size: 1 or 0.5
+    std::optional<double> max_depth;  // m below the mean level where beams stop; nullopt: at the floor
     GodrayMethod method = GodrayMethod::Lines;
-    uint32_t march_steps = 32;           // Marched: steps per view segment in the water, in [1, 4096]
+    uint32_t march_steps = 32;  // Marched: steps per view segment in the water, in [1, 4096]
 };
 
 // effects.caustics.kernel: how a photon's flux is splatted into the light-space map.
 enum class CausticKernel : uint8_t {
-    Bilinear,  // a tent one texel wide: the 2x2 bilinear splat
-    Adaptive,  // a tent as wide as the photon's neighbours land apart (1 to 4 texels per axis)
-    Footprint, // the photon's sub-cell's footprint, by area (Tipprasert 2006's area ratio; up to 8 texels per axis)
+    Bilinear,   // a tent one texel wide: the 2x2 bilinear splat
+    Adaptive,   // a tent as wide as the photon's neighbours land apart (1 to 4 texels per axis)
+    Footprint,  // the photon's sub-cell's footprint, by area (Tipprasert 2006's area ratio; up to 8 texels per axis)
 };
 
 // effects.caustics.method: what produces the caustic map.
 enum class CausticMethod : uint8_t {
-    Photons,     // the photon grid (passes/caustics/caustics_photons.hpp)
+    Photons,  // the photon grid (passes/caustics/caustics_photons.hpp)
     Procedural,  // Guardado & Sánchez-Crespo 2004's backward ray and sun lobe, a baseline (passes/caustics/caustics_procedural.hpp)
 };
 
 // effects.caustics.splat: where the photons' flux is gathered.
 enum class CausticSplat : uint8_t {
-    LightSpace,   // the light-space map along the refracted sun, read by every receiver (passes/caustics/caustics_photons.hpp)
+    LightSpace,  // the light-space map along the refracted sun, read by every receiver (passes/caustics/caustics_photons.hpp)
     CameraSpace,  // gaussians on the receivers the camera sees without the water (Ojeda & Susín 2013;
                   // passes/caustics/caustics_camera_splats.hpp)
 };
@@ -181,14 +181,14 @@ struct CausticBlurSettings {
 enum class SurfaceFresnel : uint8_t {
     Exact,    // the Fresnel equations (docs/model.md section 2), total internal reflection included
     Schlick,  // Schlick's approximation, taken on the less dense side (common/fresnel.glsl)
-    Power,    // Optical Phenomena c. 2008's power term F = (1 - E.N)^q; total internal reflection kept from the exact form
+    Power,  // Optical Phenomena c. 2008's power term F = (1 - E.N)^q; total internal reflection kept from the exact form
 };
 
 // effects.water.depth_blend: Optical Phenomena c. 2008's depth colour, C_w + exp(-k d) (C - C_w), in place of the
 // medium's attenuation and in-scatter along refracted rays (d: their path in the water).
 struct DepthBlend {
     glm::dvec3 colour{0.0, 0.2, 0.1};  // C_w, as radiance (the paper's table: a display colour)
-    double k = 0.5;                     // 1/m (the paper's table)
+    double k = 0.5;                    // 1/m (the paper's table)
 };
 
 // The settings of effects.water beside its mode: the surface's shading. The defaults are the
@@ -210,14 +210,14 @@ struct EffectsSettings {
 };
 
 struct Scene {
-    std::filesystem::path source;         // the file it was loaded from, as given to the loader
-    std::string description;              // free text saying what the scene exercises
+    std::filesystem::path source;  // the file it was loaded from, as given to the loader
+    std::string description;       // free text saying what the scene exercises
     Camera camera;
     Sun sun;
     Sky sky;
     FloorPlane floor;
-    std::optional<Water> water;           // nullopt: no water in the scene
-    Medium medium = default_medium();     // the water's optical properties
+    std::optional<Water> water;        // nullopt: no water in the scene
+    Medium medium = default_medium();  // the water's optical properties
     std::vector<Receiver> receivers;
     EffectsSettings effects;
 };

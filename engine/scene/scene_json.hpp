@@ -15,17 +15,18 @@ namespace vkw {
 
 Scene scene_from_json(const nlohmann::json& root, const ErrorContext& errors, const std::filesystem::path& source);
 
-Camera read_camera(FieldReader& fields);          // camera_json.cpp
-Sun read_sun(FieldReader& fields);                // light_json.cpp
-Sky read_sky(FieldReader& fields);                // light_json.cpp
-FloorPlane read_floor(FieldReader& fields);       // floor_json.cpp
-Water read_water(FieldReader& fields);            // water_json.cpp
-WaveSettings read_waves(FieldReader& fields);     // waves_json.cpp
-Medium read_medium(FieldReader& fields);          // medium_json.cpp
-EffectsSettings read_effects(FieldReader& fields);  // effects_json.cpp
-GodraySettings read_godray_settings(FieldReader& fields);  // godrays_json.cpp: effects.godrays but its mode
+Camera read_camera(FieldReader& fields);                     // camera_json.cpp
+Sun read_sun(FieldReader& fields);                           // light_json.cpp
+Sky read_sky(FieldReader& fields);                           // light_json.cpp
+FloorPlane read_floor(FieldReader& fields);                  // floor_json.cpp
+Water read_water(FieldReader& fields);                       // water_json.cpp
+WaveSettings read_waves(FieldReader& fields);                // waves_json.cpp
+Medium read_medium(FieldReader& fields);                     // medium_json.cpp
+EffectsSettings read_effects(FieldReader& fields);           // effects_json.cpp
+GodraySettings read_godray_settings(FieldReader& fields);    // godrays_json.cpp: effects.godrays but its mode
 CausticSettings read_caustic_settings(FieldReader& fields);  // caustics_json.cpp: effects.caustics but its mode
-CausticBlurSettings read_caustic_blur_settings(FieldReader& fields);  // caustics_json.cpp: effects.caustic_blur but its mode
+CausticBlurSettings read_caustic_blur_settings(
+    FieldReader& fields);  // caustics_json.cpp: effects.caustic_blur but its mode
 // `base_dir`: the scene file's folder, against which glTF file names are resolved.
 Receiver read_receiver(FieldReader& fields, const std::filesystem::path& base_dir);  // receiver_json.cpp
 

@@ -16,7 +16,8 @@ Water read_water(FieldReader& fields) {
         fields.integer("grid_resolution", Range::closed(2.0, 4096.0, "cells per side"), defaults.grid_resolution));
     water.time = fields.number("time", Range::any("s"), defaults.time);
     water.depth = fields.optional_number("depth", Range::above(0.0, "m"));
-    const auto seed = fields.integer("seed", Range::closed(0.0, kMaxExactInteger), static_cast<int64_t>(defaults.waves.seed));
+    const auto seed =
+        fields.integer("seed", Range::closed(0.0, kMaxExactInteger), static_cast<int64_t>(defaults.waves.seed));
     water.waves = fields.object("waves", Presence::optional, read_waves);
     water.waves.seed = static_cast<uint64_t>(seed);
     return water;

@@ -22,8 +22,8 @@ constexpr std::array<Named<OceanSpectrum>, 2> kSpectra = {{
 
 // The fields of the sum and fft models, none of which a flat surface has.
 constexpr std::array<std::string_view, 10> kModelFields = {
-    "components", "allow_folding", "resolution", "patch_size", "wind_speed", "wind_direction_deg",
-    "spectrum",   "fetch",         "amplitude_scale", "choppiness"};
+    "components",         "allow_folding", "resolution", "patch_size",      "wind_speed",
+    "wind_direction_deg", "spectrum",      "fetch",      "amplitude_scale", "choppiness"};
 
 WaveComponent read_component(FieldReader& fields) {
     const WaveComponent defaults;

@@ -7,8 +7,7 @@ namespace vkw {
 std::string vk_result_name(VkResult result) {
     switch (result) {
 #define VKW_RESULT_CASE(r) \
-    case r:                \
-        return #r;
+    case r: return #r;
         VKW_RESULT_CASE(VK_SUCCESS)
         VKW_RESULT_CASE(VK_NOT_READY)
         VKW_RESULT_CASE(VK_TIMEOUT)
@@ -37,8 +36,7 @@ std::string vk_result_name(VkResult result) {
         VKW_RESULT_CASE(VK_ERROR_OUT_OF_DATE_KHR)
         VKW_RESULT_CASE(VK_ERROR_VALIDATION_FAILED_EXT)
 #undef VKW_RESULT_CASE
-        default:
-            return "VkResult(" + std::to_string(static_cast<int>(result)) + ")";
+        default: return "VkResult(" + std::to_string(static_cast<int>(result)) + ")";
     }
 }
 

@@ -19,11 +19,10 @@ bool is_accepted_warning(const char* message_id) {
 
 VKAPI_ATTR VkBool32 VKAPI_CALL on_validation_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                      VkDebugUtilsMessageTypeFlagsEXT type,
-                                                     const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                                     void* user) {
+                                                     const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
     auto* context = static_cast<Context*>(user);
-    const bool error_or_warning = severity & (VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT |
-                                              VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT);
+    const bool error_or_warning =
+        severity & (VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT);
     if (!error_or_warning) return VK_FALSE;
     std::string text = std::string("validation ") +
                        ((severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) ? "error" : "warning") + ": " +
@@ -202,8 +201,8 @@ void Context::pick_physical_device(const std::string& wanted_name) {
     }
     if (candidates.empty()) {
         if (!wanted_name.empty()) {
-            throw UserError("--device '" + wanted_name + "': no Vulkan 1.3 device matches (available: " +
-                            available + ")");
+            throw UserError("--device '" + wanted_name + "': no Vulkan 1.3 device matches (available: " + available +
+                            ")");
         }
         throw InternalError("no Vulkan 1.3 device found (available: " + available + "); " + kNoDeviceHelp);
     }
@@ -284,8 +283,8 @@ void Context::create_device(bool swapchain) {
     info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
     info.ppEnabledExtensionNames = extensions.data();
     VKW_CHECK(vkCreateDevice(physical_device_, &info, nullptr, &device_), "device '" + device_name() + "'");
-    push_descriptor_set_ = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
-        vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
+    push_descriptor_set_ =
+        reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
     vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
     set_name(device_, VK_OBJECT_TYPE_DEVICE, "vkwater device");
     set_name(queue_, VK_OBJECT_TYPE_QUEUE, "vkwater queue");

@@ -18,10 +18,10 @@ namespace vkw {
 
 struct ContextOptions {
     bool validation = false;
-    std::string device_name;                        // substring of the device name; empty: best available
-    std::vector<std::string> instance_extensions;   // e.g. what GLFW needs for a surface
-    bool swapchain = false;                         // enable VK_KHR_swapchain on the device
-    bool print_validation_messages = true;          // echo failures to stderr as they happen
+    std::string device_name;                       // substring of the device name; empty: best available
+    std::vector<std::string> instance_extensions;  // e.g. what GLFW needs for a surface
+    bool swapchain = false;                        // enable VK_KHR_swapchain on the device
+    bool print_validation_messages = true;         // echo failures to stderr as they happen
 };
 
 // Optional device features vkwater uses when present; each pass checks what it needs.

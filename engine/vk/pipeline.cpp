@@ -42,7 +42,8 @@ Pipeline::Pipeline(const Context& context, const ComputePipelineDesc& desc, cons
     info.stage.module = shader.handle();
     info.stage.pName = "main";
     info.layout = layout_;
-    VKW_CHECK(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_), "pipeline '" + name + "'");
+    VKW_CHECK(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_),
+              "pipeline '" + name + "'");
     context.set_name(pipeline_, VK_OBJECT_TYPE_PIPELINE, name);
 }
 
@@ -103,8 +104,8 @@ Pipeline::Pipeline(const Context& context, const GraphicsPipelineDesc& desc, con
 
     std::vector<VkPipelineColorBlendAttachmentState> blends(desc.color_formats.size());
     for (VkPipelineColorBlendAttachmentState& blend : blends) {
-        blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                               VK_COLOR_COMPONENT_A_BIT;
+        blend.colorWriteMask =
+            VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
         if (desc.additive_blend) {
             blend.blendEnable = VK_TRUE;
             blend.srcColorBlendFactor = blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
@@ -141,7 +142,8 @@ Pipeline::Pipeline(const Context& context, const GraphicsPipelineDesc& desc, con
     info.pDynamicState = &dynamic;
     info.layout = layout_;
     info.renderPass = desc.render_pass;
-    VKW_CHECK(vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_), "pipeline '" + name + "'");
+    VKW_CHECK(vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_),
+              "pipeline '" + name + "'");
     context.set_name(pipeline_, VK_OBJECT_TYPE_PIPELINE, name);
 }
 

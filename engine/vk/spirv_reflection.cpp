@@ -36,8 +36,9 @@ VkShaderStageFlagBits stage_of(SpvExecutionModel model, const std::string& shade
         case SpvExecutionModelGeometry: return VK_SHADER_STAGE_GEOMETRY_BIT;
         case SpvExecutionModelFragment: return VK_SHADER_STAGE_FRAGMENT_BIT;
         case SpvExecutionModelGLCompute: return VK_SHADER_STAGE_COMPUTE_BIT;
-        default: throw InternalError("shader '" + shader + "': execution model " + std::to_string(model) +
-                                     " has no Vulkan stage vkwater uses");
+        default:
+            throw InternalError("shader '" + shader + "': execution model " + std::to_string(model) +
+                                " has no Vulkan stage vkwater uses");
     }
 }
 
@@ -183,8 +184,9 @@ ReflectedStage reflect_spirv(const std::vector<uint32_t>& words, const std::stri
         fail("list its resources");
     }
     static const spvc_resource_type kDescriptorKinds[] = {
-        SPVC_RESOURCE_TYPE_UNIFORM_BUFFER,    SPVC_RESOURCE_TYPE_STORAGE_BUFFER, SPVC_RESOURCE_TYPE_SUBPASS_INPUT,
-        SPVC_RESOURCE_TYPE_STORAGE_IMAGE,     SPVC_RESOURCE_TYPE_SAMPLED_IMAGE,  SPVC_RESOURCE_TYPE_SEPARATE_IMAGE,
+        SPVC_RESOURCE_TYPE_UNIFORM_BUFFER,    SPVC_RESOURCE_TYPE_STORAGE_BUFFER,
+        SPVC_RESOURCE_TYPE_SUBPASS_INPUT,     SPVC_RESOURCE_TYPE_STORAGE_IMAGE,
+        SPVC_RESOURCE_TYPE_SAMPLED_IMAGE,     SPVC_RESOURCE_TYPE_SEPARATE_IMAGE,
         SPVC_RESOURCE_TYPE_SEPARATE_SAMPLERS, SPVC_RESOURCE_TYPE_ACCELERATION_STRUCTURE,
     };
     for (spvc_resource_type kind : kDescriptorKinds) {
@@ -203,9 +205,8 @@ ReflectedStage reflect_spirv(const std::vector<uint32_t>& words, const std::stri
             stage.bindings.push_back(binding);
         }
     }
-    std::sort(stage.bindings.begin(), stage.bindings.end(), [](const auto& a, const auto& b) {
-        return std::pair(a.set, a.binding) < std::pair(b.set, b.binding);
-    });
+    std::sort(stage.bindings.begin(), stage.bindings.end(),
+              [](const auto& a, const auto& b) { return std::pair(a.set, a.binding) < std::pair(b.set, b.binding); });
 
     // The push-constant block as declared, read or not: its size is what the C++ struct must
     // match, in a variant that compiles its reads out too.
@@ -293,12 +294,11 @@ std::vector<VkDescriptorSetLayoutBinding> check_pipeline_layout(const std::strin
     const uint32_t longest_bytes = longest == stages.end() ? 0 : longest->push_constant_bytes;
     if (longest_bytes != declared.push_constant_bytes) {
         const std::string shader = longest == stages.end() ? std::string("no shader") : longest->shader;
-        throw InternalError("pipeline '" + pass + "' (" + shader + "): the push-constant block is " +
-                            std::to_string(longest_bytes) + " bytes in the shader" +
-                            (stages.size() > 1 ? " (the longest of the pipeline's stages)" : "") + " but " +
-                            std::to_string(declared.push_constant_bytes) + " bytes in the declared layout [" +
-                            declared_text(declared) + (longest == stages.end() ? "" : "; " + reflected_text(*longest)) +
-                            "]");
+        throw InternalError(
+            "pipeline '" + pass + "' (" + shader + "): the push-constant block is " + std::to_string(longest_bytes) +
+            " bytes in the shader" + (stages.size() > 1 ? " (the longest of the pipeline's stages)" : "") + " but " +
+            std::to_string(declared.push_constant_bytes) + " bytes in the declared layout [" + declared_text(declared) +
+            (longest == stages.end() ? "" : "; " + reflected_text(*longest)) + "]");
     }
 
     LayoutCheckRecord record;

@@ -21,9 +21,7 @@ uint64_t counter_bits(uint64_t seed, int64_t i, int64_t j, uint64_t stream) {
     return splitmix64(h ^ stream);
 }
 
-double unit_interval_open_closed(uint64_t bits) {
-    return double((bits >> 11) + 1) * 0x1.0p-53;
-}
+double unit_interval_open_closed(uint64_t bits) { return double((bits >> 11) + 1) * 0x1.0p-53; }
 
 std::array<double, 2> gaussian_pair(uint64_t seed, int64_t i, int64_t j) {
     const double u1 = unit_interval_open_closed(counter_bits(seed, i, j, 0));

@@ -23,8 +23,7 @@ std::vector<std::complex<double>> twiddles(uint32_t n) {
 }
 
 // In-place inverse DFT of the contiguous sequence line[0..n).
-void fft_inverse_1d(std::complex<double>* line, uint32_t n,
-                    const std::vector<std::complex<double>>& table) {
+void fft_inverse_1d(std::complex<double>* line, uint32_t n, const std::vector<std::complex<double>>& table) {
     for (uint32_t i = 1, j = 0; i < n; ++i) {
         uint32_t bit = n >> 1;
         for (; j & bit; bit >>= 1) {
@@ -54,8 +53,8 @@ void fft_inverse_1d(std::complex<double>* line, uint32_t n,
 void fft_inverse_2d(std::vector<std::complex<double>>& data, uint32_t n) {
     if (n == 0 || (n & (n - 1)) != 0 || data.size() != std::size_t(n) * n) {
         throw InternalError("fft_inverse_2d: n = " + std::to_string(n) +
-                            " must be a power of two with data.size() = n * n (got " +
-                            std::to_string(data.size()) + ")");
+                            " must be a power of two with data.size() = n * n (got " + std::to_string(data.size()) +
+                            ")");
     }
     const std::vector<std::complex<double>> table = twiddles(n);
     for (uint32_t row = 0; row < n; ++row) {

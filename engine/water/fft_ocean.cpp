@@ -50,16 +50,13 @@ FftOceanSpectrum make_ocean_spectrum(const FftOceanSettings& ocean, uint64_t see
             const int fz = FftOceanSpectrum::frequency(b, n);
             const std::array<double, 2> xi = gaussian_pair(seed, fx, fz);
             const double psi = ocean_spectrum(spectrum.wave_vector(a, b), ocean);
-            spectrum.h0[std::size_t(b) * n + a] =
-                std::complex<double>(xi[0], xi[1]) * (std::sqrt(psi) * dk * 0.5);
+            spectrum.h0[std::size_t(b) * n + a] = std::complex<double>(xi[0], xi[1]) * (std::sqrt(psi) * dk * 0.5);
         }
     }
     return spectrum;
 }
 
-double ocean_angular_frequency(const glm::dvec2& k) {
-    return std::sqrt(kGravity * glm::length(k));
-}
+double ocean_angular_frequency(const glm::dvec2& k) { return std::sqrt(kGravity * glm::length(k)); }
 
 std::vector<std::complex<double>> ocean_modes_at(const FftOceanSpectrum& spectrum, double time) {
     const uint32_t n = spectrum.n;
@@ -69,8 +66,7 @@ std::vector<std::complex<double>> ocean_modes_at(const FftOceanSpectrum& spectru
             const std::size_t i = std::size_t(b) * n + a;
             const std::complex<double> rotation =
                 std::polar(1.0, ocean_angular_frequency(spectrum.wave_vector(a, b)) * time);
-            modes[i] = spectrum.h0[i] * rotation +
-                       std::conj(spectrum.h0[spectrum.opposite(i)]) * std::conj(rotation);
+            modes[i] = spectrum.h0[i] * rotation + std::conj(spectrum.h0[spectrum.opposite(i)]) * std::conj(rotation);
         }
     }
     return modes;

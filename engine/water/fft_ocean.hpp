@@ -38,8 +38,8 @@ namespace vkw {
 // The initial spectrum h0, computed once per (settings, seed) on the CPU in double precision
 // and handed as is to the GPU, so both evaluate the same ocean.
 struct FftOceanSpectrum {
-    uint32_t n = 0;            // modes per axis (the grid resolution)
-    double patch_size = 0.0;   // m, the period of the surface in x and z
+    uint32_t n = 0;           // modes per axis (the grid resolution)
+    double patch_size = 0.0;  // m, the period of the surface in x and z
     // h0 in FFT order, row-major: h0[b * n + a] is the mode with fx = frequency(a, n),
     // fz = frequency(b, n). m.
     std::vector<std::complex<double>> h0;
@@ -63,14 +63,14 @@ std::vector<std::complex<double>> ocean_modes_at(const FftOceanSpectrum& spectru
 
 // The real fields the surface needs, each a Fourier series sum Re(m_f(k) h~(k) e^{ik.x}).
 enum OceanField : uint32_t {
-    kOceanHeight,    // h                  m_f = 1
-    kOceanDispX,     // Dx                 i c kx / |k|
-    kOceanDispZ,     // Dz                 i c kz / |k|
-    kOceanSlopeX,    // dh/dx0             i kx
-    kOceanSlopeZ,    // dh/dz0             i kz
-    kOceanDispXdX,   // dDx/dx0            -c kx^2 / |k|
-    kOceanDispXdZ,   // dDx/dz0 = dDz/dx0  -c kx kz / |k|
-    kOceanDispZdZ,   // dDz/dz0            -c kz^2 / |k|
+    kOceanHeight,   // h                  m_f = 1
+    kOceanDispX,    // Dx                 i c kx / |k|
+    kOceanDispZ,    // Dz                 i c kz / |k|
+    kOceanSlopeX,   // dh/dx0             i kx
+    kOceanSlopeZ,   // dh/dz0             i kz
+    kOceanDispXdX,  // dDx/dx0            -c kx^2 / |k|
+    kOceanDispXdZ,  // dDx/dz0 = dDz/dx0  -c kx kz / |k|
+    kOceanDispZdZ,  // dDz/dz0            -c kz^2 / |k|
     kOceanFieldCount
 };
 using OceanFieldValues = std::array<double, kOceanFieldCount>;

@@ -24,8 +24,8 @@ std::vector<std::complex<double>> phase_factors(double x, double period, uint32_
 
 }  // namespace
 
-FftOceanSurface::FftOceanSurface(std::shared_ptr<const FftOceanSpectrum> spectrum,
-                                 double choppiness, double level, double time)
+FftOceanSurface::FftOceanSurface(std::shared_ptr<const FftOceanSpectrum> spectrum, double choppiness, double level,
+                                 double time)
     : spectrum_(std::move(spectrum)),
       choppiness_(choppiness),
       level_(level),
@@ -48,8 +48,7 @@ OceanFieldValues FftOceanSurface::fields_at(double x0, double z0) const {
                 continue;  // the Nyquist row and column, k = 0, and empty spectra
             }
             const std::complex<double> term = mode * ex[a] * ez[b];
-            const OceanFieldMultipliers m =
-                ocean_field_multipliers(spectrum_->wave_vector(a, b), choppiness_);
+            const OceanFieldMultipliers m = ocean_field_multipliers(spectrum_->wave_vector(a, b), choppiness_);
             for (uint32_t f = 0; f < kOceanFieldCount; ++f) {
                 sum[f] += (m[f] * term).real();
             }
@@ -62,8 +61,6 @@ SurfacePoint FftOceanSurface::at_parameter(double x0, double z0) const {
     return ocean_surface_point(fields_at(x0, z0), x0, z0, level_);
 }
 
-FftOceanGrid FftOceanSurface::grid() const {
-    return evaluate_ocean_grid(*spectrum_, choppiness_, time_);
-}
+FftOceanGrid FftOceanSurface::grid() const { return evaluate_ocean_grid(*spectrum_, choppiness_, time_); }
 
 }  // namespace vkw

@@ -17,8 +17,7 @@ namespace vkw {
 class FftOceanSurface final : public WaterSurface {
 public:
     // `spectrum` is shared so that the frames of an animation reuse one h0.
-    FftOceanSurface(std::shared_ptr<const FftOceanSpectrum> spectrum, double choppiness,
-                    double level, double time);
+    FftOceanSurface(std::shared_ptr<const FftOceanSpectrum> spectrum, double choppiness, double level, double time);
 
     SurfacePoint at_parameter(double x0, double z0) const override;
     bool is_heightfield() const override { return choppiness_ == 0.0; }

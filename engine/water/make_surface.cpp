@@ -11,22 +11,18 @@
 
 namespace vkw {
 
-std::unique_ptr<WaterSurface> make_surface(const WaveSettings& settings, double level,
-                                           double time) {
+std::unique_ptr<WaterSurface> make_surface(const WaveSettings& settings, double level, double time) {
     if (!std::isfinite(level) || !std::isfinite(time)) {
         throw InternalError("make_surface: the water level and the time must be finite");
     }
     validate_waves(settings);
     switch (settings.model) {
-        case WaveModel::Flat:
-            return std::make_unique<FlatSurface>(level);
-        case WaveModel::Sum:
-            return std::make_unique<WaveSumSurface>(settings, level, time);
+        case WaveModel::Flat: return std::make_unique<FlatSurface>(level);
+        case WaveModel::Sum: return std::make_unique<WaveSumSurface>(settings, level, time);
         case WaveModel::FftOcean: {
-            auto spectrum = std::make_shared<const FftOceanSpectrum>(
-                make_ocean_spectrum(settings.ocean, settings.seed));
-            return std::make_unique<FftOceanSurface>(std::move(spectrum),
-                                                     settings.ocean.choppiness, level, time);
+            auto spectrum =
+                std::make_shared<const FftOceanSpectrum>(make_ocean_spectrum(settings.ocean, settings.seed));
+            return std::make_unique<FftOceanSurface>(std::move(spectrum), settings.ocean.choppiness, level, time);
         }
     }
     throw InternalError("make_surface: unknown wave model");

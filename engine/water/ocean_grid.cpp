@@ -42,8 +42,7 @@ FftOceanGrid evaluate_ocean_grid(const FftOceanSpectrum& spectrum, double choppi
     std::vector<OceanFieldMultipliers> multipliers(modes.size());
     for (uint32_t b = 0; b < n; ++b) {
         for (uint32_t a = 0; a < n; ++a) {
-            multipliers[std::size_t(b) * n + a] =
-                ocean_field_multipliers(spectrum.wave_vector(a, b), choppiness);
+            multipliers[std::size_t(b) * n + a] = ocean_field_multipliers(spectrum.wave_vector(a, b), choppiness);
         }
     }
     std::vector<std::complex<double>> work(modes.size());

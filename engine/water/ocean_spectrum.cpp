@@ -11,9 +11,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 // L = V^2 / g: the largest wave a wind of speed V raises.
-double largest_wave(const FftOceanSettings& ocean) {
-    return ocean.wind_speed * ocean.wind_speed / kGravity;
-}
+double largest_wave(const FftOceanSettings& ocean) { return ocean.wind_speed * ocean.wind_speed / kGravity; }
 
 }  // namespace
 
@@ -34,10 +32,8 @@ double phillips_spectrum(const glm::dvec2& k, const FftOceanSettings& ocean) {
     }
     const double large = largest_wave(ocean);
     const double small = large / 1000.0;
-    const double omnidirectional_over_k =
-        0.5 * kPhillipsAlpha * std::exp(-1.0 / (kk * large * large)) / (kk * kk);
-    return omnidirectional_over_k * directional_spreading(k, ocean.wind_direction_deg) *
-           std::exp(-kk * small * small);
+    const double omnidirectional_over_k = 0.5 * kPhillipsAlpha * std::exp(-1.0 / (kk * large * large)) / (kk * kk);
+    return omnidirectional_over_k * directional_spreading(k, ocean.wind_direction_deg) * std::exp(-kk * small * small);
 }
 
 JonswapParameters jonswap_parameters(const FftOceanSettings& ocean) {
@@ -54,8 +50,8 @@ double jonswap_frequency_spectrum(double omega, const FftOceanSettings& ocean) {
     const double sigma = omega <= p.omega_peak ? kJonswapSigmaBelowPeak : kJonswapSigmaAbovePeak;
     const double offset = (omega - p.omega_peak) / (sigma * p.omega_peak);
     const double r = std::exp(-0.5 * offset * offset);
-    return p.alpha * kGravity * kGravity / std::pow(omega, 5) *
-           std::exp(-1.25 * std::pow(p.omega_peak / omega, 4)) * std::pow(kJonswapGamma, r);
+    return p.alpha * kGravity * kGravity / std::pow(omega, 5) * std::exp(-1.25 * std::pow(p.omega_peak / omega, 4)) *
+           std::pow(kJonswapGamma, r);
 }
 
 double jonswap_spectrum(const glm::dvec2& k, const FftOceanSettings& ocean) {
@@ -65,17 +61,15 @@ double jonswap_spectrum(const glm::dvec2& k, const FftOceanSettings& ocean) {
     }
     const double omega = std::sqrt(kGravity * length);
     const double domega_dk = kGravity / (2.0 * omega);
-    return jonswap_frequency_spectrum(omega, ocean) * domega_dk *
-           directional_spreading(k, ocean.wind_direction_deg) / length;
+    return jonswap_frequency_spectrum(omega, ocean) * domega_dk * directional_spreading(k, ocean.wind_direction_deg) /
+           length;
 }
 
 double ocean_spectrum(const glm::dvec2& k, const FftOceanSettings& ocean) {
     const double scale2 = ocean.amplitude_scale * ocean.amplitude_scale;
     switch (ocean.spectrum) {
-        case OceanSpectrum::Phillips:
-            return scale2 * phillips_spectrum(k, ocean);
-        case OceanSpectrum::Jonswap:
-            return scale2 * jonswap_spectrum(k, ocean);
+        case OceanSpectrum::Phillips: return scale2 * phillips_spectrum(k, ocean);
+        case OceanSpectrum::Jonswap: return scale2 * jonswap_spectrum(k, ocean);
     }
     return 0.0;
 }

@@ -41,8 +41,8 @@ HermiteBasis hermite_basis(double t) {
 
 }  // namespace
 
-SampledOceanSurface::SampledOceanSurface(const FftOceanSpectrum& spectrum, double choppiness, double level,
-                                         double time, uint32_t padding)
+SampledOceanSurface::SampledOceanSurface(const FftOceanSpectrum& spectrum, double choppiness, double level, double time,
+                                         uint32_t padding)
     : level_(level), heightfield_(choppiness == 0.0) {
     const uint32_t n = spectrum.n;
     if (padding == 0 || (padding & (padding - 1)) != 0) {
@@ -73,13 +73,14 @@ SampledOceanSurface::SampledOceanSurface(const FftOceanSpectrum& spectrum, doubl
             }
         }
     }
-    shortest_wavelength_ = largest_k > 0.0 ? 2.0 * std::numbers::pi / largest_k : std::numeric_limits<double>::infinity();
+    shortest_wavelength_ =
+        largest_k > 0.0 ? 2.0 * std::numbers::pi / largest_k : std::numeric_limits<double>::infinity();
     // Rounding of the padded FFT: log2(N) butterfly stages, each adding a few ulps of the
     // magnitudes it combines, which are at most sum |m_f h~|: 8 log2(N) eps sum |m_f h~|.
     const double fft_rounding = 8.0 * std::log2(double(samples_)) * std::numeric_limits<double>::epsilon();
     for (uint32_t f = 0; f < kOceanFieldCount; ++f) {
-        error_bound_[f] = std::pow(h, 4) / 384.0 * (fourth_x[f] + fourth_z[f] + 0.25 * h * mixed[f]) +
-                          fft_rounding * sum_abs[f];
+        error_bound_[f] =
+            std::pow(h, 4) / 384.0 * (fourth_x[f] + fourth_z[f] + 0.25 * h * mixed[f]) + fft_rounding * sum_abs[f];
     }
 
     // One zero-padded inverse FFT per (field, Hermite datum); the fields run on their own threads.

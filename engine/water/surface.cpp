@@ -18,16 +18,14 @@ constexpr int kMaxStepHalvings = 40;
 constexpr double kDegenerateAreaRatio = 1e-12;
 
 // Horizontal miss of the displaced point of `parameter` from the target (x, z).
-glm::dvec2 horizontal_miss(const WaterSurface& surface, const glm::dvec2& parameter,
-                           const glm::dvec2& target) {
+glm::dvec2 horizontal_miss(const WaterSurface& surface, const glm::dvec2& parameter, const glm::dvec2& target) {
     const SurfacePoint p = surface.at_parameter(parameter.x, parameter.y);
     return glm::dvec2(p.position.x, p.position.z) - target;
 }
 
 }  // namespace
 
-SurfacePoint make_surface_point(const glm::dvec3& position, const glm::dvec3& dP_du,
-                                const glm::dvec3& dP_dv) {
+SurfacePoint make_surface_point(const glm::dvec3& position, const glm::dvec3& dP_du, const glm::dvec3& dP_dv) {
     SurfacePoint point;
     point.position = position;
     point.dP_du = dP_du;

@@ -31,8 +31,7 @@ struct SurfacePoint {
 // 1e-12 (the cusp of a Gerstner wave at steepness 1), the normal is undefined (the two sides
 // of a cusp have opposite horizontal normals); the symmetric choice (0, 1, 0) is returned
 // there instead of NaN or rounding noise (docs/model.md section 8).
-SurfacePoint make_surface_point(const glm::dvec3& position, const glm::dvec3& dP_du,
-                                const glm::dvec3& dP_dv);
+SurfacePoint make_surface_point(const glm::dvec3& position, const glm::dvec3& dP_du, const glm::dvec3& dP_dv);
 
 class WaterSurface {
 public:
@@ -65,7 +64,6 @@ public:
 
 // The surface described by `settings` at `level` (the mean water level, m) and `time` (s).
 // Throws vkw::UserError (validate_waves) for settings a scene must not contain.
-std::unique_ptr<WaterSurface> make_surface(const WaveSettings& settings, double level,
-                                           double time);
+std::unique_ptr<WaterSurface> make_surface(const WaveSettings& settings, double level, double time);
 
 }  // namespace vkw

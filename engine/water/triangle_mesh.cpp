@@ -38,8 +38,8 @@ bool is_watertight(const TriangleMesh& mesh, std::string* why) {
         const uint32_t v[3] = {idx[t], idx[t + 1], idx[t + 2]};
         for (int c = 0; c < 3; ++c) {
             if (v[c] >= mesh.positions.size()) {
-                say(why, "triangle " + std::to_string(t / 3) + " uses vertex " +
-                             std::to_string(v[c]) + " of " + std::to_string(mesh.positions.size()));
+                say(why, "triangle " + std::to_string(t / 3) + " uses vertex " + std::to_string(v[c]) + " of " +
+                             std::to_string(mesh.positions.size()));
                 return false;
             }
         }
@@ -60,15 +60,15 @@ bool is_watertight(const TriangleMesh& mesh, std::string* why) {
             continue;
         }
         if (bad++ == 0) {
-            first = "edge (" + std::to_string(key >> 32) + ", " +
-                    std::to_string(key & 0xffffffffu) + ") is used " +
-                    std::to_string(use.forward) + " time(s) low->high and " +
-                    std::to_string(use.backward) + " time(s) high->low";
+            first = "edge (" + std::to_string(key >> 32) + ", " + std::to_string(key & 0xffffffffu) + ") is used " +
+                    std::to_string(use.forward) + " time(s) low->high and " + std::to_string(use.backward) +
+                    " time(s) high->low";
         }
     }
     if (bad > 0) {
-        say(why, first + " (" + std::to_string(bad) + " bad edge(s) in all; each must be used "
-                 "once in each direction)");
+        say(why, first + " (" + std::to_string(bad) +
+                     " bad edge(s) in all; each must be used "
+                     "once in each direction)");
         return false;
     }
     return true;

@@ -47,14 +47,13 @@ void validate_components(const WaveSettings& settings) {
         require_finite(wave_field(i, "direction_deg"), w.direction_deg, "any finite value (degrees)");
         require_finite(wave_field(i, "phase_deg"), w.phase_deg, "any finite value (degrees)");
         require_finite(wave_field(i, "speed"), w.speed,
-                "any finite value (m/s; < 0: deep-water dispersion sqrt(g / k))");
-        require(w.steepness >= 0.0, wave_field(i, "steepness"), w.steepness,
-                "value >= 0 (0: sine; > 0: Gerstner)");
+                       "any finite value (m/s; < 0: deep-water dispersion sqrt(g / k))");
+        require(w.steepness >= 0.0, wave_field(i, "steepness"), w.steepness, "value >= 0 (0: sine; > 0: Gerstner)");
         steepness_sum += w.steepness;
         if (!settings.allow_folding && steepness_folds(steepness_sum)) {
             throw UserError(wave_field(i, "steepness") + " = " + number(w.steepness) +
-                            ": the steepness of water.waves.components[0.." + std::to_string(i) +
-                            "] sums to " + number(steepness_sum) +
+                            ": the steepness of water.waves.components[0.." + std::to_string(i) + "] sums to " +
+                            number(steepness_sum) +
                             "; accepted 0 <= steepness with a sum over all waves <= 1 "
                             "(above 1 the waves fold; set water.waves.allow_folding to allow it)");
         }
@@ -72,24 +71,17 @@ void validate_ocean(const FftOceanSettings& ocean) {
     }
     require(ocean.patch_size > 0.0, "water.waves.patch_size", ocean.patch_size, "value > 0 m");
     require(ocean.wind_speed > 0.0, "water.waves.wind_speed", ocean.wind_speed, "value > 0 m/s");
-    require_finite("water.waves.wind_direction_deg", ocean.wind_direction_deg,
-            "any finite value (degrees)");
+    require_finite("water.waves.wind_direction_deg", ocean.wind_direction_deg, "any finite value (degrees)");
     require(ocean.fetch > 0.0, "water.waves.fetch", ocean.fetch, "value > 0 m");
-    require(ocean.amplitude_scale >= 0.0, "water.waves.amplitude_scale", ocean.amplitude_scale,
-            "value >= 0");
+    require(ocean.amplitude_scale >= 0.0, "water.waves.amplitude_scale", ocean.amplitude_scale, "value >= 0");
     require(ocean.choppiness >= 0.0, "water.waves.choppiness", ocean.choppiness, "value >= 0");
 }
 
 void validate_waves(const WaveSettings& settings) {
     switch (settings.model) {
-        case WaveModel::Flat:
-            return;
-        case WaveModel::Sum:
-            validate_components(settings);
-            return;
-        case WaveModel::FftOcean:
-            validate_ocean(settings.ocean);
-            return;
+        case WaveModel::Flat: return;
+        case WaveModel::Sum: validate_components(settings); return;
+        case WaveModel::FftOcean: validate_ocean(settings.ocean); return;
     }
 }
 

@@ -31,22 +31,21 @@ std::vector<uint32_t> rim_loop(uint32_t r) {
     const uint32_t row = r + 1;
     std::vector<uint32_t> loop;
     loop.reserve(4 * r);
-    for (uint32_t i = r; i > 0; --i) loop.push_back(0 * row + i);          // j = 0
-    for (uint32_t j = 0; j < r; ++j) loop.push_back(j * row + 0);          // i = 0
-    for (uint32_t i = 0; i < r; ++i) loop.push_back(r * row + i);          // j = R
-    for (uint32_t j = r; j > 0; --j) loop.push_back(j * row + r);          // i = R
+    for (uint32_t i = r; i > 0; --i) loop.push_back(0 * row + i);  // j = 0
+    for (uint32_t j = 0; j < r; ++j) loop.push_back(j * row + 0);  // i = 0
+    for (uint32_t i = 0; i < r; ++i) loop.push_back(r * row + i);  // j = R
+    for (uint32_t j = r; j > 0; --j) loop.push_back(j * row + r);  // i = R
     return loop;
 }
 
 }  // namespace
 
-TriangleMesh build_water_volume(const WaterSurface& surface, double half_extent,
-                                uint32_t grid_resolution, double bottom_y) {
-    if (!(half_extent > 0.0) || !std::isfinite(half_extent) || !std::isfinite(bottom_y) ||
-        grid_resolution == 0 || grid_resolution > kMaxResolution) {
-        throw InternalError("build_water_volume: half_extent = " + number(half_extent) +
-                            ", grid_resolution = " + std::to_string(grid_resolution) +
-                            ", bottom_y = " + number(bottom_y) +
+TriangleMesh build_water_volume(const WaterSurface& surface, double half_extent, uint32_t grid_resolution,
+                                double bottom_y) {
+    if (!(half_extent > 0.0) || !std::isfinite(half_extent) || !std::isfinite(bottom_y) || grid_resolution == 0 ||
+        grid_resolution > kMaxResolution) {
+        throw InternalError("build_water_volume: half_extent = " + number(half_extent) + ", grid_resolution = " +
+                            std::to_string(grid_resolution) + ", bottom_y = " + number(bottom_y) +
                             ": accepted half_extent > 0, 1 <= grid_resolution <= 16384, finite");
     }
     const uint32_t r = grid_resolution;
@@ -62,9 +61,8 @@ TriangleMesh build_water_volume(const WaterSurface& surface, double half_extent,
             const glm::dvec3 p = surface.at_parameter(x0, z0).position;
             if (!(p.y > bottom_y)) {
                 throw UserError("water volume: the bottom y = " + number(bottom_y) +
-                                " m is not below the water surface at x = " + number(p.x) +
-                                ", z = " + number(p.z) + " (y = " + number(p.y) +
-                                " m); accepted: a floor below the lowest wave trough");
+                                " m is not below the water surface at x = " + number(p.x) + ", z = " + number(p.z) +
+                                " (y = " + number(p.y) + " m); accepted: a floor below the lowest wave trough");
             }
             mesh.positions[j * row + i] = p;
             mesh.positions[count + j * row + i] = glm::dvec3(p.x, bottom_y, p.z);

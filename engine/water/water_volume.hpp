@@ -25,7 +25,7 @@ namespace vkw {
 // Throws vkw::UserError when bottom_y is not below every top vertex (the floor cuts the
 // waves: the mesh would turn itself inside out), and vkw::InternalError for half_extent <= 0,
 // grid_resolution 0 or above 16384, or non-finite arguments.
-TriangleMesh build_water_volume(const WaterSurface& surface, double half_extent,
-                                uint32_t grid_resolution, double bottom_y);
+TriangleMesh build_water_volume(const WaterSurface& surface, double half_extent, uint32_t grid_resolution,
+                                double bottom_y);
 
 }  // namespace vkw

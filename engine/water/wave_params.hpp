@@ -27,25 +27,25 @@ enum class WaveModel : uint8_t {
 // I - sum(steepness_i sin(theta_i) d_i d_i^T), so a steepness sum <= 1 guarantees no
 // folding and a sum above 1 folds somewhere (engine/water/validate_waves.hpp).
 struct WaveComponent {
-    double amplitude = 0.0;       // m, >= 0
-    double wavelength = 1.0;      // m, > 0
-    double direction_deg = 0.0;   // direction of travel in the xz-plane, 0 = +x, 90 = +z
-    double phase_deg = 0.0;       // phase offset
-    double steepness = 0.0;       // 0: sine; (0, 1]: Gerstner (the total over all components <= 1 unless folding is allowed)
-    double speed = -1.0;          // phase speed m/s; < 0: deep-water dispersion sqrt(g / k)
+    double amplitude = 0.0;      // m, >= 0
+    double wavelength = 1.0;     // m, > 0
+    double direction_deg = 0.0;  // direction of travel in the xz-plane, 0 = +x, 90 = +z
+    double phase_deg = 0.0;      // phase offset
+    double steepness = 0.0;  // 0: sine; (0, 1]: Gerstner (the total over all components <= 1 unless folding is allowed)
+    double speed = -1.0;     // phase speed m/s; < 0: deep-water dispersion sqrt(g / k)
 };
 
 enum class OceanSpectrum : uint8_t { Phillips, Jonswap };
 
 struct FftOceanSettings {
-    uint32_t resolution = 128;      // N x N grid, a power of two in [16, 1024]
-    double patch_size = 64.0;       // m, the side of the periodic patch
-    double wind_speed = 8.0;        // m/s at 10 m
+    uint32_t resolution = 128;  // N x N grid, a power of two in [16, 1024]
+    double patch_size = 64.0;   // m, the side of the periodic patch
+    double wind_speed = 8.0;    // m/s at 10 m
     double wind_direction_deg = 0.0;
     OceanSpectrum spectrum = OceanSpectrum::Phillips;
-    double fetch = 100000.0;        // m (JONSWAP only)
-    double amplitude_scale = 1.0;   // multiplies the spectrum's amplitude
-    double choppiness = 0.0;        // horizontal displacement scale (0: heightfield)
+    double fetch = 100000.0;       // m (JONSWAP only)
+    double amplitude_scale = 1.0;  // multiplies the spectrum's amplitude
+    double choppiness = 0.0;       // horizontal displacement scale (0: heightfield)
 };
 
 struct WaveSettings {

@@ -7,8 +7,7 @@
 
 namespace vkw {
 
-WaveSumSurface::WaveSumSurface(const WaveSettings& settings, double level, double time)
-    : level_(level) {
+WaveSumSurface::WaveSumSurface(const WaveSettings& settings, double level, double time) : level_(level) {
     WaveSettings as_sum = settings;
     as_sum.model = WaveModel::Sum;
     validate_waves(as_sum);

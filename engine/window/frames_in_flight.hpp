@@ -30,7 +30,7 @@ public:
     struct Slot {
         VkCommandPool pool = VK_NULL_HANDLE;
         VkCommandBuffer cmd = VK_NULL_HANDLE;
-        VkFence done = VK_NULL_HANDLE;        // signalled: the slot's last frame has finished
+        VkFence done = VK_NULL_HANDLE;          // signalled: the slot's last frame has finished
         VkSemaphore acquired = VK_NULL_HANDLE;  // the swapchain image may be written
         VkSemaphore chain = VK_NULL_HANDLE;     // this slot's frame has finished (for the next frame)
     };

@@ -17,7 +17,8 @@ namespace {
 std::string g_last_glfw_error;
 
 void remember_glfw_error(int code, const char* description) {
-    g_last_glfw_error = std::string(description ? description : "unknown") + " (GLFW error " + std::to_string(code) + ")";
+    g_last_glfw_error =
+        std::string(description ? description : "unknown") + " (GLFW error " + std::to_string(code) + ")";
 }
 
 constexpr const char* kDisplayHelp =
@@ -31,8 +32,9 @@ GlfwWindow::GlfwWindow(uint32_t width, uint32_t height, const std::string& title
     if (!glfwInit()) throw InternalError("no display: " + g_last_glfw_error + "; " + kDisplayHelp);
     if (!glfwVulkanSupported()) {
         glfwTerminate();
-        throw InternalError("the Vulkan loader cannot present to this display (GLFW finds no surface extension); "
-                            "install a Vulkan driver (Debian: mesa-vulkan-drivers)");
+        throw InternalError(
+            "the Vulkan loader cannot present to this display (GLFW finds no surface extension); "
+            "install a Vulkan driver (Debian: mesa-vulkan-drivers)");
     }
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);  // Vulkan draws, not OpenGL
     glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);

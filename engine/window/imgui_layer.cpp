@@ -4,9 +4,9 @@
 #include "engine/vk/check.hpp"
 #include "engine/vk/context.hpp"
 
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
+#include <imgui.h>
 
 namespace vkw::window {
 namespace {

@@ -25,8 +25,8 @@ VkSurfaceFormatKHR pick_format(VkPhysicalDevice device, VkSurfaceKHR surface) {
     std::vector<VkSurfaceFormatKHR> formats(count);
     VKW_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(device, surface, &count, formats.data()), "surface formats");
     if (formats.empty()) throw InternalError("the window surface offers no format");
-    for (VkFormat wanted : {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_B8G8R8A8_SRGB,
-                            VK_FORMAT_R8G8B8A8_SRGB}) {
+    for (VkFormat wanted :
+         {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB}) {
         for (const VkSurfaceFormatKHR& format : formats) {
             if (format.format == wanted && format.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) return format;
         }
@@ -64,7 +64,8 @@ Swapchain::Swapchain(Context& context, VkSurfaceKHR surface, PresentMode wanted)
                                                        &supported),
                   "surface support");
         if (!supported) {
-            throw InternalError("device '" + context_.device_name() + "' cannot present to the window (its queue family " +
+            throw InternalError("device '" + context_.device_name() +
+                                "' cannot present to the window (its queue family " +
                                 std::to_string(context_.queue_family()) + " has no present support)");
         }
         format_ = pick_format(context_.physical_device(), surface_);

@@ -20,8 +20,8 @@ inline constexpr VkDeviceSize kCausticTexelBytes = 3 * sizeof(uint64_t);
 VkDeviceSize caustic_flux_bytes(uint32_t width, uint32_t height);
 
 struct RowBand {
-    uint32_t first = 0, rows = 0;          // the band's rows
-    VkDeviceSize offset = 0, bytes = 0;    // its binding: the rows plus `extra_rows` after them
+    uint32_t first = 0, rows = 0;        // the band's rows
+    VkDeviceSize offset = 0, bytes = 0;  // its binding: the rows plus `extra_rows` after them
 };
 
 // Splits `total` rows of `row_bytes` each, stored from byte `base` on, into bands of at most

@@ -33,15 +33,14 @@ fg::ImageHandle add_caustic_receivers_pass(fg::FrameGraph& graph, const Receiver
                 d.vertices = builder.vertex_buffer(meshes->import_vertices(graph));
                 d.indices = builder.index_buffer(meshes->import_indices(graph));
             }
-            d.constants = builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants),
-                                                 VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
-                                                     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            d.constants =
+                builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants),
+                                       VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
             const fg::ImageInfo target{VK_FORMAT_R32G32B32A32_SFLOAT, fg::SizeClass::Absolute, 1.0f, extent.width,
                                        extent.height};
-            d.target = builder.color_attachment(builder.create_image("caustic receivers view", target),
-                                                fg::LoadOp::Clear);
-            const fg::ImageInfo depth{VK_FORMAT_D32_SFLOAT, fg::SizeClass::Absolute, 1.0f, extent.width,
-                                      extent.height};
+            d.target =
+                builder.color_attachment(builder.create_image("caustic receivers view", target), fg::LoadOp::Clear);
+            const fg::ImageInfo depth{VK_FORMAT_D32_SFLOAT, fg::SizeClass::Absolute, 1.0f, extent.width, extent.height};
             d.depth = builder.depth_stencil_attachment(builder.create_image("caustic receivers depth", depth),
                                                        fg::LoadOp::Clear, {.depth = 0.0f});
         },

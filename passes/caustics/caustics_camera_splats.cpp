@@ -2,9 +2,9 @@
 #include "passes/caustics/caustics_camera_splats.hpp"
 
 #include "engine/framegraph/pass_context.hpp"
-#include "passes/common/frame_keys.hpp"
 #include "passes/caustics/caustics_bands.hpp"
 #include "passes/caustics/caustics_photons.hpp"
+#include "passes/common/frame_keys.hpp"
 #include "passes/common/zeroed_buffer.hpp"
 
 #include <optional>
@@ -60,8 +60,8 @@ CameraCaustics add_caustic_camera_splat_passes(fg::FrameGraph& graph, const Caus
     resolve.width = extent.width;
     resolve.height = extent.height;
 
-    const fg::BufferHandle cleared =
-        add_zeroed_buffer_pass(graph, "camera caustic flux clear", kCameraCausticFluxName, camera_caustic_flux_bytes(extent));
+    const fg::BufferHandle cleared = add_zeroed_buffer_pass(graph, "camera caustic flux clear", kCameraCausticFluxName,
+                                                            camera_caustic_flux_bytes(extent));
 
     struct SplatData {
         fg::BufferHandle constants, surface, flux;
@@ -95,7 +95,8 @@ CameraCaustics add_caustic_camera_splat_passes(fg::FrameGraph& graph, const Caus
             lost.buffer.range = kCausticFluxHeaderBytes;
             fg::DescriptorBinding flux = context.storage_buffer(2, d.flux);
             flux.buffer.offset = kCausticFluxHeaderBytes;
-            flux.buffer.range = VkDeviceSize{camera_caustic_level_pixels({push.width, push.height})} * kCausticTexelBytes;
+            flux.buffer.range =
+                VkDeviceSize{camera_caustic_level_pixels({push.width, push.height})} * kCausticTexelBytes;
             for (const RowBand& chunk : caustic_photon_chunks(context, push.resolution, push.sub)) {
                 fg::DescriptorBinding surface = context.storage_buffer(1, d.surface);
                 surface.buffer.offset = chunk.offset;
@@ -139,9 +140,10 @@ CameraCaustics add_caustic_camera_splat_passes(fg::FrameGraph& graph, const Caus
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
             fg::DescriptorBinding flux = context.storage_buffer(1, d.flux);
             flux.buffer.offset = kCausticFluxHeaderBytes;
-            flux.buffer.range = VkDeviceSize{camera_caustic_level_pixels({resolve.width, resolve.height})} * kCausticTexelBytes;
-            context.bind(pipeline, {context.uniform_buffer(0, d.constants), flux, context.sampled_nearest(2, d.receivers),
-                                    context.storage_image(3, d.irradiance)});
+            flux.buffer.range =
+                VkDeviceSize{camera_caustic_level_pixels({resolve.width, resolve.height})} * kCausticTexelBytes;
+            context.bind(pipeline, {context.uniform_buffer(0, d.constants), flux,
+                                    context.sampled_nearest(2, d.receivers), context.storage_image(3, d.irradiance)});
             context.push_constants(pipeline, resolve);
             vkCmdDispatch(context.cmd(), (resolve.width + kGroupSide - 1) / kGroupSide,
                           (resolve.height + kGroupSide - 1) / kGroupSide, 1);

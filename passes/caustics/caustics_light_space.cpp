@@ -39,9 +39,10 @@ void check(const CausticInputs& in) {
         throw InternalError("caustics: inputs out of range (accepted: 1 <= R, S and R S <= " +
                             std::to_string(kMaxPhotonsPerSide) + "; 3 <= W, H <= " + std::to_string(kMaxMapSide) +
                             "; a unit sun direction; 1 <= n <= 2; E > 0; finite heights; amplitude, margin, E_s, "
-                            "sigma_t >= 0); got R = " + std::to_string(in.grid_resolution) + ", S = " +
-                            std::to_string(in.sub_photons) + ", W x H = " + std::to_string(in.map_width) + " x " +
-                            std::to_string(in.map_height) + ", n = " + std::to_string(in.ior));
+                            "sigma_t >= 0); got R = " +
+                            std::to_string(in.grid_resolution) + ", S = " + std::to_string(in.sub_photons) +
+                            ", W x H = " + std::to_string(in.map_width) + " x " + std::to_string(in.map_height) +
+                            ", n = " + std::to_string(in.ior));
     }
 }
 
@@ -83,7 +84,7 @@ CausticMapFrame fit_caustic_map(const CausticInputs& in) {
     const glm::dvec2 reach = in.max_amplitude * glm::abs(shear) + glm::dvec2(in.fit_margin);
     // The adaptive kernel reaches up to kMaxSplatHalfWidth texels from its photon, the bilinear
     // one a texel (the border below): the difference is added so edge photons keep all their taps.
-    const uint32_t kernel_reach = in.kernel == CausticKernel::Bilinear  ? 0
+    const uint32_t kernel_reach = in.kernel == CausticKernel::Bilinear   ? 0
                                   : in.kernel == CausticKernel::Adaptive ? kMaxSplatHalfWidth - 1
                                                                          : kMaxFootprintTexels - 1;
     const glm::uvec2 extra(std::ceil(reach.x / texel - 1e-9) + kernel_reach,
@@ -108,8 +109,7 @@ CausticMapFrame fit_caustic_map(const CausticInputs& in) {
     const double projected_bound = 4.0 * in.half_extent * in.half_extent + 16.0 * in.half_extent * in.max_amplitude;
     for (int c = 0; c < 3; ++c) {
         const double es = in.sun_irradiance[c];
-        f.flat_texel_flux[c] =
-            es * transmit * cos_s / cos_t * std::exp(-in.sigma_t[c] * depth / cos_t) * f.texel_area;
+        f.flat_texel_flux[c] = es * transmit * cos_s / cos_t * std::exp(-in.sigma_t[c] * depth / cos_t) * f.texel_area;
         const double incoming = es * projected_bound;
         f.lsb[c] = std::max(1e-9 * f.flat_texel_flux[c], incoming / 0x1.0p62);
         if (!(f.lsb[c] > 0.0)) f.lsb[c] = 1.0;  // E_s,c = 0: nothing is deposited in this channel

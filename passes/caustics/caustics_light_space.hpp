@@ -44,21 +44,21 @@ constexpr uint32_t kMaxSplatHalfWidth = 4;
 constexpr uint32_t kMaxFootprintTexels = 8;
 
 struct CausticInputs {
-    fg::BufferHandle surface;             // the vertex grid of add_water_surface_pass
-    uint32_t grid_resolution = 256;       // its R (cells per side)
-    double water_level = 0.0;             // its mean level y, m
-    double half_extent = 10.0;            // its E: the grid spans [-E, E]^2
-    double max_amplitude = 0.0;           // a bound on |h| (WaterSurface::max_amplitude), for the fit
-    uint32_t sub_photons = 1;             // S: S x S photons per cell (S = 1: one per cell)
-    bool jitter = false;                  // photons leave from hashed points of their sub-cells
+    fg::BufferHandle surface;                        // the vertex grid of add_water_surface_pass
+    uint32_t grid_resolution = 256;                  // its R (cells per side)
+    double water_level = 0.0;                        // its mean level y, m
+    double half_extent = 10.0;                       // its E: the grid spans [-E, E]^2
+    double max_amplitude = 0.0;                      // a bound on |h| (WaterSurface::max_amplitude), for the fit
+    uint32_t sub_photons = 1;                        // S: S x S photons per cell (S = 1: one per cell)
+    bool jitter = false;                             // photons leave from hashed points of their sub-cells
     CausticKernel kernel = CausticKernel::Bilinear;  // the splat (shaders/caustics/caustic_splat.glsl)
-    glm::dvec3 sun_direction{0.0, -1.0, 0.0};  // unit, the direction the sunlight travels
-    glm::dvec3 sun_irradiance{1.0};       // E_s per RGB, W m^-2 normal to the beam
-    double ior = 1.333;                   // n of the water, [1, 2]
-    glm::dvec3 sigma_t{0.0};              // extinction per RGB, 1/m
-    double floor_height = -2.0;           // the receiver: the plane y = floor_height
-    double fit_margin = 0.0;              // m added around the fitted map on each side
-    uint32_t map_width = 512, map_height = 512;  // W x H texels, 3..16384 each
+    glm::dvec3 sun_direction{0.0, -1.0, 0.0};        // unit, the direction the sunlight travels
+    glm::dvec3 sun_irradiance{1.0};                  // E_s per RGB, W m^-2 normal to the beam
+    double ior = 1.333;                              // n of the water, [1, 2]
+    glm::dvec3 sigma_t{0.0};                         // extinction per RGB, 1/m
+    double floor_height = -2.0;                      // the receiver: the plane y = floor_height
+    double fit_margin = 0.0;                         // m added around the fitted map on each side
+    uint32_t map_width = 512, map_height = 512;      // W x H texels, 3..16384 each
 };
 
 // Mirrors struct CausticLightSpace of shaders/caustics/caustic_light_space.glsl.
@@ -71,12 +71,12 @@ struct CausticLightSpacePush {
 static_assert(sizeof(CausticLightSpacePush) == 64);
 
 struct CausticMapFrame {
-    glm::dvec3 s;                // the sun direction
-    glm::dvec3 direction;        // t: the map's projection direction (the flat-water refracted sun)
-    glm::dvec2 shear;            // -t.xz / t.y: a point's map position is (x, z) + (y - level) shear
-    glm::dvec2 corner;           // (x, z) at the mean level of texel coordinate (0, 0), m
-    glm::dvec2 texel;            // texel size along x and z at the mean level, m
-    double texel_area = 0.0;     // A_ls = texel.x texel.y cos(theta_t), m^2 normal to t
+    glm::dvec3 s;             // the sun direction
+    glm::dvec3 direction;     // t: the map's projection direction (the flat-water refracted sun)
+    glm::dvec2 shear;         // -t.xz / t.y: a point's map position is (x, z) + (y - level) shear
+    glm::dvec2 corner;        // (x, z) at the mean level of texel coordinate (0, 0), m
+    glm::dvec2 texel;         // texel size along x and z at the mean level, m
+    double texel_area = 0.0;  // A_ls = texel.x texel.y cos(theta_t), m^2 normal to t
     uint32_t width = 0, height = 0;
     bool sun_up = false;         // s.y < 0; otherwise no photon deposits anything
     glm::dvec3 flat_texel_flux;  // Phi_flat per channel (above), W

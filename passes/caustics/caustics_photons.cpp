@@ -2,9 +2,9 @@
 #include "passes/caustics/caustics_photons.hpp"
 
 #include "engine/framegraph/pass_context.hpp"
-#include "passes/common/zeroed_buffer.hpp"
 #include "engine/vk/context.hpp"
 #include "passes/caustics/caustics_bands.hpp"
+#include "passes/common/zeroed_buffer.hpp"
 #include "passes/water/water_surface.hpp"
 
 #include <cstring>
@@ -15,7 +15,7 @@
 namespace vkw::passes {
 namespace {
 
-constexpr uint32_t kGroupSide = 8;   // local_size of caustic_photons.comp
+constexpr uint32_t kGroupSide = 8;  // local_size of caustic_photons.comp
 constexpr uint32_t kMaxGroups = 65535;
 
 // Mirrors the push constants of shaders/caustics/caustic_photons.comp.
@@ -113,7 +113,8 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
                     d.shadow.add_bindings(context, bindings);
                     context.bind(pipeline, bindings);
                     context.push_constants(pipeline, p);
-                    vkCmdDispatch(context.cmd(), caustic_photon_groups(uint64_t{r} * s), caustic_photon_groups(uint64_t{chunk.rows} * s), 1);
+                    vkCmdDispatch(context.cmd(), caustic_photon_groups(uint64_t{r} * s),
+                                  caustic_photon_groups(uint64_t{chunk.rows} * s), 1);
                 }
             }
         });

@@ -28,7 +28,8 @@ struct ProceduralPush {
 CausticMap add_caustic_procedural_pass(fg::FrameGraph& graph, const CausticInputs& inputs) {
     const CausticMapFrame frame = fit_caustic_map(inputs);
     ProceduralPush push{};
-    for (int c = 0; c < 3; ++c) push.e_floor[c] = frame.sun_up ? float(frame.flat_texel_flux[c] / frame.texel_area) : 0.0f;
+    for (int c = 0; c < 3; ++c)
+        push.e_floor[c] = frame.sun_up ? float(frame.flat_texel_flux[c] / frame.texel_area) : 0.0f;
     push.sun[0] = float(frame.s.x), push.sun[1] = float(frame.s.y), push.sun[2] = float(frame.s.z);
     push.sun[3] = float(inputs.ior);
     push.t[0] = float(frame.direction.x), push.t[1] = float(frame.direction.y), push.t[2] = float(frame.direction.z);

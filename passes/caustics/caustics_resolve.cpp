@@ -48,9 +48,9 @@ CausticMap add_caustic_resolve_pass(fg::FrameGraph& graph, fg::BufferHandle flux
             const Pipeline& pipeline = context.pipeline("caustic resolve", desc);
             const VkPhysicalDeviceLimits& limits = context.context().properties().limits;
             // Bands of at most 65535 groups of 8 rows, each within one binding.
-            const auto bands = row_bands(height, VkDeviceSize{push.width} * kCausticTexelBytes,
-                                         kCausticFluxHeaderBytes, 0, limits.maxStorageBufferRange,
-                                         limits.minStorageBufferOffsetAlignment, 65535 * kGroupSide);
+            const auto bands =
+                row_bands(height, VkDeviceSize{push.width} * kCausticTexelBytes, kCausticFluxHeaderBytes, 0,
+                          limits.maxStorageBufferRange, limits.minStorageBufferOffsetAlignment, 65535 * kGroupSide);
             for (const RowBand& band : bands) {
                 fg::DescriptorBinding in = context.storage_buffer(0, d.flux);
                 in.buffer.offset = band.offset;

@@ -1,6 +1,5 @@
 #include "passes/common/frame_constants.hpp"
 
-
 #include <cmath>
 #include <cstdlib>
 
@@ -25,8 +24,8 @@ FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t
     constants.sky_average = glm::vec4(glm::vec3(sky_average_radiance(scene.sky)), 0.0f);
     constants.sun_disk = glm::vec4(static_cast<float>(std::cos(glm::radians(kSunDiskAngularRadiusDeg))),
                                    static_cast<float>(kSunDiskSolidAngle), 0.0f, 0.0f);
-    constants.floor_plane = glm::vec4(static_cast<float>(scene.floor.height),
-                                      static_cast<float>(scene.floor.half_extent), 0.0f, 0.0f);
+    constants.floor_plane =
+        glm::vec4(static_cast<float>(scene.floor.height), static_cast<float>(scene.floor.half_extent), 0.0f, 0.0f);
     constants.floor_albedo = glm::vec4(glm::vec3(scene.floor.albedo), 0.0f);
     constants.camera_near = glm::vec4(static_cast<float>(scene.camera.near_plane), 0.0f, 0.0f, 0.0f);
     constants.viewport = glm::vec4(static_cast<float>(width), static_cast<float>(height), 0.0f, 0.0f);

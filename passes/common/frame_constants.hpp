@@ -19,19 +19,19 @@ struct alignas(16) FrameConstants {
     glm::mat4 view_proj;
     glm::mat4 inv_view_proj;
     glm::vec4 camera_position;
-    glm::vec4 sun_direction;   // w: 1 if above the horizon
+    glm::vec4 sun_direction;  // w: 1 if above the horizon
     glm::vec4 sun_irradiance;
     glm::vec4 sky_radiance;
     glm::vec4 sky_zenith;
     glm::vec4 sky_horizon;
     glm::vec4 sky_ground;
-    glm::vec4 sky_params;      // x: model (0 constant, 1 gradient), y: exponent
+    glm::vec4 sky_params;  // x: model (0 constant, 1 gradient), y: exponent
     glm::vec4 sky_average;
-    glm::vec4 sun_disk;        // x: cos(angular radius), y: solid angle
-    glm::vec4 floor_plane;     // x: height, y: half extent
+    glm::vec4 sun_disk;     // x: cos(angular radius), y: solid angle
+    glm::vec4 floor_plane;  // x: height, y: half extent
     glm::vec4 floor_albedo;
-    glm::vec4 viewport;        // xy: width, height in pixels
-    glm::vec4 water;           // x: level, y: ior, z: half extent, w: has water
+    glm::vec4 viewport;  // xy: width, height in pixels
+    glm::vec4 water;     // x: level, y: ior, z: half extent, w: has water
     glm::vec4 medium_sigma_t;
     glm::vec4 medium_sigma_s;  // w: g
     glm::vec4 camera_medium;   // x: camera in the water (per frame; the stencil split refines it per pixel)

@@ -1,7 +1,7 @@
 #include "passes/common/frame_constants_upload.hpp"
 
-#include "passes/common/frame_keys.hpp"
 #include "engine/framegraph/pass_context.hpp"
+#include "passes/common/frame_keys.hpp"
 
 namespace vkw::passes {
 

@@ -43,8 +43,16 @@ bool box_may_be_visible(const glm::dmat4& view_proj, const glm::dvec3& lo, const
 void decide(fg::FrameNeeds& needs, const Scene& scene, Effect effect, bool rule, const std::string& reason) {
     switch (scene.effects[effect].mode) {
         case EffectMode::Auto: needs.decide(effect, rule, reason); break;
-        case EffectMode::On: needs.decide(effect, true, "effects." + std::string(effect_name(effect)) + ".mode = on (the rule says: " + reason + ")", true); break;
-        case EffectMode::Off: needs.decide(effect, false, "effects." + std::string(effect_name(effect)) + ".mode = off (the rule says: " + reason + ")", true); break;
+        case EffectMode::On:
+            needs.decide(effect, true,
+                         "effects." + std::string(effect_name(effect)) + ".mode = on (the rule says: " + reason + ")",
+                         true);
+            break;
+        case EffectMode::Off:
+            needs.decide(effect, false,
+                         "effects." + std::string(effect_name(effect)) + ".mode = off (the rule says: " + reason + ")",
+                         true);
+            break;
     }
 }
 
@@ -78,8 +86,10 @@ void decide_scene_lookups(fg::FrameNeeds& needs, const Scene& scene, const Water
     const double trough = 2.0 * scene.water->level - bounds.hi.y;  // the surface's lowest point
     const bool objects_above = span.any && span.highest > trough;
     const bool objects_below = span.any && span.lowest < bounds.hi.y;
-    const bool reflection = water_visible && ((camera_may_be_above && objects_above) || (camera_may_be_below && objects_below));
-    const bool refraction = water_visible && ((camera_may_be_above && objects_below) || (camera_may_be_below && objects_above));
+    const bool reflection =
+        water_visible && ((camera_may_be_above && objects_above) || (camera_may_be_below && objects_below));
+    const bool refraction =
+        water_visible && ((camera_may_be_above && objects_below) || (camera_may_be_below && objects_above));
     const std::string sides = camera_may_be_above && camera_may_be_below ? "the near plane reaches into the waves"
                               : camera_may_be_above                      ? "the camera is above the water"
                                                                          : "the camera is in the water";
@@ -186,7 +196,7 @@ fg::FrameNeeds decide_frame_needs(const Scene& scene, double aspect) {
            : floor_under   ? format("the sun is up and the floor (y = %.3g m) lies under the water (crest %.3g m)",
                                     scene.floor.height, bounds.hi.y)
                            : format("the sun is up and receiver meshes reach under the water (down to y = %.3g m, "
-                                    "crest %.3g m)",
+                                      "crest %.3g m)",
                                     meshes.lowest, bounds.hi.y));
     // The blur feeds nothing but the light-space caustic map: needed when the map is and its radius
     // is not 0.
@@ -202,11 +212,11 @@ fg::FrameNeeds decide_frame_needs(const Scene& scene, double aspect) {
     decide_godrays(needs, scene, bounds, water_visible, sun_up);
 
     const bool underwater = over_water && lowest < bounds.hi.y && highest > bounds.lo.y;
-    decide(needs, scene, Effect::UnderwaterView, underwater,
-           underwater ? format("the near plane reaches y = %.3g m, below the highest crest at %.3g m", lowest,
-                               bounds.hi.y)
-                      : format("the near plane stays above y = %.3g m, over the highest crest at %.3g m", lowest,
-                               bounds.hi.y));
+    decide(
+        needs, scene, Effect::UnderwaterView, underwater,
+        underwater
+            ? format("the near plane reaches y = %.3g m, below the highest crest at %.3g m", lowest, bounds.hi.y)
+            : format("the near plane stays above y = %.3g m, over the highest crest at %.3g m", lowest, bounds.hi.y));
     const double trough = 2.0 * scene.water->level - bounds.hi.y;
     decide_scene_lookups(needs, scene, bounds, water_visible, !over_water || highest >= trough, underwater);
     return needs;

@@ -1,29 +1,26 @@
 #include "passes/frame/renderer.hpp"
 
 #include "engine/core/errors.hpp"
-#include "passes/caustics/caustic_layer.hpp"
-#include "passes/caustics/caustics_camera_splats.hpp"
-#include "passes/caustics/caustics_resolve.hpp"
-#include "passes/common/frame_keys.hpp"
-#include "passes/receivers/sun_shadow.hpp"
-#include "passes/frame/frame_needs.hpp"
 #include "engine/vk/context.hpp"
+#include "passes/caustics/caustic_layer.hpp"
+#include "passes/caustics/caustics_blur.hpp"
 #include "passes/caustics/caustics_camera_receivers.hpp"
 #include "passes/caustics/caustics_camera_splats.hpp"
 #include "passes/caustics/caustics_photons.hpp"
-#include "passes/caustics/caustics_resolve.hpp"
-#include "passes/receivers/floor.hpp"
-#include "passes/common/frame_constants_upload.hpp"
-#include "passes/godrays/godrays.hpp"
-#include "passes/caustics/caustics_blur.hpp"
 #include "passes/caustics/caustics_procedural.hpp"
+#include "passes/caustics/caustics_resolve.hpp"
+#include "passes/common/frame_constants_upload.hpp"
+#include "passes/common/frame_keys.hpp"
+#include "passes/frame/frame_needs.hpp"
+#include "passes/godrays/godrays.hpp"
 #include "passes/present/readback.hpp"
+#include "passes/receivers/floor.hpp"
 #include "passes/receivers/receiver_meshes.hpp"
 #include "passes/receivers/receivers.hpp"
-#include "passes/water/scene_optics.hpp"
+#include "passes/receivers/sun_shadow.hpp"
 #include "passes/scene_views/scene_view.hpp"
 #include "passes/sky/sky.hpp"
-#include "passes/receivers/sun_shadow.hpp"
+#include "passes/water/scene_optics.hpp"
 #include "passes/water/water_shading.hpp"
 #include "passes/water/water_surface.hpp"
 #include "passes/water/water_surface_spectrum.hpp"
@@ -84,11 +81,12 @@ passes::WaterSceneLookups scene_lookups(fg::FrameGraph& graph, const Scene& scen
     if (graph.needs().needs(Effect::Reflection)) {
         const bool mirrored = reflection.method == SceneLookup::Projective;
         lookups.reflection_view = passes::add_scene_view_pass(
-            graph, *receivers, {mirrored ? "mirrored reflection view" : "reflection view", mirrored, true, clip_margin});
+            graph, *receivers,
+            {mirrored ? "mirrored reflection view" : "reflection view", mirrored, true, clip_margin});
     }
     if (graph.needs().needs(Effect::Refraction)) {
-        lookups.refraction_view =
-            passes::add_scene_view_pass(graph, *receivers, {"refraction view", false, false, clip_margin, caustic_layer});
+        lookups.refraction_view = passes::add_scene_view_pass(
+            graph, *receivers, {"refraction view", false, false, clip_margin, caustic_layer});
     }
     lookups.reflection_method = reflection.method;
     lookups.refraction_method = refraction.method;
@@ -126,8 +124,8 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
     std::optional<fg::BufferHandle> surface;
     if (scene.water && graph.needs().needs(Effect::Water)) {
         const Water& water = *scene.water;
-        passes::WaterSurfaceInputs inputs{water.level, water.half_extent, water.grid_resolution, water.time,
-                                          water.waves, ocean};
+        passes::WaterSurfaceInputs inputs{water.level, water.half_extent, water.grid_resolution,
+                                          water.time,  water.waves,       ocean};
         surface = passes::add_water_surface_pass(graph, inputs);
         // Without it (culled: no ray can start in the water) the shading falls back to the
         // per-frame camera medium of the frame constants.
@@ -166,7 +164,8 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
                     scene.effects.caustics.method == CausticMethod::Procedural
                         ? passes::add_caustic_procedural_pass(graph, caustics)
                         : passes::add_caustic_resolve_pass(
-                              graph, passes::add_caustic_photon_pass(graph, caustics, sun_shadow ? &*sun_shadow : nullptr),
+                              graph,
+                              passes::add_caustic_photon_pass(graph, caustics, sun_shadow ? &*sun_shadow : nullptr),
                               caustics);
                 if (graph.needs().needs(Effect::CausticBlur)) {
                     map = passes::add_caustic_blur_pass(graph, map, caustics, scene.effects.caustic_blur.radius);
@@ -187,9 +186,9 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
     // Godrays only with a decision, as the frame constants' analytic in-scatter switch has it.
     const fg::EffectDecision* godrays = graph.needs().find(Effect::VolumeCaustics);
     if (surface && godrays && godrays->needed) {
-        passes::add_godray_passes(graph, {*surface, scene.water->grid_resolution,
-                                          water_bounds(scene).hi.y - scene.water->level, scene.effects.godrays,
-                                          width, height});
+        passes::add_godray_passes(
+            graph, {*surface, scene.water->grid_resolution, water_bounds(scene).hi.y - scene.water->level,
+                    scene.effects.godrays, width, height});
     }
     if (output) {
         output->add_passes(graph, graph.blackboard().get(keys::kHdrColor));
@@ -229,21 +228,23 @@ std::string Renderer::water_configuration(const Scene& scene) {
            std::to_string(scene.medium.sigma_t().z);
     // The photon pass captures its sampling and its splat kernel at declaration.
     const CausticSettings& caustics = scene.effects.caustics;
-    key += " photons " + std::to_string(int(caustics.method)) + "/" + std::to_string(caustics.sub_photons) + "/" + std::to_string(int(caustics.jitter)) + "/" +
-           std::to_string(int(caustics.splat)) + "/" +
+    key += " photons " + std::to_string(int(caustics.method)) + "/" + std::to_string(caustics.sub_photons) + "/" +
+           std::to_string(int(caustics.jitter)) + "/" + std::to_string(int(caustics.splat)) + "/" +
            std::to_string(int(caustics.kernel)) + "/" + std::to_string(caustics.map_scale) + " blur " +
            std::to_string(scene.effects.caustic_blur.radius);
     // The water pass captures its shading model at declaration.
     const WaterShadingSettings& shading = scene.effects.water;
     key += " shading " + std::to_string(int(shading.fresnel)) + "/" + std::to_string(shading.fresnel_power);
     if (shading.depth_blend) {
-        key += "/" + std::to_string(shading.depth_blend->colour.x) + "," + std::to_string(shading.depth_blend->colour.y) +
-               "," + std::to_string(shading.depth_blend->colour.z) + "/" + std::to_string(shading.depth_blend->k);
+        key += "/" + std::to_string(shading.depth_blend->colour.x) + "," +
+               std::to_string(shading.depth_blend->colour.y) + "," + std::to_string(shading.depth_blend->colour.z) +
+               "/" + std::to_string(shading.depth_blend->k);
     }
     // The water pass and the scene views capture the lookup methods at declaration.
     for (const Effect effect : {Effect::Reflection, Effect::Refraction}) {
-        key += " " + std::to_string(int(scene.effects[effect].method)) + "/" + std::to_string(scene.effects[effect].max_steps) +
-               "/" + std::to_string(scene.effects[effect].shallow_blend);
+        key += " " + std::to_string(int(scene.effects[effect].method)) + "/" +
+               std::to_string(scene.effects[effect].max_steps) + "/" +
+               std::to_string(scene.effects[effect].shallow_blend);
     }
     for (const WaveComponent& wave : water.waves.components) {
         key += " " + std::to_string(wave.amplitude) + "," + std::to_string(wave.wavelength) + "," +
@@ -339,14 +340,15 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
         VkPhysicalDeviceMemoryProperties memory;
         vkGetPhysicalDeviceMemoryProperties(context_.physical_device(), &memory);
         VkDeviceSize largest_heap = 0;
-        for (uint32_t i = 0; i < memory.memoryHeapCount; ++i) largest_heap = std::max(largest_heap, memory.memoryHeaps[i].size);
+        for (uint32_t i = 0; i < memory.memoryHeapCount; ++i)
+            largest_heap = std::max(largest_heap, memory.memoryHeaps[i].size);
         const VkDeviceSize limit =
             std::min<VkDeviceSize>(largest_heap / 4, context_.properties().limits.maxStorageBufferRange);
         uint32_t largest_grid = 1;
         while (passes::water_surface_bytes(largest_grid * 2) <= limit) largest_grid *= 2;
         if (passes::water_surface_bytes(scene.water->grid_resolution) > limit) {
-            throw UserError(scene.source.string() + ": water.grid_resolution: " +
-                            std::to_string(scene.water->grid_resolution) + " needs " +
+            throw UserError(scene.source.string() +
+                            ": water.grid_resolution: " + std::to_string(scene.water->grid_resolution) + " needs " +
                             std::to_string(passes::water_surface_bytes(scene.water->grid_resolution) >> 20) +
                             " MiB of surface vertices (accepted on '" + context_.device_name() + "': up to about " +
                             std::to_string(largest_grid) + ")");
@@ -370,15 +372,12 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
     }
     fg::FrameNeeds needs = decide_frame_needs(scene, double(options.width) / double(options.height));
     // Everything the graph's shape depends on; the rest reaches it through the constants.
-    const std::string configuration = water_configuration(scene) + " " + sun_shadow_configuration(scene) + " " +
-                                      std::to_string(options.width) + "x" +
-                                      std::to_string(options.height) + " " +
-                                      needs.key() + " " + std::to_string(int(options.recording)) + " " +
-                                      std::to_string(int(options.check_finite)) + " " +
-                                      std::to_string(int(options.timing)) + " layer " +
-                                      std::to_string(int(options.caustic_layer)) + " " +
-                                      passes::godray_configuration(scene.effects.godrays) + " output " +
-                                      (output ? output->key : std::string("readback"));
+    const std::string configuration =
+        water_configuration(scene) + " " + sun_shadow_configuration(scene) + " " + std::to_string(options.width) + "x" +
+        std::to_string(options.height) + " " + needs.key() + " " + std::to_string(int(options.recording)) + " " +
+        std::to_string(int(options.check_finite)) + " " + std::to_string(int(options.timing)) + " layer " +
+        std::to_string(int(options.caustic_layer)) + " " + passes::godray_configuration(scene.effects.godrays) +
+        " output " + (output ? output->key : std::string("readback"));
     *constants_ = make_frame_constants(scene, options.width, options.height);
     // Counted once (docs/model.md section 1): the godray passes, when they run, are the
     // in-scatter of sunlight, and the shading's analytic in-scatter is switched off. (An
@@ -393,8 +392,9 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
         auto frame = std::make_unique<CompiledFrame>();
         frame->configuration = configuration;
         if (!output) {
-            frame->readback = Buffer(context_, {hdr_bytes(options.width, options.height), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
-                                     "HDR readback");
+            frame->readback =
+                Buffer(context_, {hdr_bytes(options.width, options.height), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
+                       "HDR readback");
             if (options.caustic_layer) {
                 frame->caustic_readback =
                     Buffer(context_, {hdr_bytes(options.width, options.height), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
@@ -407,8 +407,8 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
                           frame->readback.handle(), ocean, receivers, output, frame->caustic_readback.handle());
         frame->graph->compile(options.width, options.height);
         ++compile_count_;
-        frame->executor = std::make_unique<fg::FrameExecutor>(context_, *frame->graph, pipelines_,
-                                                              fg::ExecutorOptions{options.check_finite, options.timing});
+        frame->executor = std::make_unique<fg::FrameExecutor>(
+            context_, *frame->graph, pipelines_, fg::ExecutorOptions{options.check_finite, options.timing});
         frame_ = std::move(frame);
     }
     return *frame_;

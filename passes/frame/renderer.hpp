@@ -8,9 +8,9 @@
 #include "engine/framegraph/executor.hpp"
 #include "engine/framegraph/frame_graph.hpp"
 #include "engine/image/image.hpp"
-#include "passes/common/frame_constants.hpp"
 #include "engine/scene/scene.hpp"
 #include "engine/vk/resources.hpp"
+#include "passes/common/frame_constants.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -40,7 +40,7 @@ struct RenderResult {
 namespace passes {
 class OceanSpectrumBuffer;
 class ReceiverMeshes;
-}
+}  // namespace passes
 
 // The last passes of a frame in place of the readback, for a caller that keeps or shows the
 // image itself (the window hands the HDR colour on to its present graph). `key` stands for

@@ -16,9 +16,7 @@ namespace vkw::passes {
 namespace {
 
 // The frame graph's size of an output-relative image (FrameGraph::image_width): lround, at least 1.
-uint32_t scaled(uint32_t size, float scale) {
-    return std::max(1u, static_cast<uint32_t>(std::lround(scale * size)));
-}
+uint32_t scaled(uint32_t size, float scale) { return std::max(1u, static_cast<uint32_t>(std::lround(scale * size))); }
 
 }  // namespace
 
@@ -28,8 +26,8 @@ void add_godray_passes(fg::FrameGraph& graph, const GodrayInputs& inputs) {
     const double max_depth = settings.max_depth.value_or(1e30);
     const fg::ImageHandle view_depth = add_godray_depth_pass(graph, scale);
     if (settings.method == GodrayMethod::Marched) {
-        const fg::ImageHandle radiance = add_godray_march_pass(
-            graph, {view_depth, scale, settings.march_steps, inputs.max_amplitude, max_depth});
+        const fg::ImageHandle radiance =
+            add_godray_march_pass(graph, {view_depth, scale, settings.march_steps, inputs.max_amplitude, max_depth});
         add_godray_composite_pass(graph, radiance, view_depth);
         return;
     }

@@ -24,7 +24,7 @@ struct GodrayInputs {
     uint32_t surface_resolution = 256;  // its R
     double max_amplitude = 0.0;         // m: a bound on the waves' height above the mean level
     GodraySettings settings;
-    uint32_t width = 800, height = 600; // the output's size
+    uint32_t width = 800, height = 600;  // the output's size
 };
 
 // Declares the passes after the water shading; reads keys::kFrameConstants, kSceneOptics,

@@ -4,9 +4,9 @@
 #include "engine/core/errors.hpp"
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/scene/effects.hpp"
+#include "engine/vk/context.hpp"
 #include "passes/common/frame_keys.hpp"
 #include "passes/receivers/sun_shadow.hpp"
-#include "engine/vk/context.hpp"
 #include "passes/water/water_surface.hpp"
 
 #include <algorithm>
@@ -49,7 +49,8 @@ std::vector<BeamChunk> beam_chunks(uint32_t resolution, uint32_t grid, VkDeviceS
         chunk.offset = start - start % alignment;
         chunk.vertex_base = uint32_t((start - chunk.offset) / kWaterVertexBytes);
         while (row < grid &&
-               start - chunk.offset + VkDeviceSize{last_vertex_row(row) - chunk.vertex_row0 + 1} * row_bytes <= max_range) {
+               start - chunk.offset + VkDeviceSize{last_vertex_row(row) - chunk.vertex_row0 + 1} * row_bytes <=
+                   max_range) {
             ++row;
         }
         if (row == chunk.first_row) {
@@ -90,7 +91,8 @@ fg::BufferHandle add_godray_beams_pass(fg::FrameGraph& graph, const GodrayBeamIn
             d.constants = builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants), stage);
             d.surface = builder.read_storage(inputs.surface, stage);
             d.beams = builder.write_storage(builder.create_buffer("godray beams", {bytes}), stage);
-            if (graph.blackboard().has(keys::kSunShadow)) d.shadow.declare(builder, &graph.blackboard().get(keys::kSunShadow), stage);
+            if (graph.blackboard().has(keys::kSunShadow))
+                d.shadow.declare(builder, &graph.blackboard().get(keys::kSunShadow), stage);
         },
         [push](const Data& d, fg::PassContext& context) {
             const bool shadow = static_cast<bool>(d.shadow);

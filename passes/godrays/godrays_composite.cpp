@@ -33,8 +33,9 @@ void add_godray_composite_pass(fg::FrameGraph& graph, fg::ImageHandle radiance, 
                                     {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}};
             desc.additive_blend = true;
             const Pipeline& pipeline = context.pipeline("godray composite", desc);
-            context.bind(pipeline, {context.uniform_buffer(0, d.constants), context.sampled_nearest(1, d.radiance),
-                                    context.sampled_nearest(2, d.view_depth), context.sampled_nearest(3, d.scene_depth)});
+            context.bind(pipeline,
+                         {context.uniform_buffer(0, d.constants), context.sampled_nearest(1, d.radiance),
+                          context.sampled_nearest(2, d.view_depth), context.sampled_nearest(3, d.scene_depth)});
             vkCmdDraw(context.cmd(), 3, 1, 0, 0);
         });
     graph.blackboard().put(keys::kHdrColor, data.hdr);

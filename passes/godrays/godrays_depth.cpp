@@ -42,7 +42,8 @@ fg::ImageHandle add_godray_depth_pass(fg::FrameGraph& graph, float scale) {
                                                         context.sampled_nearest(1, d.scene_depth),
                                                         context.storage_image(2, d.view_depth)};
             if (d.camera_medium) {
-                desc.layout.bindings.push_back({3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT});
+                desc.layout.bindings.push_back(
+                    {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT});
                 bindings.push_back(context.sampled_nearest(3, *d.camera_medium));
             }
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);

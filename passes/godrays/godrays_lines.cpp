@@ -3,8 +3,8 @@
 
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/scene/effects.hpp"
-#include "passes/common/zeroed_buffer.hpp"
 #include "passes/common/frame_keys.hpp"
+#include "passes/common/zeroed_buffer.hpp"
 #include "passes/water/water_volume_stencil.hpp"
 
 #include <algorithm>

@@ -23,11 +23,11 @@
 namespace vkw::passes {
 
 struct GodrayLineInputs {
-    fg::BufferHandle beams;         // add_godray_beams_pass's output
-    uint32_t grid = 128;            // G: its beams per side
-    fg::ImageHandle view_depth;     // add_godray_depth_pass's output
-    uint32_t width = 0, height = 0; // its size (the godray resolution)
-    double max_amplitude = 0.0;     // m: a bound on the waves' height above the mean level
+    fg::BufferHandle beams;          // add_godray_beams_pass's output
+    uint32_t grid = 128;             // G: its beams per side
+    fg::ImageHandle view_depth;      // add_godray_depth_pass's output
+    uint32_t width = 0, height = 0;  // its size (the godray resolution)
+    double max_amplitude = 0.0;      // m: a bound on the waves' height above the mean level
 };
 
 // The radiance pyramids (shaders/godrays/godray_pyramid.glsl): levels down to four to eight pixels

@@ -8,8 +8,8 @@
 namespace vkw::window {
 
 PresentGraph::PresentGraph(Context& context, fg::PipelineStore& pipelines, const PresentImages& images,
-                           const passes::PresentTonemapSettings* settings,
-                           std::function<void(VkCommandBuffer)> overlay, VkBuffer readback) {
+                           const passes::PresentTonemapSettings* settings, std::function<void(VkCommandBuffer)> overlay,
+                           VkBuffer readback) {
     graph_ = std::make_unique<fg::FrameGraph>();
     graph_->set_default_recording(fg::RecordingKind::RenderPassObject);
 

@@ -21,7 +21,7 @@
 namespace vkw::window {
 
 struct PresentImages {
-    fg::ImportedImage hdr;        // the hand-off image: R32G32B32A32_SFLOAT, the swapchain's size
+    fg::ImportedImage hdr;  // the hand-off image: R32G32B32A32_SFLOAT, the swapchain's size
     VkImage swapchain_image = VK_NULL_HANDLE;
     VkImageView swapchain_view = VK_NULL_HANDLE;
     VkFormat swapchain_format = VK_FORMAT_UNDEFINED;

@@ -5,9 +5,7 @@
 
 namespace vkw::passes {
 
-fg::AccessState present_handoff_final_state() {
-    return fg::access_state(fg::Use::SampledRead, fg::PassKind::Graphics);
-}
+fg::AccessState present_handoff_final_state() { return fg::access_state(fg::Use::SampledRead, fg::PassKind::Graphics); }
 
 void add_present_handoff_pass(fg::FrameGraph& graph, fg::ImageHandle hdr, const fg::ImportedImage& target) {
     fg::ImportedImage imported = target;

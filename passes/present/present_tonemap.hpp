@@ -11,8 +11,8 @@ namespace vkw::passes {
 
 // Read when the pass records, so that a new exposure needs no new graph.
 struct PresentTonemapSettings {
-    float exposure = 1.0f;     // linear scale on radiance, > 0
-    bool encode_srgb = true;   // false when the target's format encodes sRGB itself
+    float exposure = 1.0f;    // linear scale on radiance, > 0
+    bool encode_srgb = true;  // false when the target's format encodes sRGB itself
 };
 
 // `hdr` and `target` have the same size. Returns the target's new version.

@@ -1,8 +1,8 @@
 #include "passes/receivers/floor.hpp"
 
 #include "engine/framegraph/pass_context.hpp"
-#include "passes/common/frame_keys.hpp"
 #include "passes/caustics/caustic_layer.hpp"
+#include "passes/common/frame_keys.hpp"
 #include "passes/receivers/lighting_inputs.hpp"
 #include "passes/receivers/receiver_draws.hpp"
 

@@ -33,14 +33,15 @@ void LightingInputs::declare(fg::PassBuilder& builder, const fg::Blackboard& bla
 
 std::string LightingInputs::shader(const std::string& base) const {
     return base + (camera_medium ? ".per_pixel" : ".frame") + (caustic_map ? "_caustics" : "") +
-           (camera_caustics ? "_camera_caustics" : "") +
-           (sun_shadow ? "_shadow" : "");
+           (camera_caustics ? "_camera_caustics" : "") + (sun_shadow ? "_shadow" : "");
 }
 
 void LightingInputs::add_layout(std::vector<VkDescriptorSetLayoutBinding>& bindings) const {
-    bindings.push_back({0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT});
+    bindings.push_back(
+        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT});
     bindings.push_back({1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
-    if (camera_medium) bindings.push_back({3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
+    if (camera_medium)
+        bindings.push_back({3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
     if (caustic_map) {
         bindings.push_back({4, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
         bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});

@@ -1,8 +1,8 @@
 #include "passes/receivers/receivers.hpp"
 
 #include "engine/framegraph/pass_context.hpp"
-#include "passes/common/frame_keys.hpp"
 #include "passes/caustics/caustic_layer.hpp"
+#include "passes/common/frame_keys.hpp"
 #include "passes/receivers/receiver_draws.hpp"
 
 namespace vkw::passes {
@@ -30,7 +30,8 @@ void add_receivers_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes) {
             std::vector<fg::DescriptorBinding> bindings;
             d.lighting.add_bindings(context, bindings);
             context.bind(pipeline, bindings);
-            draw_receiver_meshes(context, pipeline, meshes, d.vertices, d.indices, glm::vec4(0.0f));  // the camera's view
+            draw_receiver_meshes(context, pipeline, meshes, d.vertices, d.indices,
+                                 glm::vec4(0.0f));  // the camera's view
         });
     graph.blackboard().put(keys::kHdrColor, data.hdr);
     graph.blackboard().put(keys::kSceneDepth, data.depth);

@@ -18,8 +18,10 @@ ShadowProjection fit_shadow_projection(const glm::dvec3& direction, const glm::d
     for (int k = 0; k < 3; ++k) finite = finite && std::isfinite(bounds_lo[k]) && std::isfinite(bounds_hi[k]);
     if (std::abs(glm::length(direction) - 1.0) >= 1e-9 || !finite || glm::any(glm::lessThan(bounds_hi, bounds_lo)) ||
         size < 1 || size > 16384) {
-        throw InternalError("sun shadow: inputs out of range (accepted: a unit direction, a finite box with "
-                            "lo <= hi, 1 <= size <= 16384); got size " + std::to_string(size));
+        throw InternalError(
+            "sun shadow: inputs out of range (accepted: a unit direction, a finite box with "
+            "lo <= hi, 1 <= size <= 16384); got size " +
+            std::to_string(size));
     }
     const glm::dvec3 s = direction;
     glm::dvec3 u, v;

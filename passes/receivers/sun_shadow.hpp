@@ -36,10 +36,10 @@ struct UnderwaterBeam {
 };
 
 struct SunShadowInputs {
-    glm::dvec3 sun_direction{0.0, -1.0, 0.0};  // unit, the direction the sunlight travels
+    glm::dvec3 sun_direction{0.0, -1.0, 0.0};    // unit, the direction the sunlight travels
     glm::dvec3 bounds_lo{-1.0}, bounds_hi{1.0};  // world box the map must cover, m
-    uint32_t size = 1024;                       // texels per side of each half
-    std::optional<UnderwaterBeam> beam;         // the right half: the scene has water
+    uint32_t size = 1024;                        // texels per side of each half
+    std::optional<UnderwaterBeam> beam;          // the right half: the scene has water
 };
 
 // One half's projection; mirrors a (mat4, vec4) pair of shaders/receivers/sun_shadow.glsl.
@@ -63,7 +63,7 @@ ShadowProjection fit_shadow_projection(const glm::dvec3& direction, const glm::d
 SunShadowSpace fit_sun_shadow(const SunShadowInputs& inputs);
 
 struct SunShadowMap {
-    fg::ImageHandle depth;  // D32_SFLOAT, (2 with water, else 1) x size wide, size high
+    fg::ImageHandle depth;   // D32_SFLOAT, (2 with water, else 1) x size wide, size high
     fg::BufferHandle space;  // uniform: SunShadowSpace
 };
 

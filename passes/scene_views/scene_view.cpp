@@ -34,7 +34,8 @@ fg::ImageHandle add_scene_view_pass(fg::FrameGraph& graph, const ReceiverMeshes&
             const fg::ImageInfo target{VK_FORMAT_R32G32B32A32_SFLOAT, fg::SizeClass::OutputRelative, kGuardBand};
             d.target = builder.color_attachment(builder.create_image(std::string(spec.name) + " target", target),
                                                 fg::LoadOp::Clear);
-            if (spec.caustic_layer && !spec.camera_side) d.layer.create(builder, std::string(spec.name) + " caustic", target);
+            if (spec.caustic_layer && !spec.camera_side)
+                d.layer.create(builder, std::string(spec.name) + " caustic", target);
             const fg::ImageInfo depth{VK_FORMAT_D32_SFLOAT, fg::SizeClass::OutputRelative, kGuardBand};
             d.depth = builder.depth_stencil_attachment(builder.create_image(std::string(spec.name) + " depth", depth),
                                                        fg::LoadOp::Clear, {.depth = 0.0f});

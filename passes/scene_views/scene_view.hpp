@@ -21,10 +21,10 @@
 namespace vkw::passes {
 
 struct SceneViewSpec {
-    const char* name;      // the pass's name; its target is "<name> target"
-    bool mirrored;         // seen from the camera's mirror image in the mean water plane
-    bool camera_side;      // keeps the camera's side of the surface (false: the other side)
-    float clip_margin;     // m beyond the mean level
+    const char* name;   // the pass's name; its target is "<name> target"
+    bool mirrored;      // seen from the camera's mirror image in the mean water plane
+    bool camera_side;   // keeps the camera's side of the surface (false: the other side)
+    float clip_margin;  // m beyond the mean level
     // The other side's view only: also keep its caustic layer, published as
     // keys::kRefractionViewCaustic (passes/caustics/caustic_layer.hpp).
     bool caustic_layer = false;

@@ -24,8 +24,8 @@ void add_sky_pass(fg::FrameGraph& graph) {
             d.hdr = builder.create_image("hdr colour", {VK_FORMAT_R32G32B32A32_SFLOAT});
             d.hdr = builder.color_attachment(d.hdr, fg::LoadOp::DontCare);
             if (graph.blackboard().has(keys::kCameraMedium)) {
-                d.camera_medium =
-                    builder.sample(graph.blackboard().get(keys::kCameraMedium), VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+                d.camera_medium = builder.sample(graph.blackboard().get(keys::kCameraMedium),
+                                                 VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
             }
         },
         [](const Data& d, fg::PassContext& context) {
@@ -35,7 +35,8 @@ void add_sky_pass(fg::FrameGraph& graph) {
             desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}};
             std::vector<fg::DescriptorBinding> bindings{context.uniform_buffer(0, d.constants)};
             if (d.camera_medium) {
-                desc.layout.bindings.push_back({3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
+                desc.layout.bindings.push_back(
+                    {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
                 bindings.push_back(context.sampled(3, *d.camera_medium));
             }
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);

@@ -2,10 +2,10 @@
 
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/scene/effects.hpp"
-#include "passes/common/frame_keys.hpp"
-#include "passes/scene_views/scene_view.hpp"
 #include "passes/caustics/caustic_layer.hpp"
+#include "passes/common/frame_keys.hpp"
 #include "passes/receivers/lighting_inputs.hpp"
+#include "passes/scene_views/scene_view.hpp"
 
 namespace vkw::passes {
 
@@ -68,7 +68,8 @@ void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uin
             if (lookups.reflection_view) d.reflection_view = builder.sample(*lookups.reflection_view, fragment);
             if (lookups.refraction_view) d.refraction_view = builder.sample(*lookups.refraction_view, fragment);
             if (d.layer.image && d.refraction_view && graph.blackboard().has(keys::kRefractionViewCaustic)) {
-                d.refraction_view_caustic = builder.sample(graph.blackboard().get(keys::kRefractionViewCaustic), fragment);
+                d.refraction_view_caustic =
+                    builder.sample(graph.blackboard().get(keys::kRefractionViewCaustic), fragment);
             }
         },
         [grid_resolution, lookups, shading](const Data& d, fg::PassContext& context) {
@@ -80,11 +81,14 @@ void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uin
             const bool layer_of_views = views && d.layer.image;
             desc.layout.bindings = {{2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT}};
             if (views) {
-                desc.layout.bindings.push_back({8, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
-                desc.layout.bindings.push_back({9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
+                desc.layout.bindings.push_back(
+                    {8, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
+                desc.layout.bindings.push_back(
+                    {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
             }
             if (layer_of_views) {
-                desc.layout.bindings.push_back({10, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
+                desc.layout.bindings.push_back(
+                    {10, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
             }
             desc.layout.push_constant_bytes = sizeof(WaterPush);
             d.lighting.add_layout(desc.layout.bindings);

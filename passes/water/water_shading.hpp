@@ -19,7 +19,7 @@ struct WaterSceneLookups {
     std::optional<fg::ImageHandle> reflection_view, refraction_view;
     SceneLookup reflection_method = SceneLookup::Projective, refraction_method = SceneLookup::Projective;
     int reflection_steps = 64, refraction_steps = 64;
-    float scene_size = 100.0f;  // m: how far a screen-space march looks when no floor bounds it
+    float scene_size = 100.0f;   // m: how far a screen-space march looks when no floor bounds it
     float shallow_blend = 0.0f;  // m: screen-space refraction blends to the direct view under this much water
 };
 

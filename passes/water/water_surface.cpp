@@ -20,12 +20,10 @@ constexpr uint32_t kMaxGridResolution = 16384;  // as engine/water/water_volume.
 
 void check_grid(const WaterSurfaceInputs& inputs) {
     if (!std::isfinite(inputs.level) || !std::isfinite(inputs.time) || !std::isfinite(inputs.half_extent) ||
-        !(inputs.half_extent > 0.0) || inputs.grid_resolution == 0 ||
-        inputs.grid_resolution > kMaxGridResolution) {
-        throw InternalError("add_water_surface_pass: level = " + std::to_string(inputs.level) +
-                            ", time = " + std::to_string(inputs.time) + ", half_extent = " +
-                            std::to_string(inputs.half_extent) + ", grid_resolution = " +
-                            std::to_string(inputs.grid_resolution) +
+        !(inputs.half_extent > 0.0) || inputs.grid_resolution == 0 || inputs.grid_resolution > kMaxGridResolution) {
+        throw InternalError("add_water_surface_pass: level = " + std::to_string(inputs.level) + ", time = " +
+                            std::to_string(inputs.time) + ", half_extent = " + std::to_string(inputs.half_extent) +
+                            ", grid_resolution = " + std::to_string(inputs.grid_resolution) +
                             ": accepted finite level and time, half_extent > 0, 1 <= grid_resolution <= " +
                             std::to_string(kMaxGridResolution));
     }
@@ -38,8 +36,8 @@ void check_ocean(const WaterSurfaceInputs& inputs) {
     const FftOceanSpectrum& spectrum = inputs.ocean->spectrum();
     if (spectrum.n != inputs.waves.ocean.resolution || spectrum.patch_size != inputs.waves.ocean.patch_size) {
         throw InternalError("add_water_surface_pass: the OceanSpectrumBuffer holds a " + std::to_string(spectrum.n) +
-                            "^2 spectrum of patch " + std::to_string(spectrum.patch_size) +
-                            " m, the waves ask for " + std::to_string(inputs.waves.ocean.resolution) + "^2 and " +
+                            "^2 spectrum of patch " + std::to_string(spectrum.patch_size) + " m, the waves ask for " +
+                            std::to_string(inputs.waves.ocean.resolution) + "^2 and " +
                             std::to_string(inputs.waves.ocean.patch_size) + " m: remake it when the waves change");
     }
 }
@@ -55,8 +53,7 @@ fg::BufferHandle add_water_surface_pass(fg::FrameGraph& graph, const WaterSurfac
     check_grid(inputs);
     validate_waves(inputs.waves);
     switch (inputs.waves.model) {
-        case WaveModel::Flat:
-            return add_wave_sum_passes(graph, inputs, {});
+        case WaveModel::Flat: return add_wave_sum_passes(graph, inputs, {});
         case WaveModel::Sum:
             if (inputs.waves.components.size() > kMaxGpuWaves) {
                 throw UserError("water.waves.components has " + std::to_string(inputs.waves.components.size()) +
@@ -64,9 +61,7 @@ fg::BufferHandle add_water_surface_pass(fg::FrameGraph& graph, const WaterSurfac
                                 " (each vertex of the GPU surface sums them all)");
             }
             return add_wave_sum_passes(graph, inputs, inputs.waves.components);
-        case WaveModel::FftOcean:
-            check_ocean(inputs);
-            return add_ocean_passes(graph, inputs);
+        case WaveModel::FftOcean: check_ocean(inputs); return add_ocean_passes(graph, inputs);
     }
     throw InternalError("add_water_surface_pass: unknown wave model");
 }

@@ -34,10 +34,10 @@ inline constexpr uint32_t kMaxGpuWaves = 64;
 inline constexpr VkDeviceSize kWaterVertexBytes = 32;
 
 struct WaterSurfaceInputs {
-    double level = 0.0;               // mean water level y, m
-    double half_extent = 10.0;        // E, m: the grid spans [-E, E]^2
-    uint32_t grid_resolution = 256;   // R cells per side, 1..16384
-    double time = 0.0;                // s
+    double level = 0.0;              // mean water level y, m
+    double half_extent = 10.0;       // E, m: the grid spans [-E, E]^2
+    uint32_t grid_resolution = 256;  // R cells per side, 1..16384
+    double time = 0.0;               // s
     WaveSettings waves;
     // FftOcean only: the device copy of the CPU's h0 for these waves (its spectrum() is the
     // CPU FftOceanSpectrum). Owned by the caller, alive until the frame has executed.

@@ -12,7 +12,7 @@ namespace vkw::passes {
 namespace {
 
 constexpr uint32_t kMinPoints = 16, kMaxPoints = 1024;  // kMaxPoints: the points of one work group
-constexpr uint32_t kMaxGroups = 65535;                   // per dispatch dimension
+constexpr uint32_t kMaxGroups = 65535;                  // per dispatch dimension
 
 // Mirrors the push constants of shaders/water/ocean_fft.comp.
 struct FftPush {
@@ -58,9 +58,9 @@ fg::BufferHandle add_inverse_fft_passes(fg::FrameGraph& graph, fg::BufferHandle 
                                         uint32_t grid_count) {
     if (!std::has_single_bit(n) || n < kMinPoints || n > kMaxPoints || grid_count == 0 ||
         fft_groups(n, grid_count) > kMaxGroups) {
-        throw InternalError("add_inverse_fft_passes: n = " + std::to_string(n) + ", grid_count = " +
-                            std::to_string(grid_count) + ": accepted n a power of two in [16, 1024], " +
-                            "1 <= grid_count <= 65535 * 1024 / n^2");
+        throw InternalError("add_inverse_fft_passes: n = " + std::to_string(n) +
+                            ", grid_count = " + std::to_string(grid_count) +
+                            ": accepted n a power of two in [16, 1024], " + "1 <= grid_count <= 65535 * 1024 / n^2");
     }
     const uint32_t log2n = static_cast<uint32_t>(std::countr_zero(n));
     const uint32_t lines = n * grid_count;

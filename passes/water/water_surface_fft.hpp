@@ -16,7 +16,6 @@ namespace vkw::passes {
 //   out[r][c] = sum over (b, a) of in[b][a] exp(+2 pi i (a c + b r) / n).
 // n a power of two in [16, 1024] and 1 <= grid_count <= 65535 * 1024 / n^2 (the work groups
 // of one dispatch), or vkw::InternalError. Returns the buffer's version after the columns pass.
-fg::BufferHandle add_inverse_fft_passes(fg::FrameGraph& graph, fg::BufferHandle grids, uint32_t n,
-                                        uint32_t grid_count);
+fg::BufferHandle add_inverse_fft_passes(fg::FrameGraph& graph, fg::BufferHandle grids, uint32_t n, uint32_t grid_count);
 
 }  // namespace vkw::passes

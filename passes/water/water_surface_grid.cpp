@@ -24,13 +24,11 @@ WaterGridPush water_grid_push(const WaterSurfaceInputs& inputs) {
 }
 
 fg::BufferHandle create_water_vertices(fg::PassBuilder& builder, uint32_t grid_resolution) {
-    const fg::BufferHandle vertices =
-        builder.create_buffer("water surface", {water_surface_bytes(grid_resolution)});
+    const fg::BufferHandle vertices = builder.create_buffer("water surface", {water_surface_bytes(grid_resolution)});
     return builder.write_storage(vertices, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
 }
 
-std::vector<WaterGridBand> water_grid_bands(VkDeviceSize max_range, VkDeviceSize alignment,
-                                            uint32_t grid_resolution) {
+std::vector<WaterGridBand> water_grid_bands(VkDeviceSize max_range, VkDeviceSize alignment, uint32_t grid_resolution) {
     const uint32_t rows = grid_resolution + 1;
     const VkDeviceSize row_bytes = VkDeviceSize{rows} * kWaterVertexBytes;
     // Band offsets are multiples of `step` rows, the fewest rows whose bytes are aligned.

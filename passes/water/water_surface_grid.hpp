@@ -40,8 +40,7 @@ struct WaterGridBand {
 // maxStorageBufferRange), rounded down to a multiple of the rows that keep each band's offset
 // aligned to `alignment` (minStorageBufferOffsetAlignment). One band up to R = 2047 on
 // lavapipe (128 MiB).
-std::vector<WaterGridBand> water_grid_bands(VkDeviceSize max_range, VkDeviceSize alignment,
-                                            uint32_t grid_resolution);
+std::vector<WaterGridBand> water_grid_bands(VkDeviceSize max_range, VkDeviceSize alignment, uint32_t grid_resolution);
 // The same for the device that `context` records for.
 std::vector<WaterGridBand> water_grid_bands(const fg::PassContext& context, uint32_t grid_resolution);
 

@@ -71,8 +71,7 @@ fg::BufferHandle add_ocean_passes(fg::FrameGraph& graph, const WaterSurfaceInput
     const FftOceanSpectrum& spectrum = inputs.ocean->spectrum();
     const fg::BufferHandle spectra = add_spectra_pass(graph, inputs);
     const fg::BufferHandle fields = add_inverse_fft_passes(graph, spectra, spectrum.n, kOceanGridCount);
-    const GridPush push{water_grid_push(inputs), spectrum.n,
-                        static_cast<float>(spectrum.n / spectrum.patch_size)};
+    const GridPush push{water_grid_push(inputs), spectrum.n, static_cast<float>(spectrum.n / spectrum.patch_size)};
     return add_water_grid_pass(
         graph, {"water surface (ocean grid)", "water/ocean_grid.comp", "ocean grid", VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
         fields, push);

@@ -39,8 +39,8 @@ fg::ImageHandle add_stencil_pass(fg::FrameGraph& graph, fg::BufferHandle surface
             desc.cull_mode = VK_CULL_MODE_NONE;  // front and back faces both count
             desc.stencil_test = true;
             // Every crossing flips bit 0: its final value is the parity of the crossings.
-            desc.stencil_front = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_INVERT, VK_STENCIL_OP_INVERT,
-                                  VK_COMPARE_OP_ALWAYS, 1, 1, 0};
+            desc.stencil_front = {
+                VK_STENCIL_OP_KEEP, VK_STENCIL_OP_INVERT, VK_STENCIL_OP_INVERT, VK_COMPARE_OP_ALWAYS, 1, 1, 0};
             desc.stencil_back = desc.stencil_front;
             const Pipeline& pipeline = context.pipeline("water volume stencil", desc);
             context.bind(pipeline, {context.uniform_buffer(0, d.constants), context.storage_buffer(2, d.surface)});
@@ -68,8 +68,8 @@ fg::ImageHandle add_mask_pass(fg::FrameGraph& graph, fg::ImageHandle stencil) {
             desc.fragment_shader = "water/camera_medium_mask.frag";
             desc.stencil_test = true;
             // Odd crossing count: the ray starts in the water. Reads the stencil, writes none.
-            desc.stencil_front = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_COMPARE_OP_EQUAL,
-                                  1, 0, 1};
+            desc.stencil_front = {
+                VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_COMPARE_OP_EQUAL, 1, 0, 1};
             desc.stencil_back = desc.stencil_front;
             const Pipeline& pipeline = context.pipeline("camera medium", desc);
             context.bind(pipeline, {});

@@ -109,13 +109,16 @@ TEST_F(caustics_blur, WidthFollowsThePhotonDensity) {
         if (run.unblurred[4 * t] > run.unblurred[4 * lit]) lit = t;
     }
     const int x = int(lit % frame.width), y = int(lit / frame.width);
-    auto blurred = [&](int dx, int dy, int c) { return double(run.irradiance[4 * (size_t(y + dy) * frame.width + x + dx) + c]); };
+    auto blurred = [&](int dx, int dy, int c) {
+        return double(run.irradiance[4 * (size_t(y + dy) * frame.width + x + dx) + c]);
+    };
     for (int c = 0; c < 3; ++c) {
         const double e_flat = in.sun_irradiance[c];
-        std::printf("channel %d: lit texel %.6g E_flat; blurred centre %.6g, edge %.6g, two away %.6g, corner %.6g "
-                    "(x E_flat)\n",
-                    c, run.unblurred[4 * lit + c] / e_flat, blurred(0, 0, c) / e_flat, blurred(1, 0, c) / e_flat,
-                    blurred(2, 0, c) / e_flat, blurred(1, 1, c) / e_flat);
+        std::printf(
+            "channel %d: lit texel %.6g E_flat; blurred centre %.6g, edge %.6g, two away %.6g, corner %.6g "
+            "(x E_flat)\n",
+            c, run.unblurred[4 * lit + c] / e_flat, blurred(0, 0, c) / e_flat, blurred(1, 0, c) / e_flat,
+            blurred(2, 0, c) / e_flat, blurred(1, 1, c) / e_flat);
         // The lit texels hold 9 E_flat to the fixed point's and fp32's rounding; the weights come
         // out of a sqrt and two divisions of those: 1e-5 relative bounds all of it.
         EXPECT_NEAR(run.unblurred[4 * lit + c] / (9.0 * e_flat), 1.0, 1e-5);

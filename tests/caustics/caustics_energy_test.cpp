@@ -56,32 +56,33 @@ TEST_F(caustics_energy, DepositedFluxEqualsSection4Integral) {
     // Every splat kernel: the adaptive and footprint ones' taps are split by cumulative rounding,
     // so they must deposit exactly what the bilinear one does.
     for (const CausticKernel kernel : {CausticKernel::Bilinear, CausticKernel::Adaptive, CausticKernel::Footprint}) {
-    for (const double zenith : {0.0, 60.0}) {
-        for (const double slope : {0.1, 0.3}) {
-            const passes::WaterSurfaceInputs surface = sine_surface(slope, 512);
-            passes::CausticInputs in = sine_caustics(surface, zenith);
-            in.kernel = kernel;
-            const CausticRun run = run_caustics(context(), surface, in);
-            const passes::CausticMapFrame frame = passes::fit_caustic_map(in);
-            const WaveSumSurface cpu(surface.waves, surface.level, surface.time);
-            const glm::dvec3 expected = section4_flux(cpu, in, 200000);
-            const glm::dvec3 got = deposited(run, frame, false);
-            EXPECT_EQ(run.lost(0) + run.lost(1) + run.lost(2), 0u) << "photons fell off the map";
-            for (int c = 0; c < 3; ++c) {
-                const double error = std::abs(got[c] / expected[c] - 1.0);
-                worst = std::max(worst, error / 0.005);
-                EXPECT_LE(error, 0.005) << "kernel " << int(kernel) << " zenith " << zenith << " slope " << slope
-                                        << " channel " << c;
+        for (const double zenith : {0.0, 60.0}) {
+            for (const double slope : {0.1, 0.3}) {
+                const passes::WaterSurfaceInputs surface = sine_surface(slope, 512);
+                passes::CausticInputs in = sine_caustics(surface, zenith);
+                in.kernel = kernel;
+                const CausticRun run = run_caustics(context(), surface, in);
+                const passes::CausticMapFrame frame = passes::fit_caustic_map(in);
+                const WaveSumSurface cpu(surface.waves, surface.level, surface.time);
+                const glm::dvec3 expected = section4_flux(cpu, in, 200000);
+                const glm::dvec3 got = deposited(run, frame, false);
+                EXPECT_EQ(run.lost(0) + run.lost(1) + run.lost(2), 0u) << "photons fell off the map";
+                for (int c = 0; c < 3; ++c) {
+                    const double error = std::abs(got[c] / expected[c] - 1.0);
+                    worst = std::max(worst, error / 0.005);
+                    EXPECT_LE(error, 0.005)
+                        << "kernel " << int(kernel) << " zenith " << zenith << " slope " << slope << " channel " << c;
+                }
+                std::printf(
+                    "%s zenith %4.1f slope %.1f: deposited %.7g %.7g %.7g W, section 4 %.7g %.7g %.7g W, "
+                    "relative error %.2e %.2e %.2e\n",
+                    kernel == CausticKernel::Adaptive    ? "adaptive"
+                    : kernel == CausticKernel::Footprint ? "footprint"
+                                                         : "bilinear",
+                    zenith, slope, got.x, got.y, got.z, expected.x, expected.y, expected.z, got.x / expected.x - 1.0,
+                    got.y / expected.y - 1.0, got.z / expected.z - 1.0);
             }
-            std::printf("%s zenith %4.1f slope %.1f: deposited %.7g %.7g %.7g W, section 4 %.7g %.7g %.7g W, "
-                        "relative error %.2e %.2e %.2e\n",
-                        kernel == CausticKernel::Adaptive    ? "adaptive"
-                        : kernel == CausticKernel::Footprint ? "footprint"
-                                                             : "bilinear",
-                        zenith, slope, got.x, got.y, got.z, expected.x, expected.y, expected.z,
-                        got.x / expected.x - 1.0, got.y / expected.y - 1.0, got.z / expected.z - 1.0);
         }
-    }
     }
     std::printf("worst error / 0.5%%: %.4f\n", worst);
 }
@@ -117,8 +118,8 @@ TEST_F(caustics_energy, GrazingSunStaysFiniteAndBounded) {
             if (!frame.sun_up) {
                 EXPECT_EQ(got.x + got.y + got.z, 0.0) << "the sun is not up";
             }
-            std::printf("zenith %4.1f slope %.1f: deposited %.5g W of %.5g W intercepted (ratio %.4f)\n", zenith,
-                        slope, got.x, incoming.x, incoming.x > 0.0 ? got.x / incoming.x : 0.0);
+            std::printf("zenith %4.1f slope %.1f: deposited %.5g W of %.5g W intercepted (ratio %.4f)\n", zenith, slope,
+                        got.x, incoming.x, incoming.x > 0.0 ? got.x / incoming.x : 0.0);
         }
     }
 }

@@ -40,7 +40,9 @@ using caustics_flat = GpuTest;
 // the map's middle on both axes (away from the water's edge, whatever border the kernel adds).
 std::pair<double, double> interior_range(const CausticRun& run, const passes::CausticMapFrame& frame, int c,
                                          double reach) {
-    auto inside = [&](uint32_t i, double corner, double texel) { return std::abs(corner + (i + 0.5) * texel) <= reach; };
+    auto inside = [&](uint32_t i, double corner, double texel) {
+        return std::abs(corner + (i + 0.5) * texel) <= reach;
+    };
     double lo = 1e300, hi = 0.0;
     for (uint32_t y = 0; y < frame.height; ++y) {
         if (!inside(y, frame.corner.y, frame.texel.y)) continue;
@@ -123,36 +125,35 @@ TEST_F(caustics_flat, FloorIrradianceMatchesSection3) {
 // texel, so both must be exactly as uniform as the bilinear one.
 TEST_F(caustics_flat, RefractionFreeMapIsUniform) {
     for (const CausticKernel kernel : {CausticKernel::Bilinear, CausticKernel::Adaptive, CausticKernel::Footprint})
-    for (const uint32_t sub : {1u, 2u}) {
-        passes::CausticInputs in = flat_caustics(0.0, 1.0);
-        in.sigma_t = glm::dvec3(0.0);
-        in.sub_photons = sub;
-        in.kernel = kernel;
-        const CausticRun run = run_caustics(context(), flat_surface(), in);
-        const passes::CausticMapFrame frame = passes::fit_caustic_map(in);
-        // Interior: texel centres within E - 1.5 texels (the bilinear map's texels 2 .. W - 3),
-        // away from the border and the partly covered edge.
-        for (int c = 0; c < 3; ++c) {
-            const auto [lo, hi] = interior_range(run, frame, c, kE - 1.5 * frame.texel.x);
-            // Bound, relative: max(LSB x deposits per texel, 2^-24 max|coordinate| / texel size),
-            // both with their counts. A texel gathers at most (2 S - 1 + 1)^2 = 4 S^2 taps, each
-            // rounded by at most 1 LSB = 1e-9 of the flat texel flux. A photon's coordinate is off
-            // by at most 8 u max|coordinate| / texel texels (as in FloorIrradianceMatchesSection3),
-            // moving the taps of at most 4 S^2 photons of flux 1/S^2 each by twice that; the
-            // photons' own fluxes differ by the rounding of their area and products, 16 u.
-            const double lsb_term = 4.0 * sub * sub * 1e-9;
-            const double coord = 2.0 * kE + 2.0 * frame.texel.x;
-            const double coord_term = 8.0 * (8.0 * kUnit * coord / frame.texel.x) + 16.0 * kUnit;
-            const double bound = std::max(lsb_term, coord_term);
-            const double spread = (hi - lo) / hi;
-            std::printf("S = %u channel %d: E in [%.9g, %.9g] (E_s %.3g), spread %.3e, bound %.3e (ratio %.4f)\n",
-                        sub, c, lo, hi, in.sun_irradiance[c], spread, bound, spread / bound);
-            EXPECT_LE(spread, bound) << "S = " << sub << " channel " << c;
-            EXPECT_NEAR(hi / in.sun_irradiance[c], 1.0, bound);
+        for (const uint32_t sub : {1u, 2u}) {
+            passes::CausticInputs in = flat_caustics(0.0, 1.0);
+            in.sigma_t = glm::dvec3(0.0);
+            in.sub_photons = sub;
+            in.kernel = kernel;
+            const CausticRun run = run_caustics(context(), flat_surface(), in);
+            const passes::CausticMapFrame frame = passes::fit_caustic_map(in);
+            // Interior: texel centres within E - 1.5 texels (the bilinear map's texels 2 .. W - 3),
+            // away from the border and the partly covered edge.
+            for (int c = 0; c < 3; ++c) {
+                const auto [lo, hi] = interior_range(run, frame, c, kE - 1.5 * frame.texel.x);
+                // Bound, relative: max(LSB x deposits per texel, 2^-24 max|coordinate| / texel size),
+                // both with their counts. A texel gathers at most (2 S - 1 + 1)^2 = 4 S^2 taps, each
+                // rounded by at most 1 LSB = 1e-9 of the flat texel flux. A photon's coordinate is off
+                // by at most 8 u max|coordinate| / texel texels (as in FloorIrradianceMatchesSection3),
+                // moving the taps of at most 4 S^2 photons of flux 1/S^2 each by twice that; the
+                // photons' own fluxes differ by the rounding of their area and products, 16 u.
+                const double lsb_term = 4.0 * sub * sub * 1e-9;
+                const double coord = 2.0 * kE + 2.0 * frame.texel.x;
+                const double coord_term = 8.0 * (8.0 * kUnit * coord / frame.texel.x) + 16.0 * kUnit;
+                const double bound = std::max(lsb_term, coord_term);
+                const double spread = (hi - lo) / hi;
+                std::printf("S = %u channel %d: E in [%.9g, %.9g] (E_s %.3g), spread %.3e, bound %.3e (ratio %.4f)\n",
+                            sub, c, lo, hi, in.sun_irradiance[c], spread, bound, spread / bound);
+                EXPECT_LE(spread, bound) << "S = " << sub << " channel " << c;
+                EXPECT_NEAR(hi / in.sun_irradiance[c], 1.0, bound);
+            }
         }
-    }
 }
-
 
 // (c) Sparse photons: 16 cells on a 64-texel map, n = 1, vertical sun: photons land 4 texels
 // apart. The adaptive kernel sizes its tent from the neighbours' spacing, half-width 4 texels,
@@ -177,8 +178,8 @@ TEST_F(caustics_flat, AdaptiveKernelFillsBetweenSparsePhotons) {
             const auto [lo, hi] = interior_range(run, frame, c, kE - 1.0);
             const double spread = (hi - lo) / std::max(hi, 1e-300);
             if (kernel == CausticKernel::Bilinear) {
-                std::printf("bilinear channel %d: E in [%.6g, %.6g], spread %.3f (holes between photons)\n", c, lo,
-                            hi, spread);
+                std::printf("bilinear channel %d: E in [%.6g, %.6g], spread %.3f (holes between photons)\n", c, lo, hi,
+                            spread);
                 EXPECT_GT(spread, 0.5) << "the bilinear kernel should leave texels between sparse photons empty";
                 continue;
             }

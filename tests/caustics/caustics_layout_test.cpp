@@ -15,9 +15,9 @@ namespace {
 constexpr VkDeviceSize kRange = VkDeviceSize{128} << 20, kAlignment = 16;
 
 TEST(caustics_layout, BasisIsFiniteAndOrthonormalForEverySun) {
-    for (const glm::dvec3 s : {glm::dvec3(0, -1, 0), glm::dvec3(0, -1, -0.0), glm::dvec3(0, 1, 0),
-                               glm::normalize(glm::dvec3(1, -1, 0)), glm::normalize(glm::dvec3(0.3, -1, -1e-12)),
-                               glm::normalize(glm::dvec3(0, 0, -1))}) {
+    for (const glm::dvec3 s :
+         {glm::dvec3(0, -1, 0), glm::dvec3(0, -1, -0.0), glm::dvec3(0, 1, 0), glm::normalize(glm::dvec3(1, -1, 0)),
+          glm::normalize(glm::dvec3(0.3, -1, -1e-12)), glm::normalize(glm::dvec3(0, 0, -1))}) {
         glm::dvec3 u, v;
         passes::branchless_basis(s, u, v);
         EXPECT_NEAR(glm::length(u), 1.0, 1e-14);

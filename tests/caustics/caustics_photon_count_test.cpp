@@ -63,18 +63,20 @@ TEST_F(caustics_photon_count, MeanFloorIrradianceIndependentOfPhotonCount) {
         if (grid == grids.front()) {
             // The continuous window mean, from the tent-filtered CPU profile (the map's kernel);
             // 2^14 segments per wavelength leave 8192 per texel of lambda/2: error below 1e-7.
-            const auto tent = sine_floor_profile(sine, -scene.half_extent, scene.half_extent, columns.corner,
-                                                 columns.h, columns.count, TexelFilter::Tent, 1 << 14);
+            const auto tent = sine_floor_profile(sine, -scene.half_extent, scene.half_extent, columns.corner, columns.h,
+                                                 columns.count, TexelFilter::Tent, 1 << 14);
             for (int i = window.first; i <= window.last; ++i) exact += tent[i] / double(texels);
         }
         const CausticRun run = run_caustics(context(), scene.surface(), in);
         glm::dvec3 mean(0.0), bound(0.0);
         std::vector<double> row;
         for (int c = 0; c < 3; ++c) {
-            for (int i = window.first; i <= window.last; ++i) mean[c] += map_column_mean(run, frame, i, c, scene.half_extent) / texels;
+            for (int i = window.first; i <= window.last; ++i)
+                mean[c] += map_column_mean(run, frame, i, c, scene.half_extent) / texels;
             bound[c] = mean_error_bound(scene, sine, columns, texels, exact[c], c);
         }
-        for (int i = window.first; i <= window.last; ++i) row.push_back(map_column_mean(run, frame, i, 1, scene.half_extent));
+        for (int i = window.first; i <= window.last; ++i)
+            row.push_back(map_column_mean(run, frame, i, 1, scene.half_extent));
         means.push_back(mean);
         bounds.push_back(bound);
         green_rows.push_back(row);
@@ -88,10 +90,10 @@ TEST_F(caustics_photon_count, MeanFloorIrradianceIndependentOfPhotonCount) {
         for (int c = 0; c < 3; ++c) {
             const double change = means[k][c] / means.back()[c] - 1.0;
             const double derived = bounds[k][c] + bounds.back()[c];
-            std::printf("%4u^2 photons, channel %d: mean %.6f (CPU %.6f, %+.2e), change from 1024^2 %+.3e "
-                        "(derived bound %.2e, issue %.1e)\n",
-                        grids[k], c, means[k][c], exact[c], means[k][c] / exact[c] - 1.0, change, derived,
-                        kIssueMeanChange);
+            std::printf(
+                "%4u^2 photons, channel %d: mean %.6f (CPU %.6f, %+.2e), change from 1024^2 %+.3e "
+                "(derived bound %.2e, issue %.1e)\n",
+                grids[k], c, means[k][c], exact[c], means[k][c] / exact[c] - 1.0, change, derived, kIssueMeanChange);
             EXPECT_LE(std::abs(change), kIssueMeanChange) << grids[k] << "^2 photons, channel " << c;
             EXPECT_LE(std::abs(means[k][c] / exact[c] - 1.0), bounds[k][c]) << grids[k] << "^2 photons, channel " << c;
         }

@@ -35,7 +35,8 @@ TEST_F(caustics_receivers, TiltedPlaneAndSphereUnderFlatWaterMatchSection3) {
         {"type": "sphere", "radius": 0.5, "translation": [-0.6, -1.3, -0.4]},
         {"type": "plane", "half_size": [0.5, 0.5], "translation": [0.9, -1.7, 0.6], "rotation_deg": [25, 0, 30]}
       ]
-    })", "receivers.json");
+    })",
+                                    "receivers.json");
     const passes::ReceiverMeshes meshes(context(), scene.receivers);
 
     passes::WaterSurfaceInputs surface;
@@ -72,8 +73,10 @@ TEST_F(caustics_receivers, TiltedPlaneAndSphereUnderFlatWaterMatchSection3) {
         const glm::dvec3 d = glm::dvec3(v) - c0;
         const double len = glm::length(d);
         if (len < 1e-9) continue;
-        if (glm::length(edge_a) < 1e-9) edge_a = d;
-        else if (std::abs(glm::dot(glm::normalize(d), glm::normalize(edge_a))) < 1e-6) edge_b = d;
+        if (glm::length(edge_a) < 1e-9)
+            edge_a = d;
+        else if (std::abs(glm::dot(glm::normalize(d), glm::normalize(edge_a))) < 1e-6)
+            edge_b = d;
     }
     ASSERT_GT(glm::length(edge_b), 0.5) << "the plane's corners";
     const double inset = 3.0 * frame.texel.x / 0.25 / glm::length(edge_a);  // 3 texels along the plane, as a fraction
@@ -112,14 +115,14 @@ TEST_F(caustics_receivers, TiltedPlaneAndSphereUnderFlatWaterMatchSection3) {
 
     double plane_worst = 0.0;
     for (uint32_t k = 0; k < probes.count_x * probes.count_z; ++k) {
-        const glm::dvec3 p = probes.corner + double(k % probes.count_x) * probes.step_x +
-                             double(k / probes.count_x) * probes.step_z;
+        const glm::dvec3 p =
+            probes.corner + double(k % probes.count_x) * probes.step_x + double(k / probes.count_x) * probes.step_z;
         const glm::dvec3 want = expected(p, normal);
         for (int c = 0; c < 3; ++c) {
             const double error = std::abs(run.probes[4 * k + c] / want[c] - 1.0);
             plane_worst = std::max(plane_worst, error);
-            EXPECT_LE(error, plane_tolerance) << "plane probe " << k << " channel " << c << ": "
-                                              << run.probes[4 * k + c] << " vs " << want[c];
+            EXPECT_LE(error, plane_tolerance)
+                << "plane probe " << k << " channel " << c << ": " << run.probes[4 * k + c] << " vs " << want[c];
         }
     }
 
@@ -137,7 +140,8 @@ TEST_F(caustics_receivers, TiltedPlaneAndSphereUnderFlatWaterMatchSection3) {
     for (int i = 0; i < 40; ++i) {
         for (int j = 0; j < 80; ++j) {
             const double polar = 3.14159265358979 * (i + 0.5) / 40.0, azimuth = 2.0 * 3.14159265358979 * j / 80.0;
-            const glm::dvec3 n(std::sin(polar) * std::cos(azimuth), std::cos(polar), std::sin(polar) * std::sin(azimuth));
+            const glm::dvec3 n(std::sin(polar) * std::cos(azimuth), std::cos(polar),
+                               std::sin(polar) * std::sin(azimuth));
             // Facing the beam (-t.N >= 0.25), and far enough inside the sphere's outline in the map
             // that the bilinear lookup's four texels all hold photons that hit the sphere: a point
             // at sin(phi) = -t.N lies r (1 - cos(phi)) inside the outline, and the taps reach 1.5
@@ -145,7 +149,8 @@ TEST_F(caustics_receivers, TiltedPlaneAndSphereUnderFlatWaterMatchSection3) {
             // r = 0.5 m and 3.125 cm texels that is -t.N >= 0.48: the band between the terminator and
             // it is the documented edge band of a light-space map.
             const double facing = -glm::dot(t, n);
-            if (facing < 0.25 || kSphereRadius * (1.0 - std::sqrt(1.0 - facing * facing)) < 2.0 * frame.texel.x) continue;
+            if (facing < 0.25 || kSphereRadius * (1.0 - std::sqrt(1.0 - facing * facing)) < 2.0 * frame.texel.x)
+                continue;
             const glm::dvec3 p = kSphereCentre + kSphereRadius * n;
             const glm::dvec3 want = expected(p, n);
             ++checked;
@@ -159,9 +164,10 @@ TEST_F(caustics_receivers, TiltedPlaneAndSphereUnderFlatWaterMatchSection3) {
         }
     }
     EXPECT_GT(checked, 500);
-    std::printf("[ figures  ] plane: worst relative error %.2e (tolerance %.2e); sphere: %d points, worst %.2e "
-                "(tolerance %.2e)\n",
-                plane_worst, plane_tolerance, checked, sphere_worst, sphere_tolerance);
+    std::printf(
+        "[ figures  ] plane: worst relative error %.2e (tolerance %.2e); sphere: %d points, worst %.2e "
+        "(tolerance %.2e)\n",
+        plane_worst, plane_tolerance, checked, sphere_worst, sphere_tolerance);
 }
 
 }  // namespace

@@ -39,7 +39,11 @@ namespace {
 constexpr double kIssueL1 = 0.02;
 
 SineCausticScene profile_scene(double depth_factor) {
-    return {.half_extent = 0.5, .grid = 512, .sub_photons = 4, .texels_x = 128, .texels_z = 8,
+    return {.half_extent = 0.5,
+            .grid = 512,
+            .sub_photons = 4,
+            .texels_x = 128,
+            .texels_z = 8,
             .depth_factor = depth_factor};
 }
 
@@ -62,8 +66,8 @@ double lattice_error_bound(const SineCausticScene& scene, const SineFloor& sine,
     const double shift = sine.interpolated_normal_shift(2.0 * scene.half_extent / scene.grid);
     double moved = 0.0, total = 0.0;
     for (int i = window.first; i <= window.last; ++i) {
-        moved += shift / columns.h *
-                 std::max(std::abs(tent[i + 1][c] - tent[i][c]), std::abs(tent[i][c] - tent[i - 1][c]));
+        moved +=
+            shift / columns.h * std::max(std::abs(tent[i + 1][c] - tent[i][c]), std::abs(tent[i][c] - tent[i - 1][c]));
         total += tent[i][c];
     }
     return 0.5 * delta * delta + moved / total + kSineRounding;
@@ -129,17 +133,19 @@ TEST_P(caustics_sine_profile, FloorRowMatchesSection5) {
         }
         const double l1_box = to_box / box_sum, l1_tent = to_tent / tent_sum;
         const double bound = lattice_error_bound(scene, sine, tent, window, columns, c);
-        std::printf("d = %.2f d* = %.4f m, channel %d: L1 to the box-filtered profile %.3e (issue: %.0e), to the "
-                    "tent-filtered %.3e (bound %.3e); tent vs box filter %.3e\n",
-                    scene.depth_factor, sine.depth, c, l1_box, kIssueL1, l1_tent, bound, filters / box_sum);
+        std::printf(
+            "d = %.2f d* = %.4f m, channel %d: L1 to the box-filtered profile %.3e (issue: %.0e), to the "
+            "tent-filtered %.3e (bound %.3e); tent vs box filter %.3e\n",
+            scene.depth_factor, sine.depth, c, l1_box, kIssueL1, l1_tent, bound, filters / box_sum);
         const double kernel_bias = filters / box_sum;
         // The issue's 2% wherever the one-texel kernel's own bias is below it; where the bias alone
         // exceeds it (the cusp depth) the triangle inequality (header comment).
         const double box_bound = kernel_bias < kIssueL1 ? kIssueL1 : kernel_bias + bound * tent_sum / box_sum;
         if (box_bound > kIssueL1)
-            std::printf("  the issue's 2%% against the box filter is out of reach of a one-texel kernel here "
-                        "(its bias alone is %.3e); asserting the triangle bound %.3e\n",
-                        kernel_bias, box_bound);
+            std::printf(
+                "  the issue's 2%% against the box filter is out of reach of a one-texel kernel here "
+                "(its bias alone is %.3e); asserting the triangle bound %.3e\n",
+                kernel_bias, box_bound);
         EXPECT_LE(l1_box, box_bound) << "channel " << c << ": the tent and box filters of the exact E alone differ by "
                                      << kernel_bias << " (the splat's one-texel kernel; see the header comment)";
         EXPECT_LE(l1_tent, bound) << "channel " << c;
@@ -163,9 +169,10 @@ TEST_P(caustics_sine_profile, FloorRowMatchesSection5) {
             const double curvature = 1.0 - tent[crest][c] / closed[c];
             const double tolerance = curvature + 0.5 * delta_c * delta_c + kSineRounding;
             const double got = map_column_mean(run, frame, crest, c, scene.half_extent);
-            std::printf("crest, channel %d: map %.6f, closed form %.6f (%.4f x flat), error %.3e, tolerance %.3e "
-                        "(curvature %.3e)\n",
-                        c, got, closed[c], 1.0 / stretch, got / closed[c] - 1.0, tolerance, curvature);
+            std::printf(
+                "crest, channel %d: map %.6f, closed form %.6f (%.4f x flat), error %.3e, tolerance %.3e "
+                "(curvature %.3e)\n",
+                c, got, closed[c], 1.0 / stretch, got / closed[c] - 1.0, tolerance, curvature);
             EXPECT_NEAR(got / closed[c], 1.0, tolerance) << "channel " << c;
         }
     }

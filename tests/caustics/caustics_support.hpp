@@ -46,9 +46,8 @@ struct CausticRun {
     uint64_t texel(size_t t, int c) const { return flux[passes::kCausticFluxHeaderBytes / 8 + 3 * t + c]; }
 };
 
-
-inline void add_probe_pass(fg::FrameGraph& graph, const passes::CausticMap& map, const ProbeGrid& grid,
-                           VkBuffer host, VkDeviceSize bytes) {
+inline void add_probe_pass(fg::FrameGraph& graph, const passes::CausticMap& map, const ProbeGrid& grid, VkBuffer host,
+                           VkDeviceSize bytes) {
     struct Push {
         float corner[4], step_x[4], step_z[4], normal[4];
         uint32_t count_x, count_z;
@@ -131,13 +130,14 @@ inline CausticRun run_caustics(Context& context, const passes::WaterSurfaceInput
         caustics.surface = passes::add_water_surface_pass(graph, surface);
         std::optional<passes::SunShadowMap> shadow;
         if (meshes) {
-            shadow = passes::add_sun_shadow_pass(graph, *meshes,
-                                                 caustic_shadow_inputs(caustics, *meshes, floor_half_extent, surface.level));
+            shadow = passes::add_sun_shadow_pass(
+                graph, *meshes, caustic_shadow_inputs(caustics, *meshes, floor_half_extent, surface.level));
         }
         const fg::BufferHandle flux = passes::add_caustic_photon_pass(graph, caustics, shadow ? &*shadow : nullptr);
         passes::CausticMap map = passes::add_caustic_resolve_pass(graph, flux, caustics);
         if (blur_radius >= 0.0) {
-            passes::add_readback_pass(graph, map.irradiance, unblurred_host.handle(), image_bytes, "unblurred readback");
+            passes::add_readback_pass(graph, map.irradiance, unblurred_host.handle(), image_bytes,
+                                      "unblurred readback");
             map = passes::add_caustic_blur_pass(graph, map, caustics, blur_radius);
         }
         passes::add_readback_pass(graph, flux, flux_host.handle(), flux_bytes, "flux readback");

@@ -27,12 +27,12 @@ inline const glm::dvec3 kSineSun{1.0, 2.0, 0.5};
 inline constexpr double kSineRounding = 1e-4;
 
 struct SineCausticScene {
-    double half_extent = 0.5;      // the water spans [-E, E]^2
-    uint32_t grid = 256;           // R cells per side
-    uint32_t sub_photons = 1;      // S x S photons per cell
+    double half_extent = 0.5;              // the water spans [-E, E]^2
+    uint32_t grid = 256;                   // R cells per side
+    uint32_t sub_photons = 1;              // S x S photons per cell
     uint32_t texels_x = 64, texels_z = 8;  // the map's texels over the water (plus a one-texel border)
-    double depth_factor = 1.0;     // the floor at depth_factor d*
-    double phase = 0.0;            // radians
+    double depth_factor = 1.0;             // the floor at depth_factor d*
+    double phase = 0.0;                    // radians
 
     SineFloor cpu() const {
         SineFloor sine;

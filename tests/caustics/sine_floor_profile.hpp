@@ -139,8 +139,8 @@ enum class TexelFilter { Box, Tent };
 
 // A row of `count` texels of width h from `corner` on (texel i spans [corner + i h, corner + (i + 1) h]):
 // the irradiance of the light from the surface [x0, x1], filtered per texel, W m^-2 per channel.
-inline std::vector<glm::dvec3> sine_floor_profile(const SineFloor& sine, double x0, double x1, double corner,
-                                                  double h, int count, TexelFilter filter,
+inline std::vector<glm::dvec3> sine_floor_profile(const SineFloor& sine, double x0, double x1, double corner, double h,
+                                                  int count, TexelFilter filter,
                                                   int segments_per_wavelength = 1 << 16) {
     std::vector<glm::dvec3> texels(count, glm::dvec3(0.0));
     const double wavelength = 2.0 * std::numbers::pi / sine.wavenumber;

@@ -65,7 +65,7 @@ TEST(cli, RenderDefaultSceneWithValidationSucceeds) {
     const fs::path out = scratch("pool.exr");
     fs::remove(out);
     const CommandRun run = run_vkwater("render " + kPool + " --out " + out.string() +
-                                " --width 64 --height 48 --validation --check-finite --png");
+                                       " --width 64 --height 48 --validation --check-finite --png");
     EXPECT_EQ(run.exit_code, 0) << run.output;
     EXPECT_TRUE(fs::exists(out));
     EXPECT_TRUE(fs::exists(fs::path(out).replace_extension(".png")));
@@ -73,7 +73,8 @@ TEST(cli, RenderDefaultSceneWithValidationSucceeds) {
     // Each pass's memory next to its time: the caustic map's flux buffer at least.
     const size_t flux = run.output.find("caustic flux clear");
     ASSERT_NE(flux, std::string::npos) << run.output;
-    EXPECT_NE(run.output.substr(flux, run.output.find('\n', flux) - flux).find("creates"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.substr(flux, run.output.find('\n', flux) - flux).find("creates"), std::string::npos)
+        << run.output;
     EXPECT_NE(run.output.find("wrote " + out.string()), std::string::npos) << run.output;
 }
 
@@ -88,7 +89,7 @@ TEST(cli, CameraSpaceSplatsBeyondOneStorageBindingAreAUserError) {
 
 TEST(cli, RenderPassRecordingWithValidationSucceeds) {
     const CommandRun run = run_vkwater("render " + kPool + " --out " + scratch("rp.exr").string() +
-                                " --width 64 --height 48 --validation --recording renderpass");
+                                       " --width 64 --height 48 --validation --recording renderpass");
     EXPECT_EQ(run.exit_code, 0) << run.output;
 }
 
@@ -122,9 +123,9 @@ TEST(cli, UnknownFlag) {
 }
 
 TEST(cli, UnknownSceneFieldOverride) {
-    expect_clean_failure(run_vkwater("render " + kPool + " --out " + scratch("x.exr").string() +
-                                     " --set camera.fovy=40"),
-                         1, "did you mean");
+    expect_clean_failure(
+        run_vkwater("render " + kPool + " --out " + scratch("x.exr").string() + " --set camera.fovy=40"), 1,
+        "did you mean");
 }
 
 TEST(cli, ImageSizeOutOfRange) {
@@ -133,9 +134,9 @@ TEST(cli, ImageSizeOutOfRange) {
 }
 
 TEST(cli, WaterGridBeyondTheDeviceIsAUserError) {
-    expect_clean_failure(run_vkwater("render " + kPool + " --out " + scratch("x.exr").string() +
-                                     " --set water.grid_resolution=4096"),
-                         1, "water.grid_resolution: 4096 needs");
+    expect_clean_failure(
+        run_vkwater("render " + kPool + " --out " + scratch("x.exr").string() + " --set water.grid_resolution=4096"), 1,
+        "water.grid_resolution: 4096 needs");
 }
 
 TEST(cli, NoVulkanDeviceIsExitTwo) {
@@ -146,15 +147,17 @@ TEST(cli, NoVulkanDeviceIsExitTwo) {
 }
 
 TEST(cli, UnknownDeviceNameListsTheAvailableOnes) {
-    expect_clean_failure(run_vkwater("render " + kPool + " --out " + scratch("x.exr").string() +
-                                     " --device no-such-gpu"),
-                         1, "available:");
+    expect_clean_failure(
+        run_vkwater("render " + kPool + " --out " + scratch("x.exr").string() + " --device no-such-gpu"), 1,
+        "available:");
 }
 
 TEST(cli, CompareAnImageWithItselfGivesZeroErrors) {
     const fs::path image = scratch("compare.exr");
-    ASSERT_EQ(run_vkwater("reference " + std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json --width 32 --height 24 --out " +
-                          image.string()).exit_code, 0);
+    ASSERT_EQ(run_vkwater("reference " + std::string(VKWATER_SOURCE_DIR) +
+                          "/scenes/calm.json --width 32 --height 24 --out " + image.string())
+                  .exit_code,
+              0);
     const CommandRun run = run_vkwater("compare " + image.string() + " " + image.string());
     EXPECT_EQ(run.exit_code, 0) << run.output;
     for (const char* line : {"relMSE 0\n", "FLIP 0\n", "bias 0\n", "L*u*v* 0\n"}) {
@@ -179,9 +182,9 @@ TEST(cli, CompareDownsampledAndCausticLayer) {
     EXPECT_EQ(layered.exit_code, 0) << layered.output;
     EXPECT_NE(layered.output.find("\ncaustic relMSE "), std::string::npos) << layered.output;
     EXPECT_EQ(layered.output.find("caustic relMSE n/a"), std::string::npos) << layered.output;
-    ASSERT_EQ(run_vkwater("render " + calm + " --width 32 --height 24 --no-caustic-layer --out " + render.string())
-                  .exit_code,
-              0);
+    ASSERT_EQ(
+        run_vkwater("render " + calm + " --width 32 --height 24 --no-caustic-layer --out " + render.string()).exit_code,
+        0);
     const CommandRun no_layer = run_vkwater("compare " + render.string() + " " + reference.string());
     EXPECT_EQ(no_layer.exit_code, 0) << no_layer.output;
     EXPECT_NE(no_layer.output.find("\ncaustic relMSE n/a (the test image has no layer 'caustic')\n"), std::string::npos)
@@ -201,9 +204,9 @@ TEST(cli, RenderWithReferencePrintsTimeAndErrorLines) {
     EXPECT_EQ(run.exit_code, 0) << run.output;
     EXPECT_NE(run.output.find("\ntime: "), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("\nerror against " + reference.string() + ": relMSE "), std::string::npos) << run.output;
-    expect_clean_failure(run_vkwater("render " + calm + " --out " + scratch("x.exr").string() +
-                                     " --reference /nonexistent/ref.exr"),
-                         1, "/nonexistent/ref.exr");
+    expect_clean_failure(
+        run_vkwater("render " + calm + " --out " + scratch("x.exr").string() + " --reference /nonexistent/ref.exr"), 1,
+        "/nonexistent/ref.exr");
 }
 
 TEST(cli, BenchSmokeTestWritesCsvAndSvgAndErrorFallsWithTheGrid) {
@@ -218,7 +221,9 @@ TEST(cli, BenchSmokeTestWritesCsvAndSvgAndErrorFallsWithTheGrid) {
                 "components": [{"amplitude": 0.012, "wavelength": 0.5, "direction_deg": 20}]}}
     })";
     const fs::path reference = scratch("bench_ref.exr");
-    ASSERT_EQ(run_vkwater("reference " + scene.string() + " --width 64 --height 48 --out " + reference.string()).exit_code, 0);
+    ASSERT_EQ(
+        run_vkwater("reference " + scene.string() + " --width 64 --height 48 --out " + reference.string()).exit_code,
+        0);
     const fs::path out = scratch("bench_out");
     fs::remove_all(out);
     const CommandRun run = run_vkwater("bench " + scene.string() + " --reference " + reference.string() +
@@ -235,8 +240,8 @@ TEST(cli, BenchSmokeTestWritesCsvAndSvgAndErrorFallsWithTheGrid) {
     while (std::getline(csv, line)) rows.push_back(csv_fields(line));
     ASSERT_EQ(rows.size(), 4u);
     for (const std::vector<std::string>& row : rows) ASSERT_EQ(row.size(), 10u) << row[0];
-    EXPECT_LT(std::stod(rows[2][3]), std::stod(rows[0][3]))
-        << "the richer photon grid did not reduce the error:\n" << run.output;
+    EXPECT_LT(std::stod(rows[2][3]), std::stod(rows[0][3])) << "the richer photon grid did not reduce the error:\n"
+                                                            << run.output;
     for (const std::vector<std::string>& row : rows) {
         EXPECT_GT(std::stod(row[6]), 0.0) << row[0];  // waves: the 4x error is not zero either
         // The real-time frame carries no caustic layer (yet): "n/a"; once it does, a number.
@@ -273,9 +278,9 @@ TEST(cli, BenchSweepsAnySceneFieldOverEveryCombination) {
         "grid_resolution=8 reflection.method=screen_space refraction.max_steps=8",
         "grid_resolution=8 reflection.method=screen_space refraction.max_steps=64"};
     EXPECT_EQ(settings, expected) << run.output;
-    expect_clean_failure(run_vkwater("bench " + box + " --reference " + reference.string() +
-                                     " --sweep effects.reflection.method"),
-                         1, "--sweep 'effects.reflection.method'");
+    expect_clean_failure(
+        run_vkwater("bench " + box + " --reference " + reference.string() + " --sweep effects.reflection.method"), 1,
+        "--sweep 'effects.reflection.method'");
 }
 
 TEST(cli, BenchAlternativesSetSeveralFieldsAtOnce) {
@@ -284,12 +289,15 @@ TEST(cli, BenchAlternativesSetSeveralFieldsAtOnce) {
     const fs::path reference = scratch("bench_alternatives_ref.exr");
     // Any 16x12 image will do as the reference: only the rows' settings are checked.
     ASSERT_EQ(run_vkwater("render " + pool + " --width 16 --height 12 --set water.grid_resolution=8 --out " +
-                          reference.string()).exit_code, 0);
+                          reference.string())
+                  .exit_code,
+              0);
     const fs::path out = scratch("bench_alternatives_out");
     fs::remove_all(out);
     const CommandRun run = run_vkwater("bench " + pool + " --reference " + reference.string() +
                                        " --grids 8 --alternatives 'effects.godrays.mode=off|effects.godrays.mode=on "
-                                       "effects.godrays.grid=4' --frames 1 --out-dir " + out.string());
+                                       "effects.godrays.grid=4' --frames 1 --out-dir " +
+                                       out.string());
     ASSERT_EQ(run.exit_code, 0) << run.output;
     std::ifstream csv(out / "sweep.csv");
     std::string line;
@@ -307,8 +315,8 @@ TEST(cli, BenchAlternativesSetSeveralFieldsAtOnce) {
 TEST(cli, PassesPrintsDecisionsOrderAndMemory) {
     const CommandRun run = run_vkwater("passes " + kPool + " --barriers --dot " + scratch("graph.dot").string());
     EXPECT_EQ(run.exit_code, 0) << run.output;
-    for (const char* needle : {"needs:", "passes, in execution order:", "culled passes:", "transient memory:",
-                               "barriers:", "wrote "}) {
+    for (const char* needle :
+         {"needs:", "passes, in execution order:", "culled passes:", "transient memory:", "barriers:", "wrote "}) {
         EXPECT_NE(run.output.find(needle), std::string::npos) << needle << " missing in:\n" << run.output;
     }
 }

@@ -33,9 +33,12 @@ TEST_P(extreme_camera_height, OnAndNextToTheWaterPlaneStable) {
                   "camera at y = " + std::to_string(y) + " m, sine of slope 0.3");
 }
 
-INSTANTIATE_TEST_SUITE_P(Height, extreme_camera_height, ::testing::Values(0.0, 1e-6, -1e-6), [](const auto& param_info) {
-    return param_info.param == 0.0 ? std::string("on_the_plane") : param_info.param > 0 ? "one_micron_above" : "one_micron_below";
-});
+INSTANTIATE_TEST_SUITE_P(Height, extreme_camera_height, ::testing::Values(0.0, 1e-6, -1e-6),
+                         [](const auto& param_info) {
+                             return param_info.param == 0.0 ? std::string("on_the_plane")
+                                    : param_info.param > 0  ? "one_micron_above"
+                                                            : "one_micron_below";
+                         });
 
 // The frames of a path that cross the surface: those whose near-plane rectangle or eye reaches
 // into the slab of the waves (|y - level| <= A). The real-time renderer takes each pixel's medium
@@ -94,7 +97,8 @@ TEST_F(extreme_camera_path, ThirtyFramesThroughTheSurfaceWithoutFlicker) {
         reference.push_back(mean_radiance(ref));
         ref_crossing.push_back(crosses_the_surface(flat));
         std::printf("frame %2d (y %+.3f m): mean real time %.5f%s, reference %.5f%s\n", frame, y, real_time.back(),
-                    rt_crossing.back() ? " (crossing)" : "", reference.back(), ref_crossing.back() ? " (crossing)" : "");
+                    rt_crossing.back() ? " (crossing)" : "", reference.back(),
+                    ref_crossing.back() ? " (crossing)" : "");
     }
     expect_no_flicker(real_time, rt_crossing, "real time");
     expect_no_flicker(reference, ref_crossing, "reference");
@@ -113,12 +117,13 @@ TEST_F(extreme_camera, UnderwaterLookingAlongTheBeamsTowardTheSunMatchesTheClose
     const double sin_t = std::sin(60.0 * 3.14159265358979323846 / 180.0) / 1.333;
     const double cos_t = std::sqrt(1.0 - sin_t * sin_t);
     char direction[96];
-    std::snprintf(direction, sizeof direction, "camera.direction=[0, %.17g, %.17g]", cos_t, sin_t);  // toward the sun (south, up)
+    std::snprintf(direction, sizeof direction, "camera.direction=[0, %.17g, %.17g]", cos_t,
+                  sin_t);  // toward the sun (south, up)
     Renderer renderer(context());
-    const CaseImages images =
-        expect_stable(context(), renderer,
-                      extreme_scene(joined(kWidePool, {"camera.position=[0, -0.5, -0.5]", "camera.target=null", direction})),
-                      "under the water looking along the beams toward the sun");
+    const CaseImages images = expect_stable(
+        context(), renderer,
+        extreme_scene(joined(kWidePool, {"camera.position=[0, -0.5, -0.5]", "camera.target=null", direction})),
+        "under the water looking along the beams toward the sun");
     expect_closed_form(images, "looking along the beams");
 }
 

@@ -9,7 +9,8 @@ namespace {
 // sigma_a = sigma_s = sigma_t / 2 in every channel (half the extinction scatters), g = 0.9.
 std::string medium_with_sigma_t(double sigma_t) {
     char text[320];
-    std::snprintf(text, sizeof text, R"(medium={"sigma_a": [%.17g, %.17g, %.17g], "sigma_s": [%.17g, %.17g, %.17g], "g": 0.9})",
+    std::snprintf(text, sizeof text,
+                  R"(medium={"sigma_a": [%.17g, %.17g, %.17g], "sigma_s": [%.17g, %.17g, %.17g], "g": 0.9})",
                   sigma_t / 2, sigma_t / 2, sigma_t / 2, sigma_t / 2, sigma_t / 2, sigma_t / 2);
     return text;
 }
@@ -19,7 +20,8 @@ class extreme_sigma_t : public GpuTest, public ::testing::WithParamInterface<dou
 TEST_P(extreme_sigma_t, FlatWaterStableAndEqualToTheClosedForm) {
     const std::string what = "sigma_t " + std::to_string(GetParam()) + " /m, flat water";
     Renderer renderer(context());
-    expect_closed_form(expect_stable(context(), renderer, extreme_scene({medium_with_sigma_t(GetParam())}), what), what);
+    expect_closed_form(expect_stable(context(), renderer, extreme_scene({medium_with_sigma_t(GetParam())}), what),
+                       what);
 }
 
 TEST_P(extreme_sigma_t, WavyWaterStable) {

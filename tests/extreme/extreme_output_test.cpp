@@ -48,8 +48,9 @@ TEST_F(extreme_output, MillionCausticPeakInAHalfFloatExr) {
         const float v = image.rgba[i], h = back.rgba[i];
         // Beyond 65504: exactly 65504. Below: rounded to the nearest half, 2^-11 relative for
         // normal halves (|v| >= 2^-14), 2^-25 absolute (half a subnormal step) below.
-        const bool ok = std::fabs(v) > 65504.0f ? h == 65504.0f
-                                                : std::fabs(h - v) <= std::max(std::ldexp(std::fabs(v), -11), std::ldexp(1.0f, -25));
+        const bool ok = std::fabs(v) > 65504.0f
+                            ? h == 65504.0f
+                            : std::fabs(h - v) <= std::max(std::ldexp(std::fabs(v), -11), std::ldexp(1.0f, -25));
         wrong += !ok;
     }
     EXPECT_EQ(wrong, 0u);
@@ -87,7 +88,8 @@ FrameOutput nan_then_readback(VkBuffer readback) {
 }
 
 TEST_F(extreme_output, InjectedNanIsNamedByPassResourceAndTexel) {
-    Buffer readback(context(), {VkDeviceSize{kExtremeWidth} * kExtremeHeight * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
+    Buffer readback(context(),
+                    {VkDeviceSize{kExtremeWidth} * kExtremeHeight * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
                     "HDR readback");
     const Scene scene = extreme_scene();
     const FrameOutput output = nan_then_readback(readback.handle());

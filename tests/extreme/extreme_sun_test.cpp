@@ -49,7 +49,8 @@ constexpr double kFlatWaterFactor = 1.05;
 TEST_F(extreme_sun_continuity, ImagesMoveSmoothlyWithTheSunsAngle) {
     Renderer renderer(context());
     auto scene = [](double zenith) { return extreme_scene({sun_at_zenith(zenith)}); };
-    for (const double p : {30.0, 85.0}) expect_continuous("sun zenith angle (deg)", renderer, scene, p, 1.0, kFlatWaterFactor);
+    for (const double p : {30.0, 85.0})
+        expect_continuous("sun zenith angle (deg)", renderer, scene, p, 1.0, kFlatWaterFactor);
 }
 
 // Under a sine of slope 0.3 the floor's sunlight is the caustic map: the real-time one is the true

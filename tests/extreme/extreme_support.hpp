@@ -6,9 +6,9 @@
 // Every suite's name starts with "extreme_", so `ctest -R extreme` selects exactly these tests.
 #pragma once
 
-#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/water/surface.hpp"
+#include "passes/frame/renderer.hpp"
 #include "tests/caustics/caustics_support.hpp"
 #include "tools/metrics/metrics.hpp"
 #include "tools/reference/floor_caustics.hpp"
@@ -140,7 +140,8 @@ inline double rel_mse(const ImageRGBA32F& test, const ImageRGBA32F& reference) {
 
 inline double mean_radiance(const ImageRGBA32F& image) {
     double sum = 0.0;
-    for (size_t p = 0; p < image.pixel_count(); ++p) sum += image.rgba[4 * p] + image.rgba[4 * p + 1] + image.rgba[4 * p + 2];
+    for (size_t p = 0; p < image.pixel_count(); ++p)
+        sum += image.rgba[4 * p] + image.rgba[4 * p + 1] + image.rgba[4 * p + 2];
     return sum / (3.0 * image.pixel_count());
 }
 
@@ -173,10 +174,11 @@ inline void expect_continuous(const std::string& what, Renderer& renderer, const
     const Continuity rt = continuity([&](double x) { return render_real_time(renderer, scene_at(x)); }, p, delta);
     const Continuity ref = continuity([&](double x) { return render_reference(scene_at(x)); }, p, delta);
     const double c = ref.rms_delta / std::abs(delta);
-    std::printf("%s at %g, delta %g: real time RMS %.4e / %.4e (ratio %.3f), reference %.4e / %.4e (ratio %.3f), "
-                "C = %.4e, RMS_rt / (C |delta|) = %.4f (limit %.2f)\n",
-                what.c_str(), p, delta, rt.rms_delta, rt.rms_half, rt.ratio(), ref.rms_delta, ref.rms_half,
-                ref.ratio(), c, rt.rms_delta / (c * std::abs(delta)), factor);
+    std::printf(
+        "%s at %g, delta %g: real time RMS %.4e / %.4e (ratio %.3f), reference %.4e / %.4e (ratio %.3f), "
+        "C = %.4e, RMS_rt / (C |delta|) = %.4f (limit %.2f)\n",
+        what.c_str(), p, delta, rt.rms_delta, rt.rms_half, rt.ratio(), ref.rms_delta, ref.rms_half, ref.ratio(), c,
+        rt.rms_delta / (c * std::abs(delta)), factor);
     EXPECT_GE(rt.ratio(), kContinuityRatioLow) << what;
     EXPECT_LE(rt.ratio(), kContinuityRatioHigh) << what;
     EXPECT_GE(ref.ratio(), kContinuityRatioLow) << what << " (reference)";
@@ -204,8 +206,8 @@ inline passes::CausticInputs scene_caustic_inputs(const Scene& scene) {
 // The caustic passes of `scene` alone, with the flux buffer and the resolved map read back.
 inline CausticRun run_scene_caustics(Context& context, const Scene& scene) {
     const Water& water = *scene.water;
-    const passes::WaterSurfaceInputs surface{water.level, water.half_extent, water.grid_resolution, water.time,
-                                             water.waves, nullptr};
+    const passes::WaterSurfaceInputs surface{water.level, water.half_extent, water.grid_resolution,
+                                             water.time,  water.waves,       nullptr};
     return run_caustics(context, surface, scene_caustic_inputs(scene));
 }
 
@@ -231,13 +233,15 @@ inline glm::dvec3 intercepted_flux(const Scene& scene) {
     const auto surface = make_surface(water.waves, water.level, water.time);
     const uint32_t r = water.grid_resolution;
     auto vertex = [&](uint32_t i, uint32_t j) {
-        return surface->at_parameter(water.half_extent * (2.0 * i - r) / r, water.half_extent * (2.0 * j - r) / r).position;
+        return surface->at_parameter(water.half_extent * (2.0 * i - r) / r, water.half_extent * (2.0 * j - r) / r)
+            .position;
     };
     double sum = 0.0;
     if (scene.sun.direction.y >= 0.0) return glm::dvec3(0.0);
     for (uint32_t j = 0; j < r; ++j) {
         for (uint32_t i = 0; i < r; ++i) {
-            const glm::dvec3 area = 0.5 * glm::cross(vertex(i, j + 1) - vertex(i + 1, j), vertex(i + 1, j + 1) - vertex(i, j));
+            const glm::dvec3 area =
+                0.5 * glm::cross(vertex(i, j + 1) - vertex(i + 1, j), vertex(i + 1, j + 1) - vertex(i, j));
             sum += std::max(0.0, -glm::dot(scene.sun.direction, area));
         }
     }
@@ -281,11 +285,12 @@ inline void expect_reference_flux_bounded(const Scene& scene, const ref::WaterTr
     const auto surface = make_surface(scene.water->waves, scene.water->level, scene.water->time);
     double shortest = std::numeric_limits<double>::infinity();
     for (const WaveComponent& wave : scene.water->waves.components) shortest = std::min(shortest, wave.wavelength);
-    const auto cells =
-        static_cast<uint32_t>(std::ceil(2.0 * scene.water->half_extent / shortest * 2.0 * quality.cells_per_wavelength));
+    const auto cells = static_cast<uint32_t>(
+        std::ceil(2.0 * scene.water->half_extent / shortest * 2.0 * quality.cells_per_wavelength));
     const ref::FloorCausticMap map(scene, *surface, quality.floor_texels, cells);
     size_t bad = 0;
-    for (const glm::dvec3& e : map.texels()) bad += !(std::isfinite(e.x + e.y + e.z) && e.x >= 0 && e.y >= 0 && e.z >= 0);
+    for (const glm::dvec3& e : map.texels())
+        bad += !(std::isfinite(e.x + e.y + e.z) && e.x >= 0 && e.y >= 0 && e.z >= 0);
     EXPECT_EQ(bad, 0u) << what << ": non-finite or negative reference floor irradiance";
     const glm::dvec3 got = map.total_flux(), bound = slab_flux(scene);
     for (int c = 0; c < 3; ++c) {

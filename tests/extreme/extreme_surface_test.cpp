@@ -13,8 +13,9 @@ using extreme_surface = GpuTest;
 TEST_F(extreme_surface, IndexOneStableAndEqualToTheClosedForm) {
     // The wide pool: unbent, the view rays reach the floor up to 3.5 m north of the origin.
     Renderer renderer(context());
-    expect_closed_form(expect_stable(context(), renderer, extreme_scene(joined(kWidePool, {"water.ior=1"})), "n = 1, flat water"),
-                       "n = 1, flat water");
+    expect_closed_form(
+        expect_stable(context(), renderer, extreme_scene(joined(kWidePool, {"water.ior=1"})), "n = 1, flat water"),
+        "n = 1, flat water");
     expect_stable(context(), renderer, extreme_scene({"water.ior=1", sine_waves(0.3)}), "n = 1, sine of slope 0.3");
 }
 
@@ -27,10 +28,11 @@ const std::vector<std::string> kFromBelow = {"camera.position=[0, -0.5, 1]", "ca
 TEST_F(extreme_surface, TotalInternalReflectionFromBelowStableAndEqualToTheClosedForm) {
     Renderer renderer(context());
     // The wide pool: the reflected rays come down up to 6 m further north.
-    expect_closed_form(expect_stable(context(), renderer, extreme_scene(joined(kWidePool, kFromBelow)),
-                                     "TIR from below, flat water"),
-                       "TIR from below, flat water");
-    expect_stable(context(), renderer, extreme_scene(joined(kFromBelow, {sine_waves(0.3)})), "TIR from below, sine of slope 0.3");
+    expect_closed_form(
+        expect_stable(context(), renderer, extreme_scene(joined(kWidePool, kFromBelow)), "TIR from below, flat water"),
+        "TIR from below, flat water");
+    expect_stable(context(), renderer, extreme_scene(joined(kFromBelow, {sine_waves(0.3)})),
+                  "TIR from below, sine of slope 0.3");
 }
 
 class extreme_steep : public GpuTest, public ::testing::WithParamInterface<double> {};
@@ -63,10 +65,11 @@ TEST_F(extreme_surface, ZeroAreaCellsAtAGerstnerCuspStable) {
     // either side of that vertex have their area go to 0, and the normal is undefined. Phase 90
     // puts the cusp on the grid vertex x0 = 0 (the 32-cell grid's middle column).
     Renderer renderer(context());
-    expect_stable(context(), renderer,
-                  extreme_scene({R"(water.waves={"model":"sum","components":[)"
-                                 R"({"amplitude":0.0795774715459477,"wavelength":0.5,"steepness":1,"phase_deg":90}]})"}),
-                  "Gerstner cusp on a grid vertex (zero-area cells)", kFoldingQuality);
+    expect_stable(
+        context(), renderer,
+        extreme_scene({R"(water.waves={"model":"sum","components":[)"
+                       R"({"amplitude":0.0795774715459477,"wavelength":0.5,"steepness":1,"phase_deg":90}]})"}),
+        "Gerstner cusp on a grid vertex (zero-area cells)", kFoldingQuality);
 }
 
 using extreme_surface_continuity = GpuTest;

@@ -66,9 +66,8 @@ constexpr uint64_t kImageBytes = 64 * 64 * 16;
 TEST(framegraph_aliasing, ChainOfThreeTransientsUsesTwoSlots) {
     FrameGraph graph;
     ImageHandle a, b, c;
-    add_pass(graph, "make_a", PassKind::Compute, [&](PassBuilder& builder) {
-        a = builder.write_storage(builder.create_image("a", small_image()));
-    });
+    add_pass(graph, "make_a", PassKind::Compute,
+             [&](PassBuilder& builder) { a = builder.write_storage(builder.create_image("a", small_image())); });
     add_pass(graph, "make_b", PassKind::Graphics, [&](PassBuilder& builder) {
         builder.sample(a);
         b = builder.color_attachment(builder.create_image("b", small_image()));
@@ -109,7 +108,8 @@ TEST(framegraph_aliasing, ReuseWaitsForEveryPredecessorsWrites) {
     const CompiledGraph& compiled = graph.compile(64, 64);
     EXPECT_EQ(compiled.aliasing.heap_size, 8192u);
     const std::vector<BarrierRecord> expected{
-        buffer_barrier("overwrite", "big", {kCompute | kCopy, kStorageWrite | kTransferWrite}, {kCompute, kStorageWrite}),
+        buffer_barrier("overwrite", "big", {kCompute | kCopy, kStorageWrite | kTransferWrite},
+                       {kCompute, kStorageWrite}),
     };
     EXPECT_EQ(barriers_of(graph), expected);
 }

@@ -29,10 +29,8 @@ TEST(framegraph_barriers, StorageImageToSampledToReadback) {
     const std::vector<BarrierRecord> expected{
         image_barrier("simulate", "height", {kNone, kNoAccess, kUndefined}, {kCompute, kStorageWrite, kGeneral}),
         image_barrier("shade", "height", {kCompute, kStorageWrite, kGeneral}, {kFragment, kSampledRead, kShaderRead}),
-        image_barrier("shade", "color", {kNone, kNoAccess, kUndefined},
-                      {kColorOutput, kColorWrite, kColorAttachment}),
-        image_barrier("copy_out", "height", {kFragment, kNoAccess, kShaderRead},
-                      {kCopy, kTransferRead, kTransferSrc}),
+        image_barrier("shade", "color", {kNone, kNoAccess, kUndefined}, {kColorOutput, kColorWrite, kColorAttachment}),
+        image_barrier("copy_out", "height", {kFragment, kNoAccess, kShaderRead}, {kCopy, kTransferRead, kTransferSrc}),
         // the copy into the readback buffer waits for nothing: it starts in no state
         buffer_barrier("after all", "readback", {kCopy, kTransferWrite}, {kHost, kHostRead}),
     };
@@ -59,8 +57,7 @@ TEST(framegraph_barriers, ReadersInTwoStagesAndARedundantThird) {
         image_barrier("produce", "field", {kNone, kNoAccess, kUndefined}, {kCompute, kStorageWrite, kGeneral}),
         image_barrier("draw", "field", {kCompute, kStorageWrite, kGeneral}, {kFragment, kSampledRead, kShaderRead}),
         // chains on the layout transition made for the fragment shader
-        image_barrier("simulate", "field", {kFragment, kNoAccess, kShaderRead},
-                      {kCompute, kSampledRead, kShaderRead}),
+        image_barrier("simulate", "field", {kFragment, kNoAccess, kShaderRead}, {kCompute, kSampledRead, kShaderRead}),
     };
     EXPECT_EQ(barriers_of(graph), expected);
 }
@@ -79,9 +76,8 @@ TEST(framegraph_barriers, WriteAfterRead) {
         builder.side_effect();
         builder.sample(state);
     });
-    add_pass(graph, "update", PassKind::Compute, [&](PassBuilder& builder) {
-        graph.request_output(builder.write_storage(state));
-    });
+    add_pass(graph, "update", PassKind::Compute,
+             [&](PassBuilder& builder) { graph.request_output(builder.write_storage(state)); });
     graph.compile(64, 64);
     const std::vector<BarrierRecord> expected{
         image_barrier("init", "state", {kNone, kNoAccess, kUndefined}, {kCompute, kStorageWrite, kGeneral}),
@@ -98,9 +94,8 @@ TEST(framegraph_barriers, ClearThenBlendThenSample) {
     add_pass(graph, "clear", PassKind::Graphics, [&](PassBuilder& builder) {
         target = builder.color_attachment(builder.create_image("target", small_image()));
     });
-    add_pass(graph, "blend", PassKind::Graphics, [&](PassBuilder& builder) {
-        target = builder.color_attachment(target, LoadOp::Load);
-    });
+    add_pass(graph, "blend", PassKind::Graphics,
+             [&](PassBuilder& builder) { target = builder.color_attachment(target, LoadOp::Load); });
     add_pass(graph, "tonemap", PassKind::Graphics, [&](PassBuilder& builder) {
         builder.side_effect();
         builder.sample(target);
@@ -146,12 +141,10 @@ TEST(framegraph_barriers, StorageBufferToVertexToUniform) {
 TEST(framegraph_barriers, ReadAfterReadWriteInSameStage) {
     FrameGraph graph;
     BufferHandle photons;
-    add_pass(graph, "emit", PassKind::Compute, [&](PassBuilder& builder) {
-        photons = builder.write_storage(builder.create_buffer("photons", {65536}));
-    });
-    add_pass(graph, "scatter", PassKind::Compute, [&](PassBuilder& builder) {
-        photons = builder.read_write_storage(photons);
-    });
+    add_pass(graph, "emit", PassKind::Compute,
+             [&](PassBuilder& builder) { photons = builder.write_storage(builder.create_buffer("photons", {65536})); });
+    add_pass(graph, "scatter", PassKind::Compute,
+             [&](PassBuilder& builder) { photons = builder.read_write_storage(photons); });
     add_pass(graph, "resolve", PassKind::Compute, [&](PassBuilder& builder) {
         builder.side_effect();
         builder.read_storage(photons);

@@ -6,8 +6,7 @@ namespace vkw::fg::test {
 namespace {
 
 // A compute pass that writes a new image `name` and, if given, samples `input`.
-ImageHandle add_compute(FrameGraph& graph, const std::string& pass, const std::string& name,
-                        ImageHandle input = {}) {
+ImageHandle add_compute(FrameGraph& graph, const std::string& pass, const std::string& name, ImageHandle input = {}) {
     ImageHandle output;
     add_pass(graph, pass, PassKind::Compute, [&](PassBuilder& builder) {
         if (input.valid()) builder.sample(input);
@@ -158,9 +157,8 @@ TEST(framegraph_ordering, ReaderOfImportedImageRunsBeforeItsOverwrite) {
         builder.side_effect();
         builder.sample(history);
     });
-    add_pass(graph, "overwrite", PassKind::Compute, [&](PassBuilder& builder) {
-        graph.request_output(builder.write_storage(history));
-    });
+    add_pass(graph, "overwrite", PassKind::Compute,
+             [&](PassBuilder& builder) { graph.request_output(builder.write_storage(history)); });
     graph.compile(64, 64);
     EXPECT_EQ(order_names(graph), (std::vector<std::string>{"read_history", "overwrite"}));
 }

@@ -24,9 +24,7 @@ std::vector<std::string> names_of(const DependencyGraph& graph, const std::vecto
     return names;
 }
 
-std::vector<std::string> living(const DependencyGraph& graph) {
-    return names_of(graph, graph.topological_order());
-}
+std::vector<std::string> living(const DependencyGraph& graph) { return names_of(graph, graph.topological_order()); }
 
 TEST(framegraph_dependency_graph, ChainIntoUnpinnedSinkIsAllCulled) {
     DependencyGraph graph = make_graph({"a", "b", "c", "sink"}, {{0, 1}, {1, 2}, {2, 3}});
@@ -53,8 +51,7 @@ TEST(framegraph_dependency_graph, ProducerWithOneCulledConsumerLives) {
 
 TEST(framegraph_dependency_graph, ForceCullRemovesNodeThenItsUnusedProducers) {
     // only_for_b feeds only the forced node; shared also feeds a pinned node.
-    DependencyGraph graph =
-        make_graph({"only_for_b", "shared", "b", "pinned"}, {{0, 2}, {1, 2}, {1, 3}});
+    DependencyGraph graph = make_graph({"only_for_b", "shared", "b", "pinned"}, {{0, 2}, {1, 2}, {1, 3}});
     graph.pin(2);  // forcing wins over pinning
     graph.pin(3);
     graph.force_cull(2);
@@ -73,8 +70,7 @@ TEST(framegraph_dependency_graph, ForceCullPropagatesThroughAChain) {
 
 TEST(framegraph_dependency_graph, OrderIsInsertionOrderWhenValid) {
     // A diamond plus an independent node, every edge pointing to a later node.
-    DependencyGraph graph =
-        make_graph({"a", "b", "c", "lone", "d"}, {{0, 1}, {0, 2}, {1, 4}, {2, 4}});
+    DependencyGraph graph = make_graph({"a", "b", "c", "lone", "d"}, {{0, 1}, {0, 2}, {1, 4}, {2, 4}});
     graph.pin(3);
     graph.pin(4);
     graph.cull();

@@ -30,12 +30,10 @@ TEST(framegraph_errors, StaleHandleAfterWrite) {
     add_pass(graph, "clear", PassKind::Graphics, [&](PassBuilder& builder) {
         first = builder.color_attachment(builder.create_image("caustics", small_image()));
     });
-    add_pass(graph, "splat", PassKind::Graphics, [&](PassBuilder& builder) {
-        second = builder.color_attachment(first, LoadOp::Load);
-    });
-    const std::string message = internal_error_of([&] {
-        add_pass(graph, "blur", PassKind::Compute, [&](PassBuilder& builder) { builder.sample(first); });
-    });
+    add_pass(graph, "splat", PassKind::Graphics,
+             [&](PassBuilder& builder) { second = builder.color_attachment(first, LoadOp::Load); });
+    const std::string message = internal_error_of(
+        [&] { add_pass(graph, "blur", PassKind::Compute, [&](PassBuilder& builder) { builder.sample(first); }); });
     expect_contains(message, {"'blur'", "stale handle", "'caustics'", "'splat'"});
     EXPECT_NE(second, first);
 }
@@ -43,9 +41,8 @@ TEST(framegraph_errors, StaleHandleAfterWrite) {
 TEST(framegraph_errors, DuplicatePassName) {
     FrameGraph graph;
     add_pass(graph, "water", PassKind::Graphics, [](PassBuilder& builder) { builder.side_effect(); });
-    const std::string message = internal_error_of([&] {
-        add_pass(graph, "water", PassKind::Graphics, [](PassBuilder& builder) { builder.side_effect(); });
-    });
+    const std::string message = internal_error_of(
+        [&] { add_pass(graph, "water", PassKind::Graphics, [](PassBuilder& builder) { builder.side_effect(); }); });
     expect_contains(message, {"two passes", "'water'"});
 }
 

@@ -114,8 +114,8 @@ inline std::vector<BarrierRecord> barriers_of(const FrameGraph& graph) {
     const CompiledGraph& compiled = graph.compiled();
     std::vector<BarrierRecord> records;
     auto add = [&](const std::string& before, const Barrier& barrier) {
-        records.push_back({before, compiled.timelines[barrier.resource].name, barrier.is_image, barrier.src,
-                           barrier.dst});
+        records.push_back(
+            {before, compiled.timelines[barrier.resource].name, barrier.is_image, barrier.src, barrier.dst});
     };
     for (size_t position = 0; position < compiled.barriers.before_pass.size(); ++position) {
         for (const Barrier& barrier : compiled.barriers.before_pass[position]) {

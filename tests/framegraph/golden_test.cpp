@@ -48,7 +48,8 @@ void build_water_frame(FrameGraph& graph) {
         builder.uniform_buffer(common.constants, kVertexShader);
         builder.vertex_buffer(common.surface);
         light_position = builder.color_attachment(builder.create_image("light_position", small_image()));
-        light_depth = builder.depth_stencil_attachment(builder.create_image("light_depth", small_image(VK_FORMAT_D32_SFLOAT)));
+        light_depth =
+            builder.depth_stencil_attachment(builder.create_image("light_depth", small_image(VK_FORMAT_D32_SFLOAT)));
     });
     add_pass(graph, "photon_trace", PassKind::Compute, [&](PassBuilder& builder) {
         builder.serves(Effect::SurfaceCaustics);
@@ -102,9 +103,14 @@ void build_water_frame(FrameGraph& graph) {
 // From below the water: stencil split, godrays on, blur off by rule, reflection forced
 // off. Composite writes an imported swapchain image handed back for presenting.
 void build_underwater_frame(FrameGraph& graph) {
-    const ImageHandle swapchain = graph.import_image(
-        "swapchain", ImportedImage{VK_NULL_HANDLE, VK_NULL_HANDLE, 256, 256, VK_FORMAT_R8G8B8A8_UNORM, {},
-                                   AccessState{kNone, kNoAccess, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR}});
+    const ImageHandle swapchain =
+        graph.import_image("swapchain", ImportedImage{VK_NULL_HANDLE,
+                                                      VK_NULL_HANDLE,
+                                                      256,
+                                                      256,
+                                                      VK_FORMAT_R8G8B8A8_UNORM,
+                                                      {},
+                                                      AccessState{kNone, kNoAccess, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR}});
     const Common common = add_constants_and_surface(graph);
     ImageHandle stencil, caustics, hdr, out;
     BufferHandle photons;

@@ -1,9 +1,9 @@
 // The godray passes in the frame: culled (sigma_s = 0), they are absent from the compiled graph
 // and the image equals the one with the effect forced on; run twice, the lines give bit-identical
 // images (64-bit fixed-point accumulation); and the two methods both declare their passes.
+#include "engine/scene/scene_loader.hpp"
 #include "passes/frame/frame_needs.hpp"
 #include "passes/frame/renderer.hpp"
-#include "engine/scene/scene_loader.hpp"
 #include "tests/support/gpu_test.hpp"
 
 #include <filesystem>

@@ -3,8 +3,8 @@
 // estimate), and optical depths sigma_t x depth from 1e-6 to 1e3, with both methods. Every pass's
 // float targets are scanned for NaN/Inf (the frame graph's finite check), and every pixel must be
 // non-negative: in-scatter only ever adds light.
-#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
+#include "passes/frame/renderer.hpp"
 #include "tests/support/gpu_test.hpp"
 
 #include <cmath>
@@ -47,11 +47,14 @@ TEST_F(godrays_extremes, FiniteAndNonNegative) {
         for (const double tau : {1e-6, 1e-3, 1.0, 1e3}) {
             for (const char* method : {"lines", "marched"}) {
                 std::vector<std::string> overrides = {"water.grid_resolution=32", "effects.godrays.grid=32",
-                                                      "effects.godrays.mode=on", std::string("effects.godrays.method=") + method};
+                                                      "effects.godrays.mode=on",
+                                                      std::string("effects.godrays.method=") + method};
                 for (const std::string& o : sun_and_camera.overrides) overrides.push_back(o);
                 for (const std::string& o : optical_depth(tau)) overrides.push_back(o);
-                const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json", overrides);
-                SCOPED_TRACE(std::string(sun_and_camera.name) + ", optical depth " + std::to_string(tau) + ", " + method);
+                const Scene scene =
+                    load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json", overrides);
+                SCOPED_TRACE(std::string(sun_and_camera.name) + ", optical depth " + std::to_string(tau) + ", " +
+                             method);
                 RenderResult result;
                 ASSERT_NO_THROW(result = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None}));
                 size_t negative = 0;

@@ -21,8 +21,8 @@
 namespace vkw::test {
 namespace {
 
-constexpr uint32_t kSize = 7;   // one pyramid level (passes/godrays/godrays_lines.hpp: fewer than 8 pixels)
-constexpr int kCentre = 3;      // its 5 x 5 blur stays inside the image
+constexpr uint32_t kSize = 7;  // one pyramid level (passes/godrays/godrays_lines.hpp: fewer than 8 pixels)
+constexpr int kCentre = 3;     // its 5 x 5 blur stays inside the image
 constexpr double kUnit = 0x1.0p-24;
 
 // Per channel sigma_t = (1.2, 0.8, 0.9) 1/m, sigma_s = (0.3, 0.5, 0.8) 1/m.
@@ -63,8 +63,9 @@ class godrays_flat : public GpuTest, public ::testing::WithParamInterface<const 
 TEST_P(godrays_flat, HorizontalRayUnderWaterMatchesSection6) {
     // At depth 2 m looking along -x, the sun in the y-z plane: the lit path ends at the water's side
     // 4 m away; 10 degrees over 7 pixels.
-    const Scene scene = godray_scene(R"({"position": [0, -2, 0], "direction": [-1, 0, 0], "fov_y_deg": 10, "near": 0.01, "far": 100})",
-                                     medium(GetParam()), {"effects.godrays.grid=64"});
+    const Scene scene =
+        godray_scene(R"({"position": [0, -2, 0], "direction": [-1, 0, 0], "fov_y_deg": 10, "near": 0.01, "far": 100})",
+                     medium(GetParam()), {"effects.godrays.grid=64"});
     expect_wide_tubes(scene, 4.0 / std::cos(2.0 * 5.0 * std::numbers::pi / 180.0));
     expect_centre_matches(render_godrays(context(), scene, kSize, kSize), scene);
 }
@@ -72,14 +73,16 @@ TEST_P(godrays_flat, HorizontalRayUnderWaterMatchesSection6) {
 TEST_P(godrays_flat, VerticalRayFromAboveMatchesSection6) {
     // 3 m above the surface looking straight down: T / n^2 times the in-scatter of the refracted ray,
     // lit down to max_depth = 6 m; 6 degrees over 7 pixels. The cone's far end: s_a + s_w / n.
-    const Scene scene = godray_scene(R"({"position": [0, 3, 0], "direction": [0, -1, 0], "fov_y_deg": 6, "near": 0.01, "far": 100})",
-                                     medium(GetParam()), {"effects.godrays.grid=64"});
+    const Scene scene =
+        godray_scene(R"({"position": [0, 3, 0], "direction": [0, -1, 0], "fov_y_deg": 6, "near": 0.01, "far": 100})",
+                     medium(GetParam()), {"effects.godrays.grid=64"});
     expect_wide_tubes(scene, 3.0 + 6.0 / scene.water->ior);
     expect_centre_matches(render_godrays(context(), scene, kSize, kSize), scene);
 }
 
-INSTANTIATE_TEST_SUITE_P(Phase, godrays_flat, ::testing::Values("0", "0.9"),
-                         [](const auto& param_info) { return std::string(param_info.param) == "0" ? "isotropic" : "forward"; });
+INSTANTIATE_TEST_SUITE_P(Phase, godrays_flat, ::testing::Values("0", "0.9"), [](const auto& param_info) {
+    return std::string(param_info.param) == "0" ? "isotropic" : "forward";
+});
 
 using godrays_flat_resolution = GpuTest;
 
@@ -87,8 +90,9 @@ TEST_F(godrays_flat_resolution, HalfResolutionUpsamplesTheSameField) {
     // The horizontal view at 14 x 14 gathered at 7 x 7: the output pixels take the bilinear mix of
     // the godray pixels around them (every tap sees the sky at the same distance, so none is left
     // out), which the expectation mixes the same way from the exact godray pixels; the mix adds 4 u.
-    const Scene scene = godray_scene(R"({"position": [0, -2, 0], "direction": [-1, 0, 0], "fov_y_deg": 10, "near": 0.01, "far": 100})",
-                                     medium("0.9"), {"effects.godrays.grid=64", "effects.godrays.resolution_scale=0.5"});
+    const Scene scene =
+        godray_scene(R"({"position": [0, -2, 0], "direction": [-1, 0, 0], "fov_y_deg": 10, "near": 0.01, "far": 100})",
+                     medium("0.9"), {"effects.godrays.grid=64", "effects.godrays.resolution_scale=0.5"});
     const RenderResult result = render_godrays(context(), scene, 2 * kSize, 2 * kSize);
     for (const int x : {6, 7}) {
         // Output pixel x samples the godray image at (x + 0.5) / 2 - 0.5: between pixels 2 and 3 or 3 and 4.
@@ -100,7 +104,8 @@ TEST_F(godrays_flat_resolution, HalfResolutionUpsamplesTheSameField) {
             const int base_y = static_cast<int>(std::floor(cy));
             const double fy = cy - base_y;
             auto godray = [&](int i, int j) { return expected_blurred(scene, kSize, kSize, i, j); };
-            const glm::dvec3 expected = (1 - f) * (1 - fy) * godray(base, base_y) + f * (1 - fy) * godray(base + 1, base_y) +
+            const glm::dvec3 expected = (1 - f) * (1 - fy) * godray(base, base_y) +
+                                        f * (1 - fy) * godray(base + 1, base_y) +
                                         (1 - f) * fy * godray(base, base_y + 1) + f * fy * godray(base + 1, base_y + 1);
             for (int ch = 0; ch < 3; ++ch) {
                 EXPECT_NEAR(result.image.pixel(x, y)[ch] / expected[ch], 1.0, kRounding + 4 * kUnit)
@@ -124,9 +129,9 @@ TEST_F(godrays_marched, ErrorFallsWithItsStepCountAsTheMidpointRuleSays) {
     // its view path at b = sigma_t, over the lit 6 m down to max_depth.
     double previous = 1e300;
     for (const int steps : {1, 4, 16, 64}) {
-        const Scene scene = godray_scene(R"({"position": [0, 3, 0], "direction": [0, -1, 0], "fov_y_deg": 6, "near": 0.01, "far": 100})",
-                                         medium("0.9"), {"effects.godrays.method=marched",
-                                                         "effects.godrays.march_steps=" + std::to_string(steps)});
+        const Scene scene = godray_scene(
+            R"({"position": [0, 3, 0], "direction": [0, -1, 0], "fov_y_deg": 6, "near": 0.01, "far": 100})",
+            medium("0.9"), {"effects.godrays.method=marched", "effects.godrays.march_steps=" + std::to_string(steps)});
         const RenderResult result = render_godrays(context(), scene, kSize, kSize);
         const glm::dvec3 exact = expected_in_scatter(scene, pixel_ray(scene, kSize, kSize, kCentre, kCentre));
         const glm::dvec3 t = *ref::refract(scene.sun.direction, {0.0, 1.0, 0.0}, 1.0 / scene.water->ior);
@@ -138,7 +143,8 @@ TEST_F(godrays_marched, ErrorFallsWithItsStepCountAsTheMidpointRuleSays) {
             const double measured = result.image.pixel(kCentre, kCentre)[c] / exact[c] - 1.0;
             // The march's own rounding: N steps of about 30 roundings each, with exp of optical
             // depths below 20 (4 x 20 u each): (30 + 80) u per step, summed.
-            EXPECT_NEAR(measured, predicted, (30.0 + 80.0) * kUnit * steps + kRounding) << steps << " steps, channel " << c;
+            EXPECT_NEAR(measured, predicted, (30.0 + 80.0) * kUnit * steps + kRounding)
+                << steps << " steps, channel " << c;
             worst = std::max(worst, std::abs(measured));
         }
         EXPECT_LT(worst, previous) << "the error did not fall from " << previous << " at " << steps << " steps";
@@ -148,8 +154,9 @@ TEST_F(godrays_marched, ErrorFallsWithItsStepCountAsTheMidpointRuleSays) {
 
 TEST_F(godrays_marched, HorizontalRayUnderWaterIsExactWithOneStep) {
     // Along a horizontal ray the light is uniform (a = 0): one step is exact, as the closed form above says.
-    const Scene scene = godray_scene(R"({"position": [0, -2, 0], "direction": [-1, 0, 0], "fov_y_deg": 10, "near": 0.01, "far": 100})",
-                                     medium("0.9"), {"effects.godrays.method=marched", "effects.godrays.march_steps=1"});
+    const Scene scene =
+        godray_scene(R"({"position": [0, -2, 0], "direction": [-1, 0, 0], "fov_y_deg": 10, "near": 0.01, "far": 100})",
+                     medium("0.9"), {"effects.godrays.method=marched", "effects.godrays.march_steps=1"});
     const RenderResult result = render_godrays(context(), scene, kSize, kSize);
     const glm::dvec3 exact = expected_in_scatter(scene, pixel_ray(scene, kSize, kSize, kCentre, kCentre));
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(result.image.pixel(kCentre, kCentre)[c] / exact[c], 1.0, kRounding) << c;

@@ -2,8 +2,8 @@
 // fields (effects.godrays in scenes/README.md): defaults, every field read, each out-of-range value
 // refused naming the field and the accepted range, and the configuration key following the
 // settings the passes capture. No GPU.
-#include "passes/frame/frame_needs.hpp"
 #include "engine/scene/scene_loader.hpp"
+#include "passes/frame/frame_needs.hpp"
 #include "passes/godrays/godrays.hpp"
 
 #include <gtest/gtest.h>
@@ -25,7 +25,8 @@ Scene scene_with(const std::vector<std::string>& overrides = {}) {
       "water": {"level": 0, "half_extent": 10,
                 "waves": {"model": "sum", "components": [{"amplitude": 0.1, "wavelength": 2}]}},
       "medium": {"preset": "coastal"}
-    })", "godrays_needs_test.json", overrides);
+    })",
+                       "godrays_needs_test.json", overrides);
 }
 
 // A copy: the needs it comes from are often a temporary.
@@ -35,7 +36,9 @@ fg::EffectDecision godrays(const fg::FrameNeeds& needs) {
     return found ? *found : fg::EffectDecision{Effect::VolumeCaustics};
 }
 
-fg::FrameNeeds needs_of(const std::vector<std::string>& overrides) { return decide_frame_needs(scene_with(overrides), 1.0); }
+fg::FrameNeeds needs_of(const std::vector<std::string>& overrides) {
+    return decide_frame_needs(scene_with(overrides), 1.0);
+}
 
 bool says(const fg::EffectDecision& decision, const std::string& text) {
     return decision.reason.find(text) != std::string::npos;
@@ -49,11 +52,14 @@ TEST(godrays_needs, NeededWhenTheLitScatteringWaterIsInView) {
 }
 
 TEST(godrays_needs, CulledWithoutScattering) {
-    const auto decision = godrays(needs_of({"medium.preset=null", "medium.sigma_a=[0.5, 0.1, 0.05]", "medium.sigma_s=[0, 0, 0]"}));
+    const auto decision =
+        godrays(needs_of({"medium.preset=null", "medium.sigma_a=[0.5, 0.1, 0.05]", "medium.sigma_s=[0, 0, 0]"}));
     EXPECT_FALSE(decision.needed);
     EXPECT_TRUE(says(decision, "sigma_s = 0")) << decision.reason;
     // One scattering channel is enough.
-    EXPECT_TRUE(godrays(needs_of({"medium.preset=null", "medium.sigma_a=[0.5, 0.1, 0.05]", "medium.sigma_s=[0, 0, 1e-6]"})).needed);
+    EXPECT_TRUE(
+        godrays(needs_of({"medium.preset=null", "medium.sigma_a=[0.5, 0.1, 0.05]", "medium.sigma_s=[0, 0, 1e-6]"}))
+            .needed);
 }
 
 TEST(godrays_needs, CulledWithTheSunDown) {
@@ -77,7 +83,9 @@ TEST(godrays_needs, CulledUnderFlatWaterWithNothingOverIt) {
     EXPECT_FALSE(flat.needed);
     EXPECT_TRUE(says(flat, "flat")) << flat.reason;
     // An object over the flat water shades some beams: needed again.
-    const auto shaded = godrays(needs_of({"water.waves=null", R"(receivers=[{"type": "box", "half_size": [0.5, 0.5, 0.5], "translation": [0, 1, 0]}])"}));
+    const auto shaded =
+        godrays(needs_of({"water.waves=null",
+                          R"(receivers=[{"type": "box", "half_size": [0.5, 0.5, 0.5], "translation": [0, 1, 0]}])"}));
     EXPECT_TRUE(shaded.needed) << shaded.reason;
 }
 
@@ -98,10 +106,10 @@ TEST(godrays_scene, DefaultsAndEveryField) {
     EXPECT_FALSE(defaults.max_depth.has_value());
     EXPECT_EQ(defaults.method, GodrayMethod::Lines);
     EXPECT_EQ(defaults.march_steps, 32u);
-    const GodraySettings set = scene_with({"effects.godrays.grid=256", "effects.godrays.resolution_scale=1",
-                                           "effects.godrays.max_depth=7.5", "effects.godrays.method=marched",
-                                           "effects.godrays.march_steps=9", "effects.godrays.mode=on"})
-                                   .effects.godrays;
+    const GodraySettings set =
+        scene_with({"effects.godrays.grid=256", "effects.godrays.resolution_scale=1", "effects.godrays.max_depth=7.5",
+                    "effects.godrays.method=marched", "effects.godrays.march_steps=9", "effects.godrays.mode=on"})
+            .effects.godrays;
     EXPECT_EQ(set.grid, 256u);
     EXPECT_EQ(set.resolution_scale, 1.0);
     EXPECT_EQ(set.max_depth, 7.5);
@@ -140,9 +148,9 @@ TEST(godrays_scene, OutOfRangeFieldsAreRefusedNamingFieldAndRange) {
 
 TEST(godrays_scene, ConfigurationKeyFollowsEveryCapturedSetting) {
     const std::string base = passes::godray_configuration(scene_with().effects.godrays);
-    for (const char* change : {"effects.godrays.grid=64", "effects.godrays.resolution_scale=1",
-                                      "effects.godrays.max_depth=3", "effects.godrays.method=marched",
-                                      "effects.godrays.march_steps=8"}) {
+    for (const char* change :
+         {"effects.godrays.grid=64", "effects.godrays.resolution_scale=1", "effects.godrays.max_depth=3",
+          "effects.godrays.method=marched", "effects.godrays.march_steps=8"}) {
         EXPECT_NE(passes::godray_configuration(scene_with({change}).effects.godrays), base) << change;
     }
 }

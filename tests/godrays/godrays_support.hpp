@@ -5,8 +5,8 @@
 // nothing with the godray shaders but the equations.
 #pragma once
 
-#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
+#include "passes/frame/renderer.hpp"
 #include "tools/reference/optics.hpp"
 #include "tools/reference/reference_renderer.hpp"
 
@@ -22,16 +22,20 @@ namespace vkw::test {
 // Flat water 4 m either side of the origin, its beams cut at `max_depth` (far above the floor, which
 // is black and too far for any test ray); a constant black sky; E_s = (1, 2, 3); the sun in the y-z
 // plane, 60 degrees high, travelling toward +z. The camera and the medium come from the caller.
-inline Scene godray_scene(const std::string& camera, const std::string& medium, const std::vector<std::string>& overrides = {}) {
+inline Scene godray_scene(const std::string& camera, const std::string& medium,
+                          const std::vector<std::string>& overrides = {}) {
     return parse_scene(R"({
-      "camera": )" + camera + R"(,
+      "camera": )" + camera +
+                           R"(,
       "sun": {"elevation_deg": 60, "azimuth_deg": 0, "irradiance": [1, 2, 3]},
       "sky": {"radiance": [0, 0, 0]},
       "floor": {"height": -50, "albedo": [0, 0, 0], "half_extent": 10},
       "water": {"level": 0, "ior": 1.333, "half_extent": 4, "grid_resolution": 8},
-      "medium": )" + medium + R"(,
+      "medium": )" + medium +
+                           R"(,
       "effects": {"godrays": {"mode": "on", "resolution_scale": 1, "max_depth": 6}, "caustics": {"mode": "off"}}
-    })", "godrays_test.json", overrides);
+    })",
+                       "godrays_test.json", overrides);
 }
 
 inline RenderResult render_godrays(Context& context, const Scene& scene, uint32_t width, uint32_t height) {
@@ -42,8 +46,8 @@ inline RenderResult render_godrays(Context& context, const Scene& scene, uint32_
 // The part [s0, s1] of the ray o + s d (s >= 0) where the flat water is lit: under the surface,
 // above max_depth, inside the water's square, and on a beam that entered the surface inside it.
 // Empty (s1 <= s0) where it never is.
-inline void lit_interval(const Scene& scene, const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& t,
-                         double& s0, double& s1) {
+inline void lit_interval(const Scene& scene, const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& t, double& s0,
+                         double& s1) {
     const double e = scene.water->half_extent, level = scene.water->level;
     const double deepest = level - scene.effects.godrays.max_depth.value_or(1e30);
     s0 = 0.0;
@@ -56,8 +60,10 @@ inline void lit_interval(const Scene& scene, const glm::dvec3& o, const glm::dve
             return;
         }
         const double s = (b - at) / rate;
-        if (rate > 0.0) s1 = std::min(s1, s);
-        else s0 = std::max(s0, s);
+        if (rate > 0.0)
+            s1 = std::min(s1, s);
+        else
+            s0 = std::max(s0, s);
     };
     bound({0, 1, 0}, level);
     bound({0, -1, 0}, -deepest);
@@ -95,8 +101,8 @@ inline glm::dvec3 expected_in_scatter(const Scene& scene, const glm::dvec3& d) {
     const glm::dvec3 sigma_t = scene.medium.sigma_t();
     for (int c = 0; c < 3; ++c) {
         auto from_start = [&](double length) {
-            return ref::water_path_radiance({scene.medium.sigma_s[c], sigma_t[c], scene.medium.g, level - o.y, length, v,
-                                             t, e_perp0[c], 0.0});
+            return ref::water_path_radiance(
+                {scene.medium.sigma_s[c], sigma_t[c], scene.medium.g, level - o.y, length, v, t, e_perp0[c], 0.0});
         };
         radiance[c] = weight * (from_start(s1) - from_start(s0));
     }
@@ -115,7 +121,8 @@ inline glm::dvec3 expected_blurred(const Scene& scene, uint32_t width, uint32_t 
     glm::dvec3 sum(0.0);
     for (int j = -2; j <= 2; ++j) {
         for (int i = -2; i <= 2; ++i) {
-            sum += kWeights[i + 2] * kWeights[j + 2] * expected_in_scatter(scene, pixel_ray(scene, width, height, x + i, y + j));
+            sum += kWeights[i + 2] * kWeights[j + 2] *
+                   expected_in_scatter(scene, pixel_ray(scene, width, height, x + i, y + j));
         }
     }
     return sum / 256.0;

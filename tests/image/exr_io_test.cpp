@@ -183,8 +183,7 @@ TEST(image_exr_io, FileWithoutColourChannelsIsUserError) {
 TEST(image_exr_io, NonExrFileIsUserError) {
     ScratchDir dir;
     test::write_text(dir / "notes.exr", "this is not an image\n");
-    expect_user_error([&] { read_exr(dir / "notes.exr"); }, dir / "notes.exr",
-                      "not an OpenEXR file");
+    expect_user_error([&] { read_exr(dir / "notes.exr"); }, dir / "notes.exr", "not an OpenEXR file");
 }
 
 TEST(image_exr_io, TruncatedExrIsUserError) {

@@ -48,8 +48,7 @@ bool run_unprivileged(const std::function<bool()>& check) {
         bool ok = false;
         try {
             ok = check();
-        } catch (...) {
-        }
+        } catch (...) {}
         ::_exit(ok ? 0 : 1);
     }
     int status = 0;
@@ -80,8 +79,7 @@ TEST(image_file_paths, MissingDirectoryIsUserError) {
     for (const NamedWriter& writer : all_writers()) {
         SCOPED_TRACE(writer.name);
         const fs::path path = missing / "x.out";
-        expect_user_error([&] { writer.write(path); }, path,
-                          "directory '" + missing.string() + "' does not exist");
+        expect_user_error([&] { writer.write(path); }, path, "directory '" + missing.string() + "' does not exist");
         EXPECT_FALSE(fs::exists(missing));
     }
 }
@@ -115,8 +113,8 @@ TEST(image_file_paths, ReadOnlyDirectoryIsUserError) {
     ScratchDir dir;
     const fs::path locked = dir / "locked";
     fs::create_directory(locked);
-    fs::permissions(locked, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::others_read |
-                                fs::perms::others_exec);
+    fs::permissions(locked,
+                    fs::perms::owner_read | fs::perms::owner_exec | fs::perms::others_read | fs::perms::others_exec);
     EXPECT_TRUE(run_unprivileged([&] { return every_writer_refuses(locked / "x.out", "no permission"); }));
     fs::permissions(locked, fs::perms::owner_all);  // so ScratchDir can remove it
 }

@@ -25,9 +25,8 @@ class ScratchDir {
 public:
     ScratchDir() {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        path_ = std::filesystem::temp_directory_path() /
-                ("vkwater_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
-                 std::to_string(::getpid()));
+        path_ = std::filesystem::temp_directory_path() / ("vkwater_" + std::string(info->test_suite_name()) + "_" +
+                                                          info->name() + "_" + std::to_string(::getpid()));
         std::filesystem::remove_all(path_);
         std::filesystem::create_directories(path_);
     }
@@ -47,8 +46,7 @@ private:
 
 // Every value distinct, of both signs, mostly not representable as half, so that a channel
 // mix-up, a row flip or a lossy conversion shows.
-inline ImageRGBA32F make_test_image(int width, int height,
-                                    const std::vector<std::string>& layer_names = {}) {
+inline ImageRGBA32F make_test_image(int width, int height, const std::vector<std::string>& layer_names = {}) {
     ImageRGBA32F image;
     image.width = width;
     image.height = height;

@@ -24,10 +24,22 @@ TEST(image_png_preview, WritesPngWithToneMappedPixels) {
     image.width = 2;
     image.height = 2;
     image.rgba = {
-        0.0f,  0.0f, 0.0f, 1.0f,                                    // (0,0) top left: black
-        1.0e6f, 0.09f, 0.0f, 0.0f,                                  // (1,0) top right
-        std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f, 1.0f,  // (0,1) bottom left
-        0.5f,  0.5f, 0.5f, 1.0f,                                    // (1,1) bottom right
+        0.0f,
+        0.0f,
+        0.0f,
+        1.0f,  // (0,0) top left: black
+        1.0e6f,
+        0.09f,
+        0.0f,
+        0.0f,  // (1,0) top right
+        std::numeric_limits<float>::quiet_NaN(),
+        0.0f,
+        0.0f,
+        1.0f,  // (0,1) bottom left
+        0.5f,
+        0.5f,
+        0.5f,
+        1.0f,  // (1,1) bottom right
     };
     const float exposure = 2.0f;
 
@@ -51,7 +63,7 @@ TEST(image_png_preview, WritesPngWithToneMappedPixels) {
     EXPECT_EQ(at(0, 0, 0), 0);
     EXPECT_EQ(at(1, 0, 0), 255);
     EXPECT_EQ(at(1, 0, 1), tonemap_to_srgb8(0.09f * exposure));  // exposure applied first
-    EXPECT_EQ(at(0, 1, 0), 255);  // magenta
+    EXPECT_EQ(at(0, 1, 0), 255);                                 // magenta
     EXPECT_EQ(at(0, 1, 1), 0);
     EXPECT_EQ(at(0, 1, 2), 255);
     EXPECT_EQ(at(1, 1, 2), tonemap_to_srgb8(0.5f * exposure));
@@ -61,8 +73,7 @@ TEST(image_png_preview, RejectsNonPositiveExposure) {
     ScratchDir dir;
     const ImageRGBA32F image = test::make_test_image(1, 1);
     EXPECT_THROW(write_png_preview(dir / "p.png", image, 0.0f), UserError);
-    EXPECT_THROW(write_png_preview(dir / "p.png", image, std::numeric_limits<float>::quiet_NaN()),
-                 UserError);
+    EXPECT_THROW(write_png_preview(dir / "p.png", image, std::numeric_limits<float>::quiet_NaN()), UserError);
 }
 
 }  // namespace

@@ -4,8 +4,8 @@
 // keeps no clock), so the timed frames and the measured one are the same picture.
 #include <gtest/gtest.h>
 
-#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
+#include "passes/frame/renderer.hpp"
 #include "passes/receivers/receiver_meshes.hpp"
 #include "passes/water/water_surface.hpp"
 #include "tests/support/gpu_test.hpp"
@@ -54,8 +54,8 @@ TEST_F(metrics_bench_frame, ImportedMeshesCountOnce) {
     const passes::ReceiverMeshes meshes(context(), scene.receivers);
     fg::FrameGraph sizes;
     const uint32_t vertices = meshes.import_vertices(sizes).index, indices = meshes.import_indices(sizes).index;
-    const uint64_t mesh_bytes = sizes.resources()[vertices].imported_buffer.size +
-                                sizes.resources()[indices].imported_buffer.size;
+    const uint64_t mesh_bytes =
+        sizes.resources()[vertices].imported_buffer.size + sizes.resources()[indices].imported_buffer.size;
     EXPECT_EQ(memory_of(scene).imported_bytes, kReadbackBytes + mesh_bytes);
 }
 

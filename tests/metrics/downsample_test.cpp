@@ -92,8 +92,7 @@ TEST(metrics_downsample, LightMovedInsideABlockVanishes) {
     const double s = 68.0 / 64.0, d = 4.0 / s;
     const double expected = 3.0 * (d * d / (25.0 / (s * s) + 0.01) + d * d / (1.0 / (s * s) + 0.01)) / 192.0;
     test::expect_relative(compare_images(moved, reference).rel_mse, expected);
-    const metrics::Metrics small =
-        compare_images(box_downsample(moved, kFactor), box_downsample(reference, kFactor));
+    const metrics::Metrics small = compare_images(box_downsample(moved, kFactor), box_downsample(reference, kFactor));
     EXPECT_EQ(small.rel_mse, 0.0);
     EXPECT_EQ(small.flip_mean, 0.0);
     EXPECT_EQ(small.bias, 0.0);

@@ -72,7 +72,7 @@ TEST(metrics_flip_stages, FeatureKernelsHaveUnitSignedParts) {
     for (std::size_t i = 0; i < 19; ++i) {
         // The two halves are normalised by separately accumulated sums: equal to a few ulp.
         EXPECT_DOUBLE_EQ(k.edge[i], -k.edge[18 - i]);  // odd: a derivative
-        EXPECT_EQ(k.point[i], k.point[18 - i]);  // even: a second derivative
+        EXPECT_EQ(k.point[i], k.point[18 - i]);        // even: a second derivative
     }
     EXPECT_GT(k.edge[0 + 5], 0.0);  // -x g(x) is positive left of the centre
     EXPECT_LT(k.point[9], 0.0);     // the second derivative's centre is negative
@@ -141,8 +141,7 @@ TEST(metrics_flip_stages, SeparableCsfEqualsThePapers2dKernel) {
     }
     const flip::Plane in = test_plane();
     const flip::Plane direct = correlate_2d(in, k);
-    const flip::Plane separable =
-        flip::apply_csf(in, flip::csf_filter(flip::OpponentChannel::BlueYellow, ppd));
+    const flip::Plane separable = flip::apply_csf(in, flip::csf_filter(flip::OpponentChannel::BlueYellow, ppd));
     for (std::size_t i = 0; i < in.size(); ++i) ASSERT_NEAR(separable[i], direct[i], 1e-6) << i;
 }
 

@@ -69,8 +69,8 @@ TEST(metrics_luv, RedAgainstMiddleGreyMatchesPublishedValues) {
     // calculator, 4 decimals); the grey 0.18 is (49.4961, 0, 0). Only the L*u*v* coordinates are
     // taken from a table here, hence the looser tolerance.
     const ImageRGBA32F b = test::grey_image(1, 1, 0.18f);
-    const double expected = std::sqrt(std::pow(53.2408 - lightness_by_hand(0.18), 2.0) + std::pow(175.0151, 2.0) +
-                                       std::pow(37.7564, 2.0));
+    const double expected =
+        std::sqrt(std::pow(53.2408 - lightness_by_hand(0.18), 2.0) + std::pow(175.0151, 2.0) + std::pow(37.7564, 2.0));
     EXPECT_NEAR(luv(test::constant_image(1, 1, {1.0f, 0.0f, 0.0f}), b), expected, 0.01);
 }
 

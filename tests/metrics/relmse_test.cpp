@@ -59,8 +59,7 @@ TEST(metrics_relmse, UniformScale) {
     //   b/s = 0.5: 0.0625 / 0.26 = 0.2404;  b/s = 1.5: 0.5625 / 2.26 = 0.2489 (dropped 3 times)
     const double at_half = 0.0625 / 0.26, at_one_and_half = 0.5625 / 2.26;
     const ImageRGBA32F b = two_level();
-    expect_relative(relmse(test::scaled(b, 1.5f), b),
-                    (1800.0 * at_half + 1797.0 * at_one_and_half) / (kValues - 3.0));
+    expect_relative(relmse(test::scaled(b, 1.5f), b), (1800.0 * at_half + 1797.0 * at_one_and_half) / (kValues - 3.0));
     // On a constant reference every value has the same e = (k - 1)^2 / 1.01.
     const ImageRGBA32F grey = test::grey_image(kW, kH, 0.25f);
     expect_relative(relmse(test::scaled(grey, 3.0f), grey), 4.0 / 1.01);
@@ -130,8 +129,7 @@ TEST(metrics_relmse, NonFiniteValuesAreAUserError) {
     const ImageRGBA32F b = test::grey_image(kW, kH, 1.0f);
     const float nan = std::numeric_limits<float>::quiet_NaN();
     EXPECT_THROW(relmse(test::with_pixel(b, 1, 1, {nan, 0.0f, 0.0f}), b), UserError);
-    EXPECT_THROW(relmse(b, test::with_pixel(b, 1, 1, {std::numeric_limits<float>::infinity(), 0.0f, 0.0f})),
-                 UserError);
+    EXPECT_THROW(relmse(b, test::with_pixel(b, 1, 1, {std::numeric_limits<float>::infinity(), 0.0f, 0.0f})), UserError);
 }
 
 }  // namespace

@@ -33,8 +33,8 @@ struct Push {
 // - about 20 further multiplies, divides and adds.
 double relative_bound(double sigma_t, double s, double tau0, double x, double c, double g, double cos_alpha) {
     const double peak = 3.0 * std::abs(g) / (1.0 + g * g - 2.0 * g * cos_alpha);
-    const double ulps = (3 + 4 * sigma_t * s) + (3 + 4 * (tau0 + std::abs(x))) + sigma_t * s * (1 + std::abs(c)) +
-                        100 + 3 * peak + 20;
+    const double ulps =
+        (3 + 4 * sigma_t * s) + (3 + 4 * (tau0 + std::abs(x))) + sigma_t * s * (1 + std::abs(c)) + 100 + 3 * peak + 20;
     return ulps * std::ldexp(1.0, -24);
 }
 
@@ -67,8 +67,8 @@ TEST_F(InScatterShader, MatchesTheClosedFormInEveryCase) {
             if (std::abs(1.0 + c) < 2e-3) ++near_zero_c;
             const double tau0 = in.sigma_t * in.z0 / cos_t;
             const double x = in.sigma_t * in.s * (1.0 + c);
-            const double bound = relative_bound(in.sigma_t, in.s, tau0, x, c, in.g,
-                                                glm::dot(in.refracted_sun, -in.view_direction));
+            const double bound =
+                relative_bound(in.sigma_t, in.s, tau0, x, c, in.g, glm::dot(in.refracted_sun, -in.view_direction));
             // Values below fp32's normal range flush to zero on the device (1.2e-38):
             // an absolute floor of 1e-37 covers that and nothing else.
             EXPECT_NEAR(got, expected, bound * expected + 1e-37)
@@ -84,8 +84,7 @@ TEST(in_scatter_reference, SpecialCasesOfPhysicsSection6) {
     ref::InScatterInput in{0.2, 0.5, 0.0, 1.0, 3.0, {1, 0, 0}, {0, -1, 0}, 2.0, 0.1};
     const double p = ref::henyey_greenstein(0.0, 0.0);
     const double e = 2.0 * std::exp(-0.5 * 1.0);
-    EXPECT_NEAR(ref::water_path_radiance(in),
-                0.1 * std::exp(-1.5) + 0.2 * p * e * (1 - std::exp(-1.5)) / 0.5, 1e-15);
+    EXPECT_NEAR(ref::water_path_radiance(in), 0.1 * std::exp(-1.5) + 0.2 * p * e * (1 - std::exp(-1.5)) / 0.5, 1e-15);
     // Vertical ray down from the surface under a vertical sun: c = 1, cos(alpha) = -1
     // (back-scatter, g = 0.9): L = ss p(-1) E0 (1 - e^{-2 st s}) / (2 st).
     in = {0.2, 0.5, 0.9, 0.0, 3.0, {0, -1, 0}, {0, -1, 0}, 2.0, 0.0};

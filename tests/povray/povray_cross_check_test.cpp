@@ -82,11 +82,13 @@ pov::PovrayOptions options_for(const Scene& scene) {
 
 ImageRGBA32F render_with_povray(const Scene& scene, const pov::PovrayOptions& options, const std::string& name) {
     std::filesystem::create_directories(kOut);
-    const std::filesystem::path pov = kOut / (name + ".pov"), exr = kOut / (name + ".exr"), log = kOut / (name + ".log");
+    const std::filesystem::path pov = kOut / (name + ".pov"), exr = kOut / (name + ".exr"),
+                                log = kOut / (name + ".log");
     std::ofstream(pov) << pov::povray_floor_scene(scene, options);
     std::filesystem::remove(exr);
-    const std::string command = "povray +I" + pov.string() + " +O" + exr.string() + " +FE +W" + std::to_string(kPixels) +
-                                " +H" + std::to_string(kPixels) + " -D -V > " + log.string() + " 2>&1";
+    const std::string command = "povray +I" + pov.string() + " +O" + exr.string() + " +FE +W" +
+                                std::to_string(kPixels) + " +H" + std::to_string(kPixels) + " -D -V > " + log.string() +
+                                " 2>&1";
     const auto start = std::chrono::steady_clock::now();
     const int status = std::system(command.c_str());
     std::printf("%s: POV-Ray took %.2f s\n", name.c_str(),
@@ -144,7 +146,8 @@ Bins bin_reference(const ref::FloorCausticMap& map, const pov::FloorWindow& wind
 }
 
 ref::FloorCausticMap reference_map(const Scene& scene) {
-    const std::unique_ptr<WaterSurface> surface = make_surface(scene.water->waves, scene.water->level, scene.water->time);
+    const std::unique_ptr<WaterSurface> surface =
+        make_surface(scene.water->waves, scene.water->level, scene.water->time);
     return ref::FloorCausticMap(scene, *surface, kTexels, kCells);
 }
 
@@ -185,8 +188,9 @@ TEST(povray_cross_check, SineOverFlatFloorIrradianceMatchesTheReference) {
                                                   << ": POV-Ray wavy/flat " << pov_ratio << ", reference " << ref_ratio;
         }
     }
-    std::printf("per-bin wavy/flat ratio: %d bins compared, %d crossed by a focal line; worst |error| %.4f (limit %.2f)\n",
-                compared, focal, worst, kBinLimit);
+    std::printf(
+        "per-bin wavy/flat ratio: %d bins compared, %d crossed by a focal line; worst |error| %.4f (limit %.2f)\n",
+        compared, focal, worst, kBinLimit);
     EXPECT_GE(compared, kBins * kBins / 2) << "too few bins away from focal lines to compare";
 
     for (int c = 1; c < 3; ++c) {
@@ -211,14 +215,16 @@ TEST(povray_tool, RefusesASceneWithoutWaterAndWritesCalm) {
     std::ofstream(dry) << R"({"camera": {"position": [0, 1, 3], "target": [0, 0, 0]}, "sun": {"elevation_deg": 60},
                              "sky": {"radiance": [1, 1, 1]}})";
     const std::string tool = std::string(VKWATER_TOOL) + " povray";
-    const int refused = std::system((tool + " " + dry.string() + " --out " + out.string() + " > " + log.string() + " 2>&1").c_str());
+    const int refused =
+        std::system((tool + " " + dry.string() + " --out " + out.string() + " > " + log.string() + " 2>&1").c_str());
     std::ostringstream message;
     message << std::ifstream(log).rdbuf();
     EXPECT_TRUE(WIFEXITED(refused) && WEXITSTATUS(refused) == 1) << message.str();
     EXPECT_NE(message.str().find(dry.string() + ": water: the scene has no water"), std::string::npos) << message.str();
 
     const std::string calm = (std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/calm.json").string();
-    const int written = std::system((tool + " " + calm + " --out " + out.string() + " > " + log.string() + " 2>&1").c_str());
+    const int written =
+        std::system((tool + " " + calm + " --out " + out.string() + " > " + log.string() + " 2>&1").c_str());
     EXPECT_EQ(written, 0);
     std::string first_line;
     std::getline(std::ifstream(out) >> std::ws, first_line);

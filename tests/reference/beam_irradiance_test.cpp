@@ -3,13 +3,13 @@
 // under a sine, the floor's irradiance averaged over many points equals the beam-mapped
 // floor map's average (an independent way to spread the same flux); a visibility test that
 // blocks everything leaves nothing; and a scene with meshes under the waves renders.
+#include "tools/reference/beam_irradiance.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/water/surface.hpp"
-#include "tools/reference/beam_irradiance.hpp"
+#include "tests/reference/sine_scene.hpp"
 #include "tools/reference/floor_caustics.hpp"
 #include "tools/reference/optics.hpp"
 #include "tools/reference/reference_renderer.hpp"
-#include "tests/reference/sine_scene.hpp"
 
 #include <gtest/gtest.h>
 
@@ -39,8 +39,8 @@ TEST(reference_beam_irradiance, FlatSurfaceGivesTheClosedFormOnTiltedPlanes) {
     const double e_perp0 = 2.0 * cos_s * (1.0 - fresnel_reflectance(cos_s, 1.0, kIor)) / cos_t;
     // Points off the grid's lines (generic offsets), normals from flat to steep, all lit.
     const glm::dvec3 points[] = {{0.0137, -0.61, 0.2291}, {-0.3311, -0.27, -0.1719}, {0.2753, -0.853, 0.0417}};
-    const glm::dvec3 normals[] = {{0.0, 1.0, 0.0}, glm::normalize(glm::dvec3(0.6, 1.0, 0.2)),
-                                  glm::normalize(glm::dvec3(-1.0, 0.3, 0.4))};
+    const glm::dvec3 normals[] = {
+        {0.0, 1.0, 0.0}, glm::normalize(glm::dvec3(0.6, 1.0, 0.2)), glm::normalize(glm::dvec3(-1.0, 0.3, 0.4))};
     for (const glm::dvec3& p : points) {
         for (glm::dvec3 n : normals) {
             if (glm::dot(t, n) > 0.0) n = -n;  // the lit side
@@ -51,7 +51,8 @@ TEST(reference_beam_irradiance, FlatSurfaceGivesTheClosedFormOnTiltedPlanes) {
                 const double expected = e_perp0 * cos_receiver * std::exp(-scene.medium.sigma_t()[c] * (-p.y / cos_t));
                 // Congruent beams: each footprint is the surface triangle's parallel projection,
                 // flux / area is exact up to a few dozen double roundings.
-                EXPECT_NEAR(e[c], expected, 1e-9 * expected) << "point " << p.x << " normal " << n.x << " channel " << c;
+                EXPECT_NEAR(e[c], expected, 1e-9 * expected)
+                    << "point " << p.x << " normal " << n.x << " channel " << c;
             }
         }
     }
@@ -103,7 +104,8 @@ TEST(reference_beam_irradiance, MeshesUnderTheWavesRender) {
       "water": {"level": 0, "half_extent": 2,
                 "waves": {"model": "sum", "components": [{"amplitude": 0.01, "wavelength": 0.5, "direction_deg": 0}]}},
       "receivers": [{"type": "box", "half_size": [0.3, 0.1, 0.3], "translation": [0, -0.5, 0]}]
-    })", "box_under_waves.json");
+    })",
+                                    "box_under_waves.json");
     ReferenceReport report;
     const ImageRGBA32F image = render_reference(scene, {48, 48, 0, {}, {}}, &report);
     for (float v : image.rgba) {

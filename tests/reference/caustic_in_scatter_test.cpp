@@ -2,12 +2,12 @@
 // docs/model.md section 6's closed form on every kind of ray, and under a sine the modulated
 // in-scatter along a horizontal ray equals a crude independent estimate (the section-5
 // histogram of the sine's refraction map at the ray's depth, integrated along the ray).
+#include "tools/reference/caustic_in_scatter.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/water/surface.hpp"
-#include "tools/reference/caustic_in_scatter.hpp"
-#include "tools/reference/optics.hpp"
 #include "tests/reference/sine_profile.hpp"
 #include "tests/reference/sine_scene.hpp"
+#include "tools/reference/optics.hpp"
 
 #include <gtest/gtest.h>
 
@@ -37,15 +37,15 @@ TEST(reference_caustic_in_scatter, FlatWaterGivesTheSection6ClosedForm) {
         double length;
     };
     // Horizontal at two depths, straight down from the surface, rising obliquely, and along the beam.
-    for (const Case& ray : {Case{{-0.4, -0.5, 0.1}, {1, 0, 0}, 0.8}, Case{{0.0, -0.25, -0.3}, {0, 0, 1}, 0.6},
-                            Case{{0.1, 0.0, 0.0}, {0, -1, 0}, 1.0},
-                            Case{{0.2, -0.9, 0.0}, glm::normalize(glm::dvec3(-0.5, 0.6, 0.2)), 1.0},
-                            Case{{0.3, -0.1, 0.0}, t, 0.8}}) {
+    for (const Case& ray :
+         {Case{{-0.4, -0.5, 0.1}, {1, 0, 0}, 0.8}, Case{{0.0, -0.25, -0.3}, {0, 0, 1}, 0.6},
+          Case{{0.1, 0.0, 0.0}, {0, -1, 0}, 1.0},
+          Case{{0.2, -0.9, 0.0}, glm::normalize(glm::dvec3(-0.5, 0.6, 0.2)), 1.0}, Case{{0.3, -0.1, 0.0}, t, 0.8}}) {
         SCOPED_TRACE("ray from (" + std::to_string(ray.origin.x) + ", " + std::to_string(ray.origin.y) + ")");
         const glm::dvec3 got = in_scatter.segment_radiance(ray.origin, ray.direction, ray.length, glm::dvec3(0.0));
         for (int c = 0; c < 3; ++c) {
-            const double expected = water_path_radiance({0.3, scene.medium.sigma_t()[c], 0.9, -ray.origin.y, ray.length,
-                                                         ray.direction, t, e_perp0, 0.0});
+            const double expected = water_path_radiance(
+                {0.3, scene.medium.sigma_t()[c], 0.9, -ray.origin.y, ray.length, ray.direction, t, e_perp0, 0.0});
             // The flat beams give the closed-form irradiance to the polygon clipping's rounding
             // (1e-9, floor_caustics_test), so m = 1 within it; the segments' closed forms add up to
             // the whole one to rounding (1e-13 for a few hundred terms).
@@ -78,7 +78,8 @@ TEST(reference_caustic_in_scatter, SineAgreesWithAnIndependentEstimate) {
             const double sigma_t = scene.medium.sigma_t()[c];
             // Beams that land on the ray entered within 0.1 m of it (slopes up to A k = 0.3 turn
             // them by at most 0.075 rad, less than 1 m deep): the surface over |x| < 0.5 m holds them all.
-            const std::vector<double> profile = sine_profile(amplitude, k, depth, sigma_t, 0.5, floor_extent, texels, 1.333);
+            const std::vector<double> profile =
+                sine_profile(amplitude, k, depth, sigma_t, 0.5, floor_extent, texels, 1.333);
             double expected = 0.0;
             for (int i = 0; i < int(std::lround(length / texel)); ++i) {
                 const double u0 = i * texel;

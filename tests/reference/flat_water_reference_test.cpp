@@ -5,9 +5,9 @@
 // refusal of what it does not compute yet.
 #include "engine/core/errors.hpp"
 #include "engine/scene/scene_loader.hpp"
-#include "tools/reference/water_transport.hpp"
 #include "tools/reference/optics.hpp"
 #include "tools/reference/reference_renderer.hpp"
+#include "tools/reference/water_transport.hpp"
 
 #include <gtest/gtest.h>
 
@@ -24,10 +24,13 @@ constexpr double kDepth = 1.5;
 
 // Flat water over a grey floor 1.5 m down, constant sky, coastal-like medium with
 // g = 0.9 so that every term of the model contributes.
-Scene calm_scene(double sun_elevation_deg, const std::string& camera = R"("position": [0, 2, 0], "target": [0, 0, -1])") {
+Scene calm_scene(double sun_elevation_deg,
+                 const std::string& camera = R"("position": [0, 2, 0], "target": [0, 0, -1])") {
     const std::string text = R"({
-      "camera": {)" + camera + R"(, "fov_y_deg": 60},
-      "sun": {"elevation_deg": )" + std::to_string(sun_elevation_deg) + R"(, "azimuth_deg": 90, "irradiance": [3, 2, 1]},
+      "camera": {)" + camera +
+                             R"(, "fov_y_deg": 60},
+      "sun": {"elevation_deg": )" +
+                             std::to_string(sun_elevation_deg) + R"(, "azimuth_deg": 90, "irradiance": [3, 2, 1]},
       "sky": {"radiance": [0.3, 0.45, 0.7]},
       "floor": {"height": -1.5, "albedo": [0.6, 0.5, 0.4], "half_extent": 50},
       "water": {"level": 0, "ior": 1.333, "half_extent": 50},
@@ -56,10 +59,18 @@ glm::dvec3 closed_form_from_above(const Scene& scene, const glm::dvec3& view) {
     for (int c = 0; c < 3; ++c) {
         const double e_floor =
             scene.sun.irradiance[c] * cos_s * fresnel_t(cos_s) * std::exp(-sigma_t[c] * kDepth / cos_t_sun);
-        const double e_sky = kPi * scene.sky.radiance[c] * hemispherical_transmittance(kIor) * std::exp(-sigma_t[c] * kDepth);
+        const double e_sky =
+            kPi * scene.sky.radiance[c] * hemispherical_transmittance(kIor) * std::exp(-sigma_t[c] * kDepth);
         const double l_behind = scene.floor.albedo[c] * (e_floor + e_sky) / kPi;
-        InScatterInput in{scene.medium.sigma_s[c], sigma_t[c], scene.medium.g, 0.0, kDepth / cos_w,
-                          refracted_view, t_sun, scene.sun.irradiance[c] * cos_s * fresnel_t(cos_s) / cos_t_sun, l_behind};
+        InScatterInput in{scene.medium.sigma_s[c],
+                          sigma_t[c],
+                          scene.medium.g,
+                          0.0,
+                          kDepth / cos_w,
+                          refracted_view,
+                          t_sun,
+                          scene.sun.irradiance[c] * cos_s * fresnel_t(cos_s) / cos_t_sun,
+                          l_behind};
         const double l_water = water_path_radiance(in);
         const double reflectance = 1.0 - fresnel_t(cos_v);
         radiance[c] = reflectance * scene.sky.radiance[c] + fresnel_t(cos_v) / (kIor * kIor) * l_water;
@@ -166,7 +177,8 @@ TEST(reference_flat_water, RefusesWhatItDoesNotComputeYetWithAClearMessage) {
       "water": {"level": 0, "half_extent": 8,
                 "waves": {"model": "fft", "resolution": 16, "patch_size": 8, "wind_speed": 5}},
       "receivers": [{"type": "box", "half_size": [0.3, 0.1, 0.3], "translation": [0, -0.5, 0]}]
-    })", "ocean_with_box.json");
+    })",
+                                    "ocean_with_box.json");
     try {
         render_reference(ocean, {4, 4, 1, {}});
         FAIL() << "receiver meshes under an FFT ocean were accepted";

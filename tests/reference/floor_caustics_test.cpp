@@ -2,13 +2,13 @@
 // floor_caustics.hpp): the flux reaching the floor equals docs/model.md section 4's
 // integral computed independently here (midpoint quadrature over the analytic surface,
 // not the beams' own sum), and a flat surface's beams give the closed-form irradiance.
+#include "tools/reference/floor_caustics.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/water/surface.hpp"
-#include "tools/reference/floor_caustics.hpp"
-#include "tools/reference/optics.hpp"
 #include "tests/reference/section4_flux.hpp"
 #include "tests/reference/sine_profile.hpp"
 #include "tests/reference/sine_scene.hpp"
+#include "tools/reference/optics.hpp"
 
 #include <gtest/gtest.h>
 
@@ -53,8 +53,7 @@ TEST(reference_floor_caustics, FlatSurfaceBeamsGiveTheClosedFormIrradiance) {
     const double transmittance = 1.0 - fresnel_reflectance(cos_s, 1.0, kIor);
     for (double x : {-0.5, 0.0, 0.3}) {
         for (int c = 0; c < 3; ++c) {
-            const double expected =
-                2.0 * cos_s * transmittance * std::exp(-scene.medium.sigma_t()[c] * 1.0 / cos_t);
+            const double expected = 2.0 * cos_s * transmittance * std::exp(-scene.medium.sigma_t()[c] * 1.0 / cos_t);
             // Congruent footprints tile the floor exactly: the polygon clipping's rounding alone.
             EXPECT_NEAR(map.irradiance(x, 0.1)[c], expected, 1e-9 * expected) << "x " << x << " channel " << c;
         }
@@ -74,12 +73,15 @@ TEST(reference_floor_caustics, SineProfileMatchesSection5BeforeAtAndPastTheFocus
           "camera": {"position": [0, 2, 3], "target": [0, 0, 0]},
           "sun": {"elevation_deg": 90, "irradiance": [1, 1, 1]},
           "sky": {"radiance": [0, 0, 0]},
-          "floor": {"height": )" + std::to_string(-depth) + R"(, "half_extent": 1.5},
+          "floor": {"height": )" + std::to_string(-depth) +
+                                      R"(, "half_extent": 1.5},
           "water": {"level": 0, "half_extent": 1, "ior": 1.333,
-                    "waves": {"model": "sum", "components": [{"amplitude": )" + std::to_string(amplitude) +
+                    "waves": {"model": "sum", "components": [{"amplitude": )" +
+                                      std::to_string(amplitude) +
                                       R"(, "wavelength": 0.5, "direction_deg": 0}]}},
           "medium": {"sigma_a": [0.1, 0.1, 0.1], "sigma_s": [0, 0, 0], "g": 0}
-        })", "sine_profile.json");
+        })",
+                                  "sine_profile.json");
         scene.floor.height = -depth;  // exactly, not through the decimal text
         const auto surface = make_surface(scene.water->waves, 0.0, 0.0);
         const FloorCausticMap map(scene, *surface, texels, 1024);

@@ -50,10 +50,10 @@ TEST(reference_manifest, EveryBuiltInSceneHasAReference) {
         if (file.path().extension() != ".json") continue;
         ++scenes;
         const std::string name = file.path().filename().string();
-        EXPECT_TRUE(entries.contains(name)) << name << " has no reference; render it with\n  vkwater reference scenes/"
-                                            << name << " --out tests/references/"
-                                            << file.path().stem().string() << ".exr --manifest "
-                                            << "tests/references/manifest.json";
+        EXPECT_TRUE(entries.contains(name))
+            << name << " has no reference; render it with\n  vkwater reference scenes/" << name
+            << " --out tests/references/" << file.path().stem().string() << ".exr --manifest "
+            << "tests/references/manifest.json";
     }
     EXPECT_GT(scenes, 0);
 }

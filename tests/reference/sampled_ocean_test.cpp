@@ -8,8 +8,8 @@
 #include "engine/scene/scene_loader.hpp"
 #include "engine/water/fft_ocean_surface.hpp"
 #include "engine/water/sampled_ocean_surface.hpp"
-#include "tools/reference/floor_caustics.hpp"
 #include "tests/reference/section4_flux.hpp"
+#include "tools/reference/floor_caustics.hpp"
 
 #include <gtest/gtest.h>
 
@@ -41,8 +41,8 @@ Oceans make_oceans(const Scene& scene) {
     oceans.spectrum = std::make_shared<const FftOceanSpectrum>(make_ocean_spectrum(waves.ocean, waves.seed));
     oceans.exact = std::make_unique<FftOceanSurface>(oceans.spectrum, waves.ocean.choppiness, scene.water->level,
                                                      scene.water->time);
-    oceans.sampled = std::make_unique<SampledOceanSurface>(*oceans.spectrum, waves.ocean.choppiness,
-                                                           scene.water->level, scene.water->time, kPadding);
+    oceans.sampled = std::make_unique<SampledOceanSurface>(*oceans.spectrum, waves.ocean.choppiness, scene.water->level,
+                                                           scene.water->time, kPadding);
     return oceans;
 }
 

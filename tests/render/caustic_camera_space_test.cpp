@@ -13,12 +13,12 @@
 // to a receiver's edge or a silhouette the splats are cut and renormalised, a kernel estimate's
 // boundary bias, documented in the README and not asserted here).
 #include "engine/core/errors.hpp"
+#include "engine/scene/scene_loader.hpp"
+#include "engine/water/wave_sum_surface.hpp"
 #include "passes/frame/frame_needs.hpp"
 #include "passes/frame/renderer.hpp"
-#include "engine/scene/scene_loader.hpp"
-#include "tests/support/gpu_test.hpp"
-#include "engine/water/wave_sum_surface.hpp"
 #include "tests/caustics/caustics_support.hpp"
+#include "tests/support/gpu_test.hpp"
 #include "tools/reference/reference_renderer.hpp"
 
 #include <glm/glm.hpp>
@@ -227,8 +227,8 @@ TEST_F(CameraSpaceCaustics, EnergyUnderASineWaveAgainstSection4) {
         return ray.origin + ((-2.0 - ray.origin.y) / ray.direction.y) * ray.direction;
     };
     double x_lo = 1e300, x_hi = -1e300, z_lo = 1e300, z_hi = -1e300;
-    for (const glm::dvec2 corner : {glm::dvec2(0, 0), glm::dvec2(kWidth, 0), glm::dvec2(0, kHeight),
-                                    glm::dvec2(kWidth, kHeight)}) {
+    for (const glm::dvec2 corner :
+         {glm::dvec2(0, 0), glm::dvec2(kWidth, 0), glm::dvec2(0, kHeight), glm::dvec2(kWidth, kHeight)}) {
         const glm::dvec3 p = on_floor(corner.x, corner.y);
         x_lo = std::min(x_lo, p.x), x_hi = std::max(x_hi, p.x), z_lo = std::min(z_lo, p.z), z_hi = std::max(z_hi, p.z);
     }
@@ -238,7 +238,8 @@ TEST_F(CameraSpaceCaustics, EnergyUnderASineWaveAgainstSection4) {
     double area = 0.0;
     for (uint32_t y = 0; y < kHeight; ++y) {
         for (uint32_t x = 0; x < kWidth; ++x) {
-            const glm::dvec3 a = on_floor(x, y), b = on_floor(x + 1, y), c = on_floor(x + 1, y + 1), d = on_floor(x, y + 1);
+            const glm::dvec3 a = on_floor(x, y), b = on_floor(x + 1, y), c = on_floor(x + 1, y + 1),
+                             d = on_floor(x, y + 1);
             const double quad = 0.5 * std::abs((c.x - a.x) * (d.z - b.z) - (d.x - b.x) * (c.z - a.z));
             for (int ch = 0; ch < 3; ++ch) integral[ch] += layer[3 * (size_t(y) * kWidth + x) + ch] * quad;
             area += quad;
@@ -272,9 +273,10 @@ TEST_F(CameraSpaceCaustics, EnergyUnderASineWaveAgainstSection4) {
     const glm::dvec3 band = 2.0 * (0.5 * sigma2) * (glm::abs(slope_lo) + glm::abs(slope_hi)) * z_width;
     for (int ch = 0; ch < 3; ++ch) {
         const double ratio = integral[ch] / expected[ch];
-        std::printf("sine, channel %d: %.6g W (camera-space) / %.6g W (section 4, photons landing in the %.2f m^2 "
-                    "footprint) = %.5f; bound %.4f\n",
-                    ch, integral[ch], expected[ch], area, ratio, band[ch] / expected[ch]);
+        std::printf(
+            "sine, channel %d: %.6g W (camera-space) / %.6g W (section 4, photons landing in the %.2f m^2 "
+            "footprint) = %.5f; bound %.4f\n",
+            ch, integral[ch], expected[ch], area, ratio, band[ch] / expected[ch]);
         EXPECT_NEAR(ratio, 1.0, band[ch] / expected[ch]);
     }
 }
@@ -307,8 +309,8 @@ TEST_F(CameraSpaceCaustics, BlurRuleCullsItAndTheImageEqualsTheForcedOne) {
     ASSERT_NE(blur, nullptr);
     EXPECT_FALSE(blur->needed);
     EXPECT_NE(blur->reason.find("camera space"), std::string::npos) << blur->reason;
-    const Scene forced = builtin("pool.json", {"water.grid_resolution=128", "effects.caustic_blur.radius=1",
-                                               "effects.caustic_blur.mode=on"});
+    const Scene forced = builtin(
+        "pool.json", {"water.grid_resolution=128", "effects.caustic_blur.radius=1", "effects.caustic_blur.mode=on"});
     Renderer renderer(context());
     const RenderResult a = renderer.render(culled, with_layer(64, 48));
     const RenderResult b = renderer.render(forced, with_layer(64, 48));

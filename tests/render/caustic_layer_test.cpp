@@ -3,8 +3,8 @@
 // stand-in is the model's irradiance): the floor seen through the surface, receiver meshes seen
 // through it (the refraction scene view's own layer), and the floor seen from a camera in the
 // water. And the layer leaves the image as it is.
-#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
+#include "passes/frame/renderer.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/metrics/metrics.hpp"
 #include "tools/reference/reference_renderer.hpp"
@@ -51,7 +51,9 @@ struct LayerComparison {
 LayerComparison compare_layers(const ExtraLayer& got, const ExtraLayer& want, double floor_value, double relative,
                                bool view_lookup) {
     LayerComparison result;
-    auto at = [&](const ExtraLayer& layer, int x, int y, int c) { return double(layer.rgb[3 * (size_t(y) * kWidth + x) + c]); };
+    auto at = [&](const ExtraLayer& layer, int x, int y, int c) {
+        return double(layer.rgb[3 * (size_t(y) * kWidth + x) + c]);
+    };
     for (int y = 1; y + 1 < int(kHeight); ++y) {
         for (int x = 1; x + 1 < int(kWidth); ++x) {
             bool edge = false, lit = false;
@@ -140,7 +142,8 @@ TEST_F(CausticLayerFromBelow, FloorSeenFromTheWaterMatchesAndTheSurfaceIsZero) {
       "floor": {"height": -3, "half_extent": 30},
       "water": {"level": 0, "half_extent": 30, "waves": {"model": "flat"}},
       "medium": {"preset": "clear-ocean"}
-    })", "below.json");
+    })",
+                                    "below.json");
     Renderer renderer(context());
     const RenderResult real_time = renderer.render(scene, with_layer());
     const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});

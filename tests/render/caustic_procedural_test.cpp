@@ -1,8 +1,8 @@
 // Guardado & Sánchez-Crespo 2004's procedural caustic, the baseline (effects.caustics.method = procedural,
 // passes/caustics/caustics_procedural.hpp): under flat water its backward ray returns along the sun, so it
 // is the flat-surface stand-in; under waves it stays finite and non-negative for every sun.
-#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
+#include "passes/frame/renderer.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/metrics/metrics.hpp"
 

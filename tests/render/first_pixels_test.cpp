@@ -3,9 +3,9 @@
 // and checked against the model (docs/model.md section 1):
 //   floor radiance = rho (E_s cos(theta_s) + pi L_sky) / pi,   sky radiance = L_sky.
 #include "engine/image/exr_io.hpp"
+#include "engine/scene/scene_loader.hpp"
 #include "passes/common/frame_constants.hpp"
 #include "passes/frame/renderer.hpp"
-#include "engine/scene/scene_loader.hpp"
 #include "tests/support/gpu_test.hpp"
 
 #include <glm/glm.hpp>
@@ -23,8 +23,7 @@ constexpr uint32_t kHeight = 120;
 // Where the camera ray through pixel (x, y)'s centre meets the floor plane, if it does
 // within the floor's extent: computed in double precision from the same matrices.
 bool ray_hits_floor(const Scene& scene, int x, int y) {
-    const glm::dmat4 view_proj =
-        projection_matrix(scene.camera, double(kWidth) / kHeight) * view_matrix(scene.camera);
+    const glm::dmat4 view_proj = projection_matrix(scene.camera, double(kWidth) / kHeight) * view_matrix(scene.camera);
     const glm::dmat4 inverse = glm::inverse(view_proj);
     const glm::dvec2 ndc{2.0 * (x + 0.5) / kWidth - 1.0, 1.0 - 2.0 * (y + 0.5) / kHeight};
     const glm::dvec4 near_point = inverse * glm::dvec4(ndc, 1.0, 1.0);
@@ -43,7 +42,8 @@ TEST_F(FirstPixels, DefaultSceneFloorAndSkyMatchTheModel) {
     const std::filesystem::path exr = std::filesystem::path(::testing::TempDir()) / "first_pixels.exr";
     {
         Renderer renderer(context());
-        const RenderResult result = renderer.render(scene, {kWidth, kHeight, /*check_finite=*/true, fg::TimingMode::None});
+        const RenderResult result =
+            renderer.render(scene, {kWidth, kHeight, /*check_finite=*/true, fg::TimingMode::None});
         write_exr(exr, result.image);
     }
     const ImageRGBA32F image = read_exr(exr);
@@ -51,7 +51,7 @@ TEST_F(FirstPixels, DefaultSceneFloorAndSkyMatchTheModel) {
     ASSERT_EQ(image.height, int(kHeight));
 
     const int floor_x = kWidth / 2, floor_y = kHeight - 1;  // bottom centre
-    const int sky_x = kWidth / 2, sky_y = 0;                 // top centre
+    const int sky_x = kWidth / 2, sky_y = 0;                // top centre
     ASSERT_TRUE(ray_hits_floor(scene, floor_x, floor_y));
     ASSERT_FALSE(ray_hits_floor(scene, sky_x, sky_y));
 

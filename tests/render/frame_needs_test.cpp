@@ -14,13 +14,15 @@ namespace {
 
 Scene scene_with(const std::string& camera, const std::vector<std::string>& overrides = {}) {
     return parse_scene(R"({
-      "camera": {)" + camera + R"(, "fov_y_deg": 60, "near": 0.05},
+      "camera": {)" + camera +
+                           R"(, "fov_y_deg": 60, "near": 0.05},
       "sun": {"elevation_deg": 60},
       "sky": {"radiance": [1, 1, 1]},
       "floor": {"height": -2, "half_extent": 10},
       "water": {"level": 0, "half_extent": 10,
                 "waves": {"model": "sum", "components": [{"amplitude": 0.1, "wavelength": 2}]}}
-    })", "needs_test.json", overrides);
+    })",
+                       "needs_test.json", overrides);
 }
 
 const fg::EffectDecision& decision(const fg::FrameNeeds& needs, Effect effect) {
@@ -43,8 +45,8 @@ TEST(frame_needs, UnderwaterViewFollowsTheNearPlaneAgainstTheCrests) {
     // on the plane, or below does (the near plane is 0.05 m away).
     for (const auto& [height, needed] : std::vector<std::pair<double, bool>>{
              {1.0, false}, {0.2, false}, {0.1, true}, {0.0, true}, {-1e-6, true}, {-1.0, true}}) {
-        const std::string camera = "\"position\": [0, " + std::to_string(height) + ", 0], \"target\": [0, " +
-                                   std::to_string(height) + ", -1]";
+        const std::string camera =
+            "\"position\": [0, " + std::to_string(height) + ", 0], \"target\": [0, " + std::to_string(height) + ", -1]";
         const auto needs = decide_frame_needs(scene_with(camera), 4.0 / 3.0);
         EXPECT_EQ(decision(needs, Effect::UnderwaterView).needed, needed) << "camera at y = " << height;
         EXPECT_FALSE(decision(needs, Effect::UnderwaterView).reason.empty());
@@ -76,7 +78,8 @@ TEST(frame_needs, CausticsNeedTheSunUpAndTheFloorUnderTheWater) {
 }
 
 TEST(frame_needs, NoWaterNoWaterEffects) {
-    const auto needs = decide_frame_needs(scene_with(R"("position": [0, 2, 5], "target": [0, 0, 0])", {"water=null"}), 1.0);
+    const auto needs =
+        decide_frame_needs(scene_with(R"("position": [0, 2, 5], "target": [0, 0, 0])", {"water=null"}), 1.0);
     EXPECT_FALSE(decision(needs, Effect::Water).needed);
     EXPECT_FALSE(decision(needs, Effect::UnderwaterView).needed);
 }

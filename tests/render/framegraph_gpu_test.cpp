@@ -10,8 +10,8 @@
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/vk/resources.hpp"
 #include "passes/present/readback.hpp"
-#include "tools/benchmarks/chain_graph.hpp"
 #include "tests/support/gpu_test.hpp"
+#include "tools/benchmarks/chain_graph.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -60,7 +60,7 @@ INSTANTIATE_TEST_SUITE_P(BothRecordingKinds, FrameGraphChain,
                          ::testing::Values(fg::RecordingKind::DynamicRendering, fg::RecordingKind::RenderPassObject),
                          [](const auto& param_info) {
                              return param_info.param == fg::RecordingKind::DynamicRendering ? "DynamicRendering"
-                                                                                      : "RenderPassObject";
+                                                                                            : "RenderPassObject";
                          });
 
 using FrameGraphHazard = GpuTest;

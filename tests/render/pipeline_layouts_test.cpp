@@ -6,9 +6,9 @@
 // with the depth colour, and render-pass recording. A false positive here means that either the
 // rule or the pass's declared layout is wrong. The figures of the process (pipelines checked,
 // declared bindings no stage uses, stages without a push block) are printed at its end.
-#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/spirv_reflection.hpp"
+#include "passes/frame/renderer.hpp"
 #include "tests/support/gpu_test.hpp"
 
 #include <algorithm>
@@ -36,9 +36,9 @@ std::vector<std::string> builtin_scenes() {
 std::vector<std::string> effects_on(bool underwater_view, std::vector<std::string> more = {}) {
     std::vector<std::string> overrides = {"water.grid_resolution=16", "effects.godrays.grid=8",
                                           "effects.caustics.analytic_flat=false"};
-    for (const fg::Effect effect : fg::kAllEffects) {
-        if (effect == fg::Effect::UnderwaterView && !underwater_view) continue;  // the per-frame medium's variants
-        overrides.push_back(std::string("effects.") + fg::effect_name(effect) + ".mode=on");
+    for (const Effect effect : kAllEffects) {
+        if (effect == Effect::UnderwaterView && !underwater_view) continue;  // the per-frame medium's variants
+        overrides.push_back(std::string("effects.") + effect_name(effect) + ".mode=on");
     }
     overrides.insert(overrides.end(), more.begin(), more.end());
     return overrides;
@@ -83,17 +83,15 @@ TEST_P(BuiltinScenePipelines, AsIsAndWithEveryEffectOn) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BuiltinScenePipelines, ::testing::ValuesIn(builtin_scenes()),
-                         [](const auto& param_info) {
-                             return param_info.param.substr(0, param_info.param.find('.'));
-                         });
+                         [](const auto& param_info) { return param_info.param.substr(0, param_info.param.find('.')); });
 
 TEST_F(PipelineLayouts, PoolShaderVariants) {
     for (const char* kernel : {"bilinear", "adaptive", "footprint"}) {
         render("pool.json", effects_on(true, {std::string("effects.caustics.kernel=") + kernel}));
     }
     render("pool.json", effects_on(true, {"effects.caustics.method=procedural"}));
-    render("pool.json", effects_on(true, {"effects.reflection.method=screen_space",
-                                          "effects.refraction.method=screen_space"}));
+    render("pool.json",
+           effects_on(true, {"effects.reflection.method=screen_space", "effects.refraction.method=screen_space"}));
     render("pool.json", effects_on(true, {"effects.water.fresnel=schlick", "effects.water.depth_blend={}"}));
     RenderOptions render_pass;
     render_pass.recording = fg::RecordingKind::RenderPassObject;

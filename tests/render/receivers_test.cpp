@@ -1,8 +1,8 @@
 // Receiver meshes on the device: the top face of a box above the water is a Lambertian
 // surface lit by the sun and the sky, L = rho (E_s cos(theta_s) + pi L_sky) / pi (the
 // model's closed form, docs/model.md section 1), read at the pixel that sees its centre.
-#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
+#include "passes/frame/renderer.hpp"
 #include "tests/support/gpu_test.hpp"
 
 #include <numbers>
@@ -21,15 +21,16 @@ TEST_F(ReceiverPass, BoxTopAboveTheWaterMatchesTheClosedForm) {
       "floor": {"height": -2, "half_extent": 10},
       "water": {"level": 0, "half_extent": 10},
       "receivers": [{"type": "box", "half_size": [1, 1, 1], "albedo": [0.7, 0.5, 0.3]}]
-    })", "box.json");
+    })",
+                                    "box.json");
     Renderer renderer(context());
     const RenderResult result = renderer.render(scene, {33, 33, true, fg::TimingMode::None});
     const float* centre = result.image.pixel(16, 16);
     const double cos_sun = -scene.sun.direction.y;
     for (int c = 0; c < 3; ++c) {
         const double albedo = scene.receivers[0].albedo[c];
-        const double expected = albedo * (scene.sun.irradiance[c] * cos_sun + std::numbers::pi * scene.sky.radiance[c]) /
-                                std::numbers::pi;
+        const double expected =
+            albedo * (scene.sun.irradiance[c] * cos_sun + std::numbers::pi * scene.sky.radiance[c]) / std::numbers::pi;
         // As in the first-pixels test: ~10 fp32 roundings of the inputs and the shading,
         // plus the interpolated normal's renormalisation (another few): 2e-6 relative.
         EXPECT_NEAR(centre[c], expected, 2e-6 * expected) << "channel " << c;

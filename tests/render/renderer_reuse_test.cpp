@@ -1,8 +1,8 @@
 // The renderer compiles its frame graph once per configuration and reuses it: a new
 // camera changes the image without a recompile (the constants are read at record
 // time), a new output size recompiles, and no pipeline is ever created twice.
-#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
+#include "passes/frame/renderer.hpp"
 #include "tests/support/gpu_test.hpp"
 
 #include <filesystem>

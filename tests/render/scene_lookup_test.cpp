@@ -4,15 +4,15 @@
 // floor under a sky without red, so the red channel is the box alone (seen directly, in
 // the reflection and through the surface). Plus the needs rules (culled = forced-on) and
 // finite output with the camera grazing the surface and under it.
-#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
+#include "passes/frame/renderer.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/metrics/metrics.hpp"
 #include "tools/reference/reference_renderer.hpp"
 
 #include <algorithm>
-#include <filesystem>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -34,9 +34,9 @@ const char* kCameraAbove = R"({"position": [0.8, 2.2, 2.6], "target": [0, -0.8, 
 float red(const ImageRGBA32F& image, int x, int y) { return image.pixel(x, y)[0]; }
 
 struct EdgeReport {
-    int mismatched = 0;          // pixels whose red differs from the reference by more than delta
-    int far_from_edges = 0;      // of those, how many lie more than the allowed distance from an edge
-    std::string examples;        // the first few of them: "(x, y) real-time vs reference"
+    int mismatched = 0;      // pixels whose red differs from the reference by more than delta
+    int far_from_edges = 0;  // of those, how many lie more than the allowed distance from an edge
+    std::string examples;    // the first few of them: "(x, y) real-time vs reference"
 };
 
 // Edges: reference pixels whose 3x3 neighbourhood spans more than delta in red. A
@@ -105,27 +105,32 @@ TEST_P(SceneLookupEdges, ReflectedAndRefractedBoxEdgesLandWhereTheRayTracePutsTh
     // by one pixel each way from the ray trace's, two with the pixel's own rounding.
     const int reach = 2;
     const EdgeReport report = compare_edges(real_time.image, reference, delta, reach);
-    EXPECT_EQ(report.far_from_edges, 0) << GetParam().name << ": " << report.mismatched << " pixels differ by more than "
-                                        << delta << ", " << report.far_from_edges << " of them more than " << reach
+    EXPECT_EQ(report.far_from_edges, 0) << GetParam().name << ": " << report.mismatched
+                                        << " pixels differ by more than " << delta << ", " << report.far_from_edges
+                                        << " of them more than " << reach
                                         << " pixels from any edge:" << report.examples;
     // Without the lookups the same comparison must fail (the test can see the effect):
     // the box's reflection and its lower half through the water, about a hundred pixels
     // at this size (98 measured), are missing; half of them is a safe floor.
-    const Scene without = box_in_calm_water(kCameraAbove, R"({"reflection": {"mode": "off"}, "refraction": {"mode": "off"}})");
+    const Scene without =
+        box_in_calm_water(kCameraAbove, R"({"reflection": {"mode": "off"}, "refraction": {"mode": "off"}})");
     const RenderResult plain = renderer.render(without, {kWidth, kHeight, true, fg::TimingMode::None});
     EXPECT_GT(compare_edges(plain.image, reference, delta, reach).far_from_edges, 50)
         << "the reflected and refracted box should be missing without the scene views";
     const double rel_mse = metrics::rel_mse(metrics::rgb_view(real_time.image), metrics::rgb_view(reference),
                                             metrics::counted_pixels(kWidth, kHeight, nullptr));
-    std::printf("[ figures  ] %s: relMSE %.3g against the reference; %d pixels differ by > 1%% of the peak, "
-                "%d of them more than %d px from an edge\n",
-                GetParam().name, rel_mse, report.mismatched, report.far_from_edges, reach);
+    std::printf(
+        "[ figures  ] %s: relMSE %.3g against the reference; %d pixels differ by > 1%% of the peak, "
+        "%d of them more than %d px from an edge\n",
+        GetParam().name, rel_mse, report.mismatched, report.far_from_edges, reach);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Methods, SceneLookupEdges,
-    ::testing::Values(MethodCase{"projective", R"({"reflection": {"method": "projective"}, "refraction": {"method": "projective"}})"},
-                      MethodCase{"screen_space", R"({"reflection": {"method": "screen_space"}, "refraction": {"method": "screen_space"}})"}),
+    ::testing::Values(
+        MethodCase{"projective", R"({"reflection": {"method": "projective"}, "refraction": {"method": "projective"}})"},
+        MethodCase{"screen_space",
+                   R"({"reflection": {"method": "screen_space"}, "refraction": {"method": "screen_space"}})"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
 bool all_finite_and_non_negative(const ImageRGBA32F& image) {
@@ -153,8 +158,10 @@ TEST_P(SceneLookupExtremes, GrazingAndUnderwaterCamerasStayFinite) {
 
 INSTANTIATE_TEST_SUITE_P(
     Methods, SceneLookupExtremes,
-    ::testing::Values(MethodCase{"projective", R"({"reflection": {"method": "projective"}, "refraction": {"method": "projective"}})"},
-                      MethodCase{"screen_space", R"({"reflection": {"method": "screen_space"}, "refraction": {"method": "screen_space"}})"}),
+    ::testing::Values(
+        MethodCase{"projective", R"({"reflection": {"method": "projective"}, "refraction": {"method": "projective"}})"},
+        MethodCase{"screen_space",
+                   R"({"reflection": {"method": "screen_space"}, "refraction": {"method": "screen_space"}})"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
 TEST_F(SceneLookupRulesShallow, ShallowBlendFadesScreenSpaceRefractionToTheDirectView) {
@@ -189,8 +196,10 @@ Scene sphere_scene(double sphere_height, const std::string& effects) {
       "floor": {"height": -2, "half_extent": 10},
       "water": {"level": 0, "half_extent": 10, "grid_resolution": 8, "waves": {"model": "flat"}},
       "medium": {"sigma_a": [0.1, 0.1, 0.1], "sigma_s": [0, 0, 0]},
-      "receivers": [{"type": "sphere", "radius": 0.5, "translation": [0, )" + std::to_string(sphere_height) + R"(, 0]}],
-      "effects": )" + effects + "}",
+      "receivers": [{"type": "sphere", "radius": 0.5, "translation": [0, )" +
+                           std::to_string(sphere_height) + R"(, 0]}],
+      "effects": )" + effects +
+                           "}",
                        "sphere.json");
 }
 

@@ -1,8 +1,8 @@
 // The sky seen directly on the device: the gradient model of scenes/README.md,
 // L = mix(horizon, zenith, dir.y^e) above the horizon, checked at every pixel whose
 // ray rises against vkw::sky_radiance evaluated on that pixel's ray in double.
-#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
+#include "passes/frame/renderer.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/reference/reference_renderer.hpp"
 
@@ -20,7 +20,8 @@ TEST_F(SkyPass, GradientSkyMatchesTheCpuFormulaAtEveryRisingPixel) {
       "sky": {"model": "gradient", "zenith": [0.1, 0.3, 0.9], "horizon": [0.8, 0.7, 0.6],
               "ground": [0.2, 0.2, 0.2], "exponent": 0.5},
       "floor": {"height": -100, "half_extent": 1}
-    })", "gradient_sky.json");
+    })",
+                                    "gradient_sky.json");
     const uint32_t width = 64, height = 48;
     Renderer renderer(context());
     const RenderResult result = renderer.render(scene, {width, height, true, fg::TimingMode::None});

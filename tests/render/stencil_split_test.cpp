@@ -8,13 +8,13 @@
 // boundary's trace on the near plane (the CPU class of one of the 8 neighbouring pixel
 // centres differs): there fp32 geometry, the grid's chords (below a tenth of a pixel here)
 // and the rasteriser's top-left rule may fall either way.
-#include "passes/frame/frame_needs.hpp"
-#include "passes/frame/renderer.hpp"
-#include "passes/water/water_volume_stencil.hpp"
+#include "engine/framegraph/pass_context.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/water/surface.hpp"
-#include "engine/framegraph/pass_context.hpp"
+#include "passes/frame/frame_needs.hpp"
+#include "passes/frame/renderer.hpp"
 #include "passes/present/readback.hpp"
+#include "passes/water/water_volume_stencil.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/reference/reference_renderer.hpp"
 
@@ -59,7 +59,8 @@ std::vector<bool> cpu_classification(const Scene& scene) {
     for (uint32_t y = 0; y < kHeight; ++y) {
         for (uint32_t x = 0; x < kWidth; ++x) {
             const ref::Ray ray = ref::camera_ray(scene.camera, kWidth, kHeight, x + 0.5, y + 0.5);
-            const glm::dvec3 p = ray.origin + ray.direction * (scene.camera.near_plane / glm::dot(ray.direction, forward));
+            const glm::dvec3 p =
+                ray.origin + ray.direction * (scene.camera.near_plane / glm::dot(ray.direction, forward));
             inside[size_t{y} * kWidth + x] = std::abs(p.x) <= water.half_extent && std::abs(p.z) <= water.half_extent &&
                                              p.y > water_bottom(scene) && p.y < surface->height_at(p.x, p.z);
         }

@@ -7,9 +7,9 @@
 // - under clear water, a box above it shadows the floor's stand-in sun along the refracted beam;
 // - under clear water, a slab under the water shadows the floor along the refracted beam, with
 //   the stand-in and with the caustic map.
+#include "engine/scene/scene_loader.hpp"
 #include "passes/common/frame_constants.hpp"
 #include "passes/frame/renderer.hpp"
-#include "engine/scene/scene_loader.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/reference/optics.hpp"
 
@@ -54,7 +54,8 @@ TEST_F(SunShadow, BoxShadowsTheFloorAndNotItself) {
       "sky": {"radiance": [0.2, 0.3, 0.4]},
       "floor": {"height": 0, "half_extent": 10, "albedo": [0.6, 0.5, 0.4]},
       "receivers": [{"type": "box", "half_size": [1, 1, 1], "translation": [0, 1, 0], "albedo": [0.7, 0.5, 0.3]}]
-    })", "shadow.json");
+    })",
+                                    "shadow.json");
     Renderer renderer(context());
     const RenderResult result = renderer.render(scene, {kSize, kSize, true, fg::TimingMode::None});
     const FrameConstants constants = make_frame_constants(scene, kSize, kSize);
@@ -96,9 +97,11 @@ TEST_F(SunShadow, ObjectsAboveTheWaterShadowTheSunAlongTheRefractedBeam) {
           "floor": {"height": -2, "half_extent": 10, "albedo": [0.6, 0.5, 0.4]},
           "water": {"level": 0, "half_extent": 10},
           "medium": {"sigma_a": [0, 0, 0], "sigma_s": [0, 0, 0], "g": 0},
-          "effects": {"caustics": {"mode": ")" + std::string(caustics) + R"("}},
+          "effects": {"caustics": {"mode": ")" +
+                                            std::string(caustics) + R"("}},
           "receivers": [{"type": "box", "half_size": [1, 1, 1], "translation": [0, 2, 0]}]
-        })", "shadow_under_water.json");
+        })",
+                                        "shadow_under_water.json");
         Renderer renderer(context());
         const RenderResult result = renderer.render(scene, {kSize, kSize, true, fg::TimingMode::None});
         const FrameConstants constants = make_frame_constants(scene, kSize, kSize);
@@ -130,22 +133,25 @@ TEST_F(SunShadow, ObjectsUnderTheWaterShadowAlongTheRefractedBeam) {
     for (const char* caustics : {"off", "on"}) {
         const auto scene_looking_at = [&](double x) {
             return parse_scene(R"({
-              "camera": {"position": [)" + std::to_string(x) + R"(, -1.6, 4], "target": [)" + std::to_string(x) +
+              "camera": {"position": [)" +
+                                   std::to_string(x) + R"(, -1.6, 4], "target": [)" + std::to_string(x) +
                                    R"(, -2, 0], "fov_y_deg": 30},
               "sun": {"elevation_deg": 60, "azimuth_deg": 90, "irradiance": [2, 3, 4]},
               "sky": {"radiance": [0.2, 0.3, 0.4]},
               "floor": {"height": -2, "half_extent": 10, "albedo": [0.6, 0.5, 0.4]},
               "water": {"level": 0, "half_extent": 10},
               "medium": {"sigma_a": [0, 0, 0], "sigma_s": [0, 0, 0], "g": 0},
-              "effects": {"caustics": {"mode": ")" + std::string(caustics) + R"("}},
+              "effects": {"caustics": {"mode": ")" +
+                                   std::string(caustics) + R"("}},
               "receivers": [{"type": "box", "half_size": [1, 0.25, 1], "translation": [0, -1, 0]}]
-            })", "slab_under_water.json");
+            })",
+                               "slab_under_water.json");
         };
         Renderer renderer(context());
         const Scene shadowed_scene = scene_looking_at(-0.4);
         const RenderResult shadowed_image = renderer.render(shadowed_scene, {kSize, kSize, true, fg::TimingMode::None});
-        const float* shadowed = pixel_seeing(shadowed_image, make_frame_constants(shadowed_scene, kSize, kSize),
-                                             {-0.4, -2.0, 0.0});
+        const float* shadowed =
+            pixel_seeing(shadowed_image, make_frame_constants(shadowed_scene, kSize, kSize), {-0.4, -2.0, 0.0});
         const Scene lit_scene = scene_looking_at(3.0);
         const RenderResult lit_image = renderer.render(lit_scene, {kSize, kSize, true, fg::TimingMode::None});
         const float* lit = pixel_seeing(lit_image, make_frame_constants(lit_scene, kSize, kSize), {3.0, -2.0, 0.0});
@@ -167,8 +173,10 @@ TEST_F(SunShadow, ObjectsUnderTheWaterShadowAlongTheRefractedBeam) {
 TEST_F(SunShadow, ShadowMapPassRunsOnlyWithObjectsAndTheSunUp) {
     const std::string pipeline = "sun shadow map/sun shadow map/dynamic";
     const auto renders_shadow_map = [&](const std::string& extra) {
-        const Scene scene = parse_scene(R"({"camera": {"position": [0, 5, 5], "target": [0, 0, 0]}, "sky": {"radiance": [0.2, 0.3, 0.4]})" + extra + "}",
-                                        "shadow.json");
+        const Scene scene = parse_scene(
+            R"({"camera": {"position": [0, 5, 5], "target": [0, 0, 0]}, "sky": {"radiance": [0.2, 0.3, 0.4]})" + extra +
+                "}",
+            "shadow.json");
         Renderer renderer(context());
         renderer.render(scene, {16, 16, true, fg::TimingMode::None});
         return renderer.pipelines().contains(pipeline);

@@ -5,8 +5,8 @@
 // ray brings nothing. R is Optical Phenomena c. 2008's power term (1 - E.N)^q, Schlick's approximation or the exact
 // form, evaluated here in double from the pixel's own ray (flat water: the normal is +y).
 #include "engine/core/errors.hpp"
-#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
+#include "passes/frame/renderer.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/reference/reference_renderer.hpp"
 
@@ -87,7 +87,8 @@ TEST_F(SurfaceShading, ExactFresnelReflectsTheSky) {
     const Scene scene = surface_scene({});
     Renderer renderer(context());
     const RenderResult rendered = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
-    const Result r = compare(scene, rendered.image, [](double c, double) { return glm::dvec3(kSky * exact_reflectance(c)); });
+    const Result r =
+        compare(scene, rendered.image, [](double c, double) { return glm::dvec3(kSky * exact_reflectance(c)); });
     std::printf("exact: %d pixels, worst %.2e\n", r.pixels, r.worst);
     EXPECT_GT(r.pixels, int(kWidth * kHeight) / 2);
     EXPECT_LE(r.worst, kChainTolerance);
@@ -97,7 +98,8 @@ TEST_F(SurfaceShading, Seed001PowerTermFresnel) {
     const Scene scene = surface_scene({"effects.water.fresnel=power"});
     Renderer renderer(context());
     const RenderResult rendered = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
-    const Result r = compare(scene, rendered.image, [](double c, double) { return glm::dvec3(kSky * std::pow(1.0 - c, kPower)); });
+    const Result r =
+        compare(scene, rendered.image, [](double c, double) { return glm::dvec3(kSky * std::pow(1.0 - c, kPower)); });
     std::printf("power term q = 4.5: %d pixels, worst %.2e\n", r.pixels, r.worst);
     EXPECT_GT(r.pixels, int(kWidth * kHeight) / 2);
     EXPECT_LE(r.worst, kChainTolerance);
@@ -108,8 +110,9 @@ TEST_F(SurfaceShading, SchlickFresnel) {
     Renderer renderer(context());
     const RenderResult rendered = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
     const double r0 = std::pow((kIor - 1.0) / (kIor + 1.0), 2.0);
-    const Result r = compare(scene, rendered.image,
-                             [r0](double c, double) { return glm::dvec3(kSky * (r0 + (1.0 - r0) * std::pow(1.0 - c, 5.0))); });
+    const Result r = compare(scene, rendered.image, [r0](double c, double) {
+        return glm::dvec3(kSky * (r0 + (1.0 - r0) * std::pow(1.0 - c, 5.0)));
+    });
     std::printf("Schlick: %d pixels, worst %.2e\n", r.pixels, r.worst);
     EXPECT_LE(r.worst, kChainTolerance);
 }

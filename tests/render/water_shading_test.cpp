@@ -4,8 +4,8 @@
 // form within 1e-8); Snell's window's radius measured on the real-time image (section
 // 7); and finite output while the view sweeps through the horizon and with the camera on
 // the water plane.
-#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
+#include "passes/frame/renderer.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/reference/reference_renderer.hpp"
 
@@ -31,9 +31,9 @@ TEST_F(WaterShading, FlatWaterFromAboveMatchesTheClosedFormAtFourElevations) {
         SCOPED_TRACE("camera elevation " + std::to_string(elevation));
         // A narrow view straight down the given elevation, 3 m above the water.
         const double e = elevation * kPi / 180.0;
-        const std::string direction = elevation == 90.0 ? "[0, -1, 0]"
-                                                        : "[0, " + std::to_string(-std::sin(e)) + ", " +
-                                                              std::to_string(-std::cos(e)) + "]";
+        const std::string direction =
+            elevation == 90.0 ? "[0, -1, 0]"
+                              : "[0, " + std::to_string(-std::sin(e)) + ", " + std::to_string(-std::cos(e)) + "]";
         const Scene scene = calm({"camera.direction=" + direction, "camera.fov_y_deg=2"});
         const RenderResult image = renderer.render(scene, {9, 9, true, fg::TimingMode::None});
         const ImageRGBA32F reference = ref::render_reference(scene, {9, 9, 1, {}});
@@ -72,10 +72,10 @@ TEST_F(WaterShading, FiniteThroughTheHorizonAndOnTheWaterPlane) {
     for (double pitch = -30.0; pitch <= 30.0; pitch += 7.5) {
         const double p = pitch * kPi / 180.0;
         for (double height : {1.0, 1e-6, 0.0, -1e-6, -1.0}) {
-            const Scene scene = calm({"camera.position=[0, " + std::to_string(height) + ", 0]",
-                                      "camera.direction=[0, " + std::to_string(std::sin(p)) + ", " +
-                                          std::to_string(-std::cos(p)) + "]",
-                                      "camera.fov_y_deg=90"});
+            const Scene scene =
+                calm({"camera.position=[0, " + std::to_string(height) + ", 0]",
+                      "camera.direction=[0, " + std::to_string(std::sin(p)) + ", " + std::to_string(-std::cos(p)) + "]",
+                      "camera.fov_y_deg=90"});
             EXPECT_NO_THROW(renderer.render(scene, {24, 16, true, fg::TimingMode::None}))
                 << "pitch " << pitch << ", height " << height;
         }

@@ -2,8 +2,8 @@
 // side by side at 64x48, for the scenes where the real-time shading has no
 // approximation left (flat water: the analytic lookups are exact): the error must be
 // fp32 rounding alone. Plus the water rule's culled image against its forced-on image.
-#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
+#include "passes/frame/renderer.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/metrics/metrics.hpp"
 #include "tools/reference/reference_renderer.hpp"
@@ -59,7 +59,8 @@ TEST_F(WaterBody, RaysFromTheWaterThatMeetNothingSeeNothing) {
       "floor": {"height": -1, "half_extent": 2},
       "water": {"level": 0, "half_extent": 2, "waves": {"model": "flat"}},
       "medium": {"preset": "clear-ocean"}
-    })", "pool_edge.json");
+    })",
+                                    "pool_edge.json");
     Renderer renderer(context());
     const RenderResult real_time = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
     const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
@@ -76,8 +77,8 @@ TEST_F(WaterBody, RaysFromTheWaterThatMeetNothingSeeNothing) {
             for (int dy = -1; dy <= 1; ++dy) {
                 for (int dx = -1; dx <= 1; ++dx) {
                     const int u = x + dx, v = y + dy;
-                    next_to_lit = next_to_lit || (u >= 0 && v >= 0 && u < int(kWidth) && v < int(kHeight) &&
-                                                  !black(reference, u, v));
+                    next_to_lit = next_to_lit ||
+                                  (u >= 0 && v >= 0 && u < int(kWidth) && v < int(kHeight) && !black(reference, u, v));
                 }
             }
             if (!next_to_lit && !black(real_time.image, x, y)) ++lit_in_real_time;
@@ -92,12 +93,12 @@ using WaterRule = GpuTest;
 TEST_F(WaterRule, CulledWaterImageEqualsForcedOnImage) {
     // Looking away from the water: the rule culls the water passes; forcing them on must
     // not change a pixel (nothing they draw is in view), so the images are equal exactly.
-    const std::vector<std::string> away = {"camera.position=[0, 2, 30]",
-                                           "camera.target=[0, 2, 60]"};
+    const std::vector<std::string> away = {"camera.position=[0, 2, 30]", "camera.target=[0, 2, 60]"};
     std::vector<std::string> forced = away;
     forced.push_back("effects.water.mode=on");
     Renderer renderer(context());
-    const RenderResult culled = renderer.render(builtin("pool.json", away), {kWidth, kHeight, true, fg::TimingMode::None});
+    const RenderResult culled =
+        renderer.render(builtin("pool.json", away), {kWidth, kHeight, true, fg::TimingMode::None});
     const size_t pipelines_culled = renderer.pipelines().size();
     const RenderResult forced_on =
         renderer.render(builtin("pool.json", forced), {kWidth, kHeight, true, fg::TimingMode::None});
@@ -126,7 +127,8 @@ TEST_F(WaterRule, CulledCausticsImageEqualsForcedOnImage) {
     std::vector<std::string> forced = night;
     forced.push_back("effects.caustics.mode=on");
     Renderer renderer(context());
-    const RenderResult culled = renderer.render(builtin("pool.json", night), {kWidth, kHeight, true, fg::TimingMode::None});
+    const RenderResult culled =
+        renderer.render(builtin("pool.json", night), {kWidth, kHeight, true, fg::TimingMode::None});
     const size_t pipelines_culled = renderer.pipelines().size();
     const RenderResult forced_on =
         renderer.render(builtin("pool.json", forced), {kWidth, kHeight, true, fg::TimingMode::None});

@@ -96,8 +96,10 @@ TEST(scene_builtin_mesh, TerrainFollowsItsFormula) {
     const double h = 1e-5;
     for (const glm::dvec2 at : {glm::dvec2(0.3, -1.7), glm::dvec2(-2.2, 3.1), glm::dvec2(1.0, 1.0)}) {
         const glm::dvec2 slope = terrain_slope(shape, at.x, at.y);
-        EXPECT_NEAR(slope.x, (terrain_height(shape, at.x + h, at.y) - terrain_height(shape, at.x - h, at.y)) / (2 * h), 1e-8);
-        EXPECT_NEAR(slope.y, (terrain_height(shape, at.x, at.y + h) - terrain_height(shape, at.x, at.y - h)) / (2 * h), 1e-8);
+        EXPECT_NEAR(slope.x, (terrain_height(shape, at.x + h, at.y) - terrain_height(shape, at.x - h, at.y)) / (2 * h),
+                    1e-8);
+        EXPECT_NEAR(slope.y, (terrain_height(shape, at.x, at.y + h) - terrain_height(shape, at.x, at.y - h)) / (2 * h),
+                    1e-8);
     }
     // Deterministic in the seed, and the seed matters.
     EXPECT_EQ(terrain_height(shape, 1.234, -0.5), terrain_height(shape, 1.234, -0.5));

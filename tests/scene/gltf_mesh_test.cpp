@@ -23,7 +23,8 @@ std::string load_error(const std::filesystem::path& file) {
 
 TEST(scene_gltf, IndexedMeshKeepsCountsAndBounds) {
     GltfSpec spec = test::pyramid();
-    for (int v = 0; v < 5; ++v) spec.normals.insert(spec.normals.end(), {0.0f, 2.0f, 0.0f});  // normalised by the loader
+    for (int v = 0; v < 5; ++v)
+        spec.normals.insert(spec.normals.end(), {0.0f, 2.0f, 0.0f});  // normalised by the loader
     const Mesh mesh = load_gltf_mesh(write_gltf("indexed", spec));
     EXPECT_EQ(mesh.positions.size(), 5u);
     EXPECT_EQ(mesh.normals.size(), 5u);
@@ -70,7 +71,8 @@ TEST(scene_gltf, StripsAndFansBecomeCounterClockwiseLists) {
 TEST(scene_gltf, NodeTransformAndMaterialAreApplied) {
     GltfSpec spec = test::pyramid();
     spec.node_extra = R"("translation": [10, 0, 0], "scale": [2, 2, 2], )";
-    spec.material = R"({ "pbrMetallicRoughness": { "baseColorFactor": [0.25, 0.5, 0.75, 1], "baseColorTexture": { "index": 0 } } })";
+    spec.material =
+        R"({ "pbrMetallicRoughness": { "baseColorFactor": [0.25, 0.5, 0.75, 1], "baseColorTexture": { "index": 0 } } })";
     spec.top_extra = R"( "textures": [{ "source": 0 }], "images": [{ "uri": "stone.png" }],)";
     const std::filesystem::path file = write_gltf("transform", spec);
     const Mesh mesh = load_gltf_mesh(file);
@@ -103,7 +105,8 @@ TEST(scene_gltf, MissingAndMalformedFilesAreRefusedNamingThePath) {
 TEST(scene_gltf, OutOfRangeIndexIsRefused) {
     GltfSpec spec = test::pyramid();
     spec.indices[4] = 9;
-    EXPECT_NE(load_error(write_gltf("bad_index", spec)).find("primitive 0: index 9 >= vertex count 5"), std::string::npos);
+    EXPECT_NE(load_error(write_gltf("bad_index", spec)).find("primitive 0: index 9 >= vertex count 5"),
+              std::string::npos);
 }
 
 TEST(scene_gltf, ReceiverFileIsRelativeToTheSceneFile) {

@@ -83,13 +83,18 @@ inline std::string gltf_text(const GltfSpec& spec) {
     primitive += " }";
     while (data.size() % 4 != 0) data.push_back(0);
     return R"({ "asset": { "version": "2.0" }, "scene": 0, "scenes": [{ "nodes": [0] }],
-  "nodes": [{ )" + spec.node_extra + R"("mesh": 0 }],
-  "meshes": [{ "name": "Test", "primitives": [)" + primitive + R"(] }],)" +
-           (spec.material.empty() ? "" : "\n  \"materials\": [" + spec.material + "],") + spec.top_extra + R"(
-  "accessors": [)" + accessors + R"(],
-  "bufferViews": [)" + views + R"(],
-  "buffers": [{ "byteLength": )" + std::to_string(data.size()) +
-           R"(, "uri": "data:application/octet-stream;base64,)" + base64(data) + R"(" }] })";
+  "nodes": [{ )" +
+           spec.node_extra + R"("mesh": 0 }],
+  "meshes": [{ "name": "Test", "primitives": [)" +
+           primitive + R"(] }],)" + (spec.material.empty() ? "" : "\n  \"materials\": [" + spec.material + "],") +
+           spec.top_extra + R"(
+  "accessors": [)" +
+           accessors + R"(],
+  "bufferViews": [)" +
+           views + R"(],
+  "buffers": [{ "byteLength": )" +
+           std::to_string(data.size()) + R"(, "uri": "data:application/octet-stream;base64,)" + base64(data) +
+           R"(" }] })";
 }
 
 // A fresh folder for one test's files.

@@ -12,7 +12,8 @@ namespace {
 Scene with_medium(const std::string& medium_json) {
     const std::string text = R"({ "camera": { "position": [0, 1, 3], "target": [0, 0, 0] },
                                   "sun": { "elevation_deg": 45 }, "sky": { "radiance": [1, 1, 1] },
-                                  "medium": )" + medium_json + "}";
+                                  "medium": )" +
+                             medium_json + "}";
     return parse_scene(text, "medium.json");
 }
 
@@ -58,7 +59,8 @@ TEST(scene_medium, DefaultIsPure) {
 }
 
 TEST(scene_medium, ExplicitCoefficients) {
-    const Medium medium = with_medium(R"({ "sigma_a": [0.5, 0.1, 0.05], "sigma_s": [0.2, 0.3, 0.4], "g": -0.3 })").medium;
+    const Medium medium =
+        with_medium(R"({ "sigma_a": [0.5, 0.1, 0.05], "sigma_s": [0.2, 0.3, 0.4], "g": -0.3 })").medium;
     EXPECT_EQ(medium.preset, "");
     EXPECT_EQ(medium.sigma_a, glm::dvec3(0.5, 0.1, 0.05));
     EXPECT_EQ(medium.sigma_s, glm::dvec3(0.2, 0.3, 0.4));
@@ -79,7 +81,8 @@ TEST(scene_medium, PresetPlusExplicitIsRefused) {
 }
 
 TEST(scene_medium, PartialCoefficientsAreRefused) {
-    EXPECT_NE(error_of(R"({ "sigma_a": [1, 1, 1] })").find("medium.sigma_s: missing (sigma_a is given)"), std::string::npos);
+    EXPECT_NE(error_of(R"({ "sigma_a": [1, 1, 1] })").find("medium.sigma_s: missing (sigma_a is given)"),
+              std::string::npos);
     EXPECT_NE(error_of(R"({ "g": 0.5 })").find("medium.sigma_a: missing (sigma_s or g is given)"), std::string::npos);
 }
 

@@ -7,7 +7,9 @@
 namespace vkw {
 namespace {
 
-Scene with(const std::vector<std::string>& overrides) { return parse_scene(test::kMinimalScene, "min.json", overrides); }
+Scene with(const std::vector<std::string>& overrides) {
+    return parse_scene(test::kMinimalScene, "min.json", overrides);
+}
 
 std::string error_with(const std::vector<std::string>& overrides) {
     return test::user_error_of([&] { with(overrides); });
@@ -28,9 +30,7 @@ TEST(scene_overrides, AppliedInOrderAndOnTopOfTheFile) {
     EXPECT_EQ(scene.camera.fov_y_deg, 60.0);  // untouched fields keep the file's values
 }
 
-TEST(scene_overrides, CreatesAbsentSections) {
-    EXPECT_EQ(with({"floor.height=-2"}).floor.height, -2.0);
-}
+TEST(scene_overrides, CreatesAbsentSections) { EXPECT_EQ(with({"floor.height=-2"}).floor.height, -2.0); }
 
 TEST(scene_overrides, NullRemovesAFieldSoTheSunFormCanChange) {
     const Scene scene = with({"sun.elevation_deg=null", "sun.direction=[0,-2,0]"});
@@ -42,7 +42,8 @@ TEST(scene_overrides, UnknownKeyIsRefusedWithHintAndOverrideNamed) {
     EXPECT_NE(message.find("min.json: camera.fovy: unknown field (did you mean 'fov_y_deg'?)"), std::string::npos)
         << message;
     EXPECT_NE(message.find("[from override 'camera.fovy=75']"), std::string::npos) << message;
-    EXPECT_NE(error_with({"camra.fov_y_deg=75"}).find("camra: unknown field (did you mean 'camera'?)"), std::string::npos);
+    EXPECT_NE(error_with({"camra.fov_y_deg=75"}).find("camra: unknown field (did you mean 'camera'?)"),
+              std::string::npos);
 }
 
 TEST(scene_overrides, OutOfRangeValueNamesTheOverride) {
@@ -59,7 +60,8 @@ TEST(scene_overrides, NonFiniteValuesAreRefused) {
         EXPECT_NE(message.find("is not a finite number (accepted: value > 0 m)"), std::string::npos) << message;
     }
     const std::string in_vector = error_with({"sky.radiance=[1, 1e999, 1]"});
-    EXPECT_NE(in_vector.find("sky.radiance: expected an array of 3 numbers, got string"), std::string::npos) << in_vector;
+    EXPECT_NE(in_vector.find("sky.radiance: expected an array of 3 numbers, got string"), std::string::npos)
+        << in_vector;
 }
 
 TEST(scene_overrides, MalformedOverridesAreRefused) {
@@ -67,10 +69,12 @@ TEST(scene_overrides, MalformedOverridesAreRefused) {
               std::string::npos);
     EXPECT_NE(error_with({"camera..near=1"}).find("empty field name"), std::string::npos);
     EXPECT_NE(error_with({"=1"}).find("empty field name"), std::string::npos);
-    EXPECT_NE(error_with({"sky.radiance.x=1"}).find("sky.radiance: override 'sky.radiance.x=1' sets a field "
-                                                    "inside a value that is not an object"),
+    EXPECT_NE(error_with({"sky.radiance.x=1"})
+                  .find("sky.radiance: override 'sky.radiance.x=1' sets a field "
+                        "inside a value that is not an object"),
               std::string::npos);
-    EXPECT_NE(error_with({"floor.height=null"}).find("removes a field that the scene does not have"), std::string::npos);
+    EXPECT_NE(error_with({"floor.height=null"}).find("removes a field that the scene does not have"),
+              std::string::npos);
     // A string where a number belongs is a type error, not a crash.
     EXPECT_NE(error_with({"camera.fov_y_deg=wide"}).find("camera.fov_y_deg: expected a number, got string \"wide\""),
               std::string::npos);

@@ -11,11 +11,13 @@
 namespace vkw {
 namespace {
 
-Scene with(const std::vector<std::string>& overrides) { return parse_scene(test::kMinimalScene, "min.json", overrides); }
+Scene with(const std::vector<std::string>& overrides) {
+    return parse_scene(test::kMinimalScene, "min.json", overrides);
+}
 
 TEST(scene_sky, GradientFormulaAndItsAverage) {
-    const Sky sky = with({"sky.radiance=null", "sky.model=gradient", "sky.zenith=[0.1,0.2,0.4]", "sky.horizon=[0.5,0.6,0.7]",
-                          "sky.exponent=2"})
+    const Sky sky = with({"sky.radiance=null", "sky.model=gradient", "sky.zenith=[0.1,0.2,0.4]",
+                          "sky.horizon=[0.5,0.6,0.7]", "sky.exponent=2"})
                         .sky;
     EXPECT_EQ(sky.model, SkyModel::Gradient);
     EXPECT_EQ(sky.ground, sky.horizon);  // default: the horizon continued downward
@@ -48,8 +50,9 @@ TEST(scene_camera, DirectionFormLooksAlongTheNormalisedVector) {
     const Camera camera = with({"camera.target=null", "camera.direction=[0,-3,-4]"}).camera;
     const glm::dvec3 expected = camera.position + glm::dvec3(0.0, -0.6, -0.8);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(camera.target[c], expected[c], 1e-15);
-    EXPECT_NE(test::user_error_of([] { with({"camera.target=null", "camera.direction=[0,0,0]"}); })
-                  .find("camera.direction: [0, 0, 0] has no direction (accepted: a non-zero vector)"),
+    EXPECT_NE(test::user_error_of([] {
+                  with({"camera.target=null", "camera.direction=[0,0,0]"});
+              }).find("camera.direction: [0, 0, 0] has no direction (accepted: a non-zero vector)"),
               std::string::npos);
 }
 
@@ -88,11 +91,10 @@ TEST(scene_effects, CausticSettingsDefaultsReadAndRanges) {
     EXPECT_TRUE(set.jitter);
     EXPECT_EQ(set.kernel, CausticKernel::Bilinear);
 
-    auto error_with = [](const std::string& override) {
-        return test::user_error_of([&] { with({override}); });
-    };
-    EXPECT_NE(error_with("effects.caustics.kernel=gaussian").find("effects.caustics.kernel: unknown value \"gaussian\" "
-                                                                   "(accepted: one of adaptive, bilinear, footprint)"),
+    auto error_with = [](const std::string& override) { return test::user_error_of([&] { with({override}); }); };
+    EXPECT_NE(error_with("effects.caustics.kernel=gaussian")
+                  .find("effects.caustics.kernel: unknown value \"gaussian\" "
+                        "(accepted: one of adaptive, bilinear, footprint)"),
               std::string::npos)
         << error_with("effects.caustics.kernel=gaussian");
     const std::string sub = error_with("effects.caustics.sub_photons=9");
@@ -128,8 +130,9 @@ TEST(scene_overrides, ArrayElementsByIndex) {
     EXPECT_NE(bad_syntax.find("malformed [index]"), std::string::npos) << bad_syntax;
     // An error inside an overridden element names the override.
     const std::string range = test::user_error_of([&] { parse_scene(text, "r.json", {"receivers[0].radius=0"}); });
-    EXPECT_EQ(range, "r.json: receivers[0].radius: 0 is out of range (accepted: value > 0 m) "
-                     "[from override 'receivers[0].radius=0']");
+    EXPECT_EQ(range,
+              "r.json: receivers[0].radius: 0 is out of range (accepted: value > 0 m) "
+              "[from override 'receivers[0].radius=0']");
 }
 
 }  // namespace

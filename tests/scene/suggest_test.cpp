@@ -18,8 +18,8 @@ TEST(scene_suggest, EditDistance) {
 }
 
 TEST(scene_suggest, ClosestKey) {
-    EXPECT_EQ(closest_key("fovy", kCameraKeys), "fov_y_deg");      // prefix, ignoring '_'
-    EXPECT_EQ(closest_key("fov", kCameraKeys), "fov_y_deg");       // prefix
+    EXPECT_EQ(closest_key("fovy", kCameraKeys), "fov_y_deg");       // prefix, ignoring '_'
+    EXPECT_EQ(closest_key("fov", kCameraKeys), "fov_y_deg");        // prefix
     EXPECT_EQ(closest_key("FOV_Y_DEG", kCameraKeys), "fov_y_deg");  // case
     EXPECT_EQ(closest_key("positon", kCameraKeys), "position");
     EXPECT_EQ(closest_key("taget", kCameraKeys), "target");

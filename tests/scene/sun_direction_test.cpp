@@ -12,7 +12,8 @@ namespace {
 
 Sun sun_from(const std::string& sun_json) {
     const std::string text = R"({ "camera": { "position": [0, 1, 3], "target": [0, 0, 0] },
-                                  "sky": { "radiance": [1, 1, 1] }, "sun": )" + sun_json + "}";
+                                  "sky": { "radiance": [1, 1, 1] }, "sun": )" +
+                             sun_json + "}";
     return parse_scene(text, "sun.json").sun;
 }
 
@@ -43,11 +44,13 @@ TEST(scene_sun_direction, ObliqueAnglesByHand) {
     // el 45, az 0: toward (0, h, -h); travelling (0, -h, h).
     expect_near(sun_from(R"({ "elevation_deg": 45 })").direction, {0.0, -h, h});
     // el 30, az 90: toward (cos30, sin30, 0).
-    expect_near(sun_from(R"({ "elevation_deg": 30, "azimuth_deg": 90 })").direction, {-std::sqrt(3.0) / 2.0, -0.5, 0.0});
+    expect_near(sun_from(R"({ "elevation_deg": 30, "azimuth_deg": 90 })").direction,
+                {-std::sqrt(3.0) / 2.0, -0.5, 0.0});
     // el 60, az 45: toward (0.5 h, sqrt(3)/2, -0.5 h).
     expect_near(direction_toward_sun(60.0, 45.0), {0.5 * h, std::sqrt(3.0) / 2.0, -0.5 * h});
     // Below the horizon is allowed: the light then travels upward and lights nothing.
-    expect_near(sun_from(R"({ "elevation_deg": -30, "azimuth_deg": 180 })").direction, {0.0, 0.5, -std::sqrt(3.0) / 2.0});
+    expect_near(sun_from(R"({ "elevation_deg": -30, "azimuth_deg": 180 })").direction,
+                {0.0, 0.5, -std::sqrt(3.0) / 2.0});
 }
 
 TEST(scene_sun_direction, IsUnitLengthForManyAngles) {

@@ -11,7 +11,8 @@ namespace {
 Scene with_water(const std::string& water_json, const std::vector<std::string>& overrides = {}) {
     const std::string text = R"({ "camera": { "position": [0, 1, 3], "target": [0, 0, 0] },
                                   "sun": { "elevation_deg": 45 }, "sky": { "radiance": [1, 1, 1] },
-                                  "water": )" + water_json + "}";
+                                  "water": )" +
+                             water_json + "}";
     return parse_scene(text, "water.json", overrides);
 }
 
@@ -38,14 +39,16 @@ TEST(scene_water, DepthGivesTheVolumeItsOwnBottom) {
     EXPECT_EQ(water_bottom(with_water("{}")), -1.5);  // the default floor
     // Without depth, the floor must lie below the level.
     const std::string message = error_of(R"({ "level": -2 })");
-    EXPECT_NE(message.find("water.json: water.level: -2 is not above floor.height = -1.5"), std::string::npos) << message;
+    EXPECT_NE(message.find("water.json: water.level: -2 is not above floor.height = -1.5"), std::string::npos)
+        << message;
     EXPECT_EQ(water_bottom(with_water(R"({ "level": -2, "depth": 1 })")), -3.0);
 }
 
 TEST(scene_water, SumOfSinesAndGerstnerWaves) {
     const Water water = *with_water(R"({ "seed": 9, "time": 2.5, "waves": { "model": "sum", "components": [
         { "amplitude": 0.1, "wavelength": 2, "direction_deg": 30, "phase_deg": 45, "steepness": 0.5, "speed": 1.5 },
-        { "amplitude": 0.05, "wavelength": 1 } ] } })").water;
+        { "amplitude": 0.05, "wavelength": 1 } ] } })")
+                             .water;
     ASSERT_EQ(water.waves.model, WaveModel::Sum);
     ASSERT_EQ(water.waves.components.size(), 2u);
     const WaveComponent& first = water.waves.components[0];
@@ -79,7 +82,8 @@ TEST(scene_water, SteepnessSumAboveOneNeedsAllowFolding) {
 TEST(scene_water, FftOcean) {
     const Water water = *with_water(R"({ "waves": { "model": "fft", "resolution": 512, "patch_size": 100,
         "wind_speed": 12, "wind_direction_deg": -45, "spectrum": "jonswap", "fetch": 20000,
-        "amplitude_scale": 0.5, "choppiness": 1.2 } })").water;
+        "amplitude_scale": 0.5, "choppiness": 1.2 } })")
+                             .water;
     const FftOceanSettings& ocean = water.waves.ocean;
     EXPECT_EQ(water.waves.model, WaveModel::FftOcean);
     EXPECT_EQ(ocean.resolution, 512u);
@@ -100,9 +104,9 @@ TEST(scene_water, FftOcean) {
 }
 
 TEST(scene_water, FieldsOfAnotherModelAreRefused) {
-    EXPECT_NE(error_of(R"({ "waves": { "model": "fft", "components": [] } })")
-                  .find("water.waves.components: unknown field"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of(R"({ "waves": { "model": "fft", "components": [] } })").find("water.waves.components: unknown field"),
+        std::string::npos);
     EXPECT_NE(error_of(R"({ "waves": { "components": [{ "amplitude": 1, "wavelength": 1 }] } })")
                   .find("water.waves.model: missing (components is given) (accepted: one of flat, sum, fft)"),
               std::string::npos);
@@ -115,8 +119,9 @@ TEST(scene_water, NonFiniteOverridesAreRefusedWithTheRange) {
     EXPECT_EQ(message,
               "water.json: water.ior: string \"nan\" is not a finite number (accepted: 1 <= value <= 2) "
               "[from override 'water.ior=nan']");
-    EXPECT_NE(error_of("{}", {"water.grid_resolution=inf"}).find("(accepted: an integer, 2 <= value <= 4096 cells per side)"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of("{}", {"water.grid_resolution=inf"}).find("(accepted: an integer, 2 <= value <= 4096 cells per side)"),
+        std::string::npos);
 }
 
 }  // namespace

@@ -32,11 +32,13 @@ std::vector<Layer> layer_table() {
         {"tools/metrics", {"engine/core", "engine/image"}},
         {"tools/povray", {"engine/core", "engine/scene", "engine/water"}},
         {"tools/benchmarks", joined({kEngineForPasses, kPassGroups, {"passes/frame", "tools/metrics"}})},
-        {"tools/vkwater", joined({kEngineForPasses, kPassGroups,
-                                  {"engine/window", "passes/frame", "tools/reference", "tools/metrics",
-                                   "tools/povray", "tools/benchmarks"}})},
+        {"tools/vkwater", joined({kEngineForPasses,
+                                  kPassGroups,
+                                  {"engine/window", "passes/frame", "tools/reference", "tools/metrics", "tools/povray",
+                                   "tools/benchmarks"}})},
         // tests/: may include anything under test, and each other's support files.
-        {"tests", joined({kEngineForPasses, kPassGroups,
+        {"tests", joined({kEngineForPasses,
+                          kPassGroups,
                           {"engine/window", "passes/frame", "tools/reference", "tools/metrics", "tools/povray",
                            "tools/benchmarks", "tools/vkwater"}})},
     };

@@ -10,14 +10,14 @@
 namespace vkw::layers {
 
 struct Layer {
-    std::string_view name;                 // a folder, root-relative ("engine/scene")
+    std::string_view name;                      // a folder, root-relative ("engine/scene")
     std::vector<std::string_view> may_include;  // layers (folders) this one may include besides itself
 };
 
 // The technique groups of passes/: they may use each other (the caustics read the receivers'
 // meshes, the receivers read the caustic map), but none of them knows the frame's composition.
 inline const std::vector<std::string_view> kPassGroups = {
-    "passes/common",    "passes/sky",      "passes/water",   "passes/receivers",
+    "passes/common",      "passes/sky",      "passes/water",   "passes/receivers",
     "passes/scene_views", "passes/caustics", "passes/godrays", "passes/present",
 };
 

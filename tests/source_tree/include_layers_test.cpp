@@ -83,8 +83,8 @@ TEST(Layers, EveryIncludeEdgeIsAllowed) {
         const std::string_view to = layer_of(table, edge.target);
         EXPECT_FALSE(to.empty()) << where << ": the included file lies in no layer";
         if (from.empty() || to.empty()) continue;
-        EXPECT_TRUE(may_include(table, from, to))
-            << where << ": " << from << " -> " << to << " is not an allowed edge (tests/source_tree/include_layers.cpp)";
+        EXPECT_TRUE(may_include(table, from, to)) << where << ": " << from << " -> " << to
+                                                  << " is not an allowed edge (tests/source_tree/include_layers.cpp)";
         ++checked;
     }
     EXPECT_EQ(checked, edges.size());

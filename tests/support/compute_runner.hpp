@@ -17,8 +17,7 @@ namespace vkw::test {
 // std430 storage buffer of `output_floats` floats; `groups` work groups in x.
 inline std::vector<float> run_compute(Context& context, const std::string& shader, const void* push,
                                       uint32_t push_bytes, size_t output_floats, uint32_t groups) {
-    Buffer output(context,
-                  {output_floats * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, /*host_visible=*/true},
+    Buffer output(context, {output_floats * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, /*host_visible=*/true},
                   shader + " output");
     std::memset(output.mapped(), 0xff, output_floats * sizeof(float));  // NaN: unwritten values show
     ComputePipelineDesc desc;

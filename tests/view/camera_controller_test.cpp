@@ -83,8 +83,8 @@ TEST(CameraController, FlyMovesAlongTheViewAtTheEasedSpeed) {
 }
 
 TEST(CameraController, ShiftAndCtrlScaleTheSpeedFivefold) {
-    for (auto [fast, slow, factor] : {std::tuple{false, false, 1.0}, std::tuple{true, false, 5.0},
-                                      std::tuple{false, true, 0.2}}) {
+    for (auto [fast, slow, factor] :
+         {std::tuple{false, false, 1.0}, std::tuple{true, false, 5.0}, std::tuple{false, true, 0.2}}) {
         CameraController camera;
         camera.set_pose({0, 0, 4}, {0, 0, 0});
         CameraInput input{kDt};
@@ -107,7 +107,7 @@ TEST(CameraController, FliesThroughTheWaterSurfaceWithoutAJump) {
     for (int i = 0; i < 120; ++i) {
         camera.update(input);
         const double y = camera.position().y;
-        EXPECT_LE(y, last_y);                                   // monotonic
+        EXPECT_LE(y, last_y);                                       // monotonic
         EXPECT_LE(last_y - y, camera.speed() * kDt * (1 + 1e-12));  // never faster than the speed
         crossed |= last_y >= 0.0 && y < 0.0;
         last_y = y;

@@ -3,10 +3,10 @@
 // texel by texel, over a frame whose radiance spans the curve's every branch: the sRGB linear
 // segment, the curve, the clamp past x = 7.24 and the sun's disk (about 1.5e4). The frame is
 // the renderer's own, ended through the FrameOutput hook the window uses.
-#include "engine/image/tone_curve.hpp"
-#include "passes/frame/renderer.hpp"
-#include "engine/scene/scene_loader.hpp"
 #include "passes/present/present_tonemap.hpp"
+#include "engine/image/tone_curve.hpp"
+#include "engine/scene/scene_loader.hpp"
+#include "passes/frame/renderer.hpp"
 #include "passes/present/readback.hpp"
 #include "tests/support/gpu_test.hpp"
 
@@ -26,12 +26,14 @@ TEST_F(PresentTonemap, MatchesThePngPreviewChainWithinOneLevel) {
       "sky": {"model": "gradient", "zenith": [0.0005, 0.02, 0.3], "horizon": [6, 2, 0.5],
               "ground": [0.0002, 0.001, 0.004], "exponent": 0.7},
       "floor": {"height": -100, "half_extent": 1}
-    })", "tonemap_sky.json");
+    })",
+                                    "tonemap_sky.json");
     const uint32_t width = 96, height = 64;
     for (const VkFormat format : {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_R8G8B8A8_SRGB}) {
         SCOPED_TRACE(format == VK_FORMAT_R8G8B8A8_UNORM ? "UNORM: the shader encodes sRGB" : "SRGB: the hardware does");
         const passes::PresentTonemapSettings settings{1.7f, format == VK_FORMAT_R8G8B8A8_UNORM};
-        Image display(context(), {width, height, format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT},
+        Image display(context(),
+                      {width, height, format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT},
                       "display");
         Buffer display_bytes(context(), {VkDeviceSize{width} * height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
                              "display readback");
@@ -41,8 +43,8 @@ TEST_F(PresentTonemap, MatchesThePngPreviewChainWithinOneLevel) {
                                      fg::ImportedImage target{display.handle(), display.view(), width, height, format};
                                      fg::ImageHandle shown = graph.import_image("display", target);
                                      shown = passes::add_present_tonemap_pass(graph, hdr, shown, &settings);
-                                     passes::add_readback_pass(graph, shown, display_bytes.handle(), display_bytes.size(),
-                                                               "display readback");
+                                     passes::add_readback_pass(graph, shown, display_bytes.handle(),
+                                                               display_bytes.size(), "display readback");
                                      passes::add_readback_pass(graph, hdr, hdr_bytes.handle(), hdr_bytes.size(),
                                                                "HDR readback");
                                  }};
@@ -60,8 +62,8 @@ TEST_F(PresentTonemap, MatchesThePngPreviewChainWithinOneLevel) {
                 // neighbouring integer ("round to nearest" is only recommended), and the
                 // shader's fp32 pow() is a few ulp from the CPU's, which moves a value lying
                 // within that of a .5 boundary to the other side.
-                EXPECT_NEAR(int(shown[4 * i + c]), expected, 1) << "texel " << i << " channel " << c << ", radiance "
-                                                                << hdr[4 * i + c];
+                EXPECT_NEAR(int(shown[4 * i + c]), expected, 1)
+                    << "texel " << i << " channel " << c << ", radiance " << hdr[4 * i + c];
                 exact += int(shown[4 * i + c]) == expected;
                 linear_segment += aces_narkowicz(exposed) <= 0.0031308f && exposed > 0.0f;
                 clamped += exposed > 7.25f;

@@ -1,8 +1,8 @@
 // The script format of `vkwater view --script` (tools/vkwater/view/view_script.hpp): every command
 // parsed into its fields, commands ordered by frame and by line within a frame, and every
 // malformed line refused with the file, the line and the accepted form.
-#include "engine/core/errors.hpp"
 #include "tools/vkwater/view/view_script.hpp"
+#include "engine/core/errors.hpp"
 
 #include <gtest/gtest.h>
 
@@ -32,7 +32,8 @@ TEST(ViewScript, ParsesEveryCommand) {
 11: mode fly
 12: reload-shaders
 12: wait-file /tmp/go
-)", "s.txt");
+)",
+                                                "s.txt");
     ASSERT_EQ(script.commands.size(), 11u);
     const auto& c = script.commands;
     // Sorted by frame; within frame 0 and frame 7, in the file's order.
@@ -99,16 +100,15 @@ TEST(ViewScript, RefusesCommandsBeyondTheLastFrame) {
         check_script_fits(script, 120);
         FAIL() << "a move arriving at frame 120 fits no run of 120 frames (0 to 119)";
     } catch (const UserError& error) {
-        EXPECT_NE(std::string(error.what()).find("s.txt: line 2: move at frame 100 (+20 frames) would not run within "
-                                                 "--frames 120 (accepted: frames 0 to 119)"),
+        EXPECT_NE(std::string(error.what())
+                      .find("s.txt: line 2: move at frame 100 (+20 frames) would not run within "
+                            "--frames 120 (accepted: frames 0 to 119)"),
                   std::string::npos)
             << error.what();
     }
 }
 
-TEST(ViewScript, MissingFileIsAUserError) {
-    EXPECT_THROW(load_view_script("/nonexistent/script.txt"), UserError);
-}
+TEST(ViewScript, MissingFileIsAUserError) { EXPECT_THROW(load_view_script("/nonexistent/script.txt"), UserError); }
 
 }  // namespace
 }  // namespace vkw::window

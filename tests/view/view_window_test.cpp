@@ -86,19 +86,25 @@ TEST_F(ViewWindow, ScriptedRunResizesCrossesTheSurfaceAndTogglesCausticsWithoutV
     // calm.json: flat water at y = 0 over a floor at y = -2. The camera glides from 1 m above
     // the surface to 0.8 m below it over frames 10-60 (crossing near frame 38, where the near
     // plane straddles the surface), flies back up over frames 90-110.
-    const fs::path script = write_text("cross.txt", "0: camera 0 1.0 3   0 -1.0 -1\n"
-                                                    "10: move 0 -0.8 3   0 -1.5 -1  50\n"
-                                                    "20: set effects.caustics.mode=off\n"
-                                                    "30: resize 200 150\n"
-                                                    "40: screenshot " + under.string() + "\n"
-                                                    "45: set effects.caustics.mode=on\n"
-                                                    "60: mode fly\n"
-                                                    "70: resize 160 120\n"
-                                                    "80: set effects.caustics.mode=auto\n"
-                                                    "90: move 0 0.6 2   0 -0.5 -2  20\n"
-                                                    "115: screenshot " + last.string() + "\n");
-    const Outcome run = vkwater("view " + kScenes + "calm.json --set water.grid_resolution=64 --width 160 --height 120 "
-                                "--frames 120 --script " + script.string() + " --validation --pass-timing-every 10");
+    const fs::path script = write_text("cross.txt",
+                                       "0: camera 0 1.0 3   0 -1.0 -1\n"
+                                       "10: move 0 -0.8 3   0 -1.5 -1  50\n"
+                                       "20: set effects.caustics.mode=off\n"
+                                       "30: resize 200 150\n"
+                                       "40: screenshot " +
+                                           under.string() +
+                                           "\n"
+                                           "45: set effects.caustics.mode=on\n"
+                                           "60: mode fly\n"
+                                           "70: resize 160 120\n"
+                                           "80: set effects.caustics.mode=auto\n"
+                                           "90: move 0 0.6 2   0 -0.5 -2  20\n"
+                                           "115: screenshot " +
+                                           last.string() + "\n");
+    const Outcome run = vkwater("view " + kScenes +
+                                "calm.json --set water.grid_resolution=64 --width 160 --height 120 "
+                                "--frames 120 --script " +
+                                script.string() + " --validation --pass-timing-every 10");
     ASSERT_EQ(run.exit_code, 0) << run.output;
     EXPECT_EQ(run.output.find("validation error"), std::string::npos) << run.output;
     EXPECT_EQ(run.output.find("validation warning"), std::string::npos) << run.output;
@@ -122,14 +128,17 @@ TEST_F(ViewWindow, SwitchingToTheSeedsMethodsLiveStaysValidationClean) {
     // The methods the panel's "Methods" section switches: camera-space splats (their view and
     // flux follow the window's size, so a resize rebuilds them), the procedural caustic, Optical Phenomena c. 2008's
     // surface shading, and back.
-    const fs::path script = write_text("methods.txt", "5: set effects.caustics.splat=camera-space\n"
-                                                      "15: resize 200 150\n"
-                                                      "25: set effects.water.fresnel=power\n"
-                                                      "30: set effects.water.depth_blend={}\n"
-                                                      "35: set effects.caustics.splat=light-space\n"
-                                                      "36: set effects.caustics.method=procedural\n");
-    const Outcome run = vkwater("view " + kScenes + "pool.json --set water.grid_resolution=64 --width 160 --height 120 "
-                                "--frames 45 --script " + script.string() + " --validation --pass-timing-every 5");
+    const fs::path script = write_text("methods.txt",
+                                       "5: set effects.caustics.splat=camera-space\n"
+                                       "15: resize 200 150\n"
+                                       "25: set effects.water.fresnel=power\n"
+                                       "30: set effects.water.depth_blend={}\n"
+                                       "35: set effects.caustics.splat=light-space\n"
+                                       "36: set effects.caustics.method=procedural\n");
+    const Outcome run = vkwater("view " + kScenes +
+                                "pool.json --set water.grid_resolution=64 --width 160 --height 120 "
+                                "--frames 45 --script " +
+                                script.string() + " --validation --pass-timing-every 5");
     ASSERT_EQ(run.exit_code, 0) << run.output;
     EXPECT_EQ(run.output.find("validation error"), std::string::npos) << run.output;
     EXPECT_EQ(run.output.find("validation warning"), std::string::npos) << run.output;
@@ -144,14 +153,17 @@ TEST_F(ViewWindow, ScreenshotOfAStillFrameEqualsTheOffscreenRender) {
     // pool.json: waves and caustics; a camera pose of the script's own, the clock stopped at
     // the file's time, a reduced grid for speed.
     const std::string settings = " --set water.grid_resolution=64 --width 160 --height 120";
-    const fs::path script = write_text("still.txt", "0: camera 0.3 0.9 3.1   -0.2 -1.4 -1.8\n"
-                                                    "2: screenshot " + shot.string() + "\n");
-    const Outcome view = vkwater("view " + kScenes + "pool.json" + settings + " --paused --frames 3 --script " +
-                                 script.string());
+    const fs::path script = write_text("still.txt",
+                                       "0: camera 0.3 0.9 3.1   -0.2 -1.4 -1.8\n"
+                                       "2: screenshot " +
+                                           shot.string() + "\n");
+    const Outcome view =
+        vkwater("view " + kScenes + "pool.json" + settings + " --paused --frames 3 --script " + script.string());
     ASSERT_EQ(view.exit_code, 0) << view.output;
     const Outcome render = vkwater("render " + kScenes + "pool.json" + settings +
                                        " --set camera.position=[0.3,0.9,3.1] --set camera.target=[-0.2,-1.4,-1.8]"
-                                       " --out " + rendered.string(),
+                                       " --out " +
+                                       rendered.string(),
                                    false);
     ASSERT_EQ(render.exit_code, 0) << render.output;
     const vkw::metrics::Metrics error = vkw::metrics::compare_images(vkw::read_exr(shot), vkw::read_exr(rendered));
@@ -172,13 +184,19 @@ TEST_F(ViewWindow, ShaderReloadRereadsTheSpvFiles) {
     fs::copy(fs::path(VKWATER_BINARY_DIR) / "shaders", shaders, fs::copy_options::recursive);
     const fs::path before = scratch("before_reload.exr"), after = scratch("after_reload.exr"), go = scratch("go");
     for (const fs::path& path : {before, fs::path(before).replace_extension(".png"), after, go}) fs::remove(path);
-    const fs::path script = write_text("reload.txt", "2: screenshot " + before.string() + "\n"
-                                                     "3: wait-file " + go.string() + "\n"
-                                                     "3: reload-shaders\n"
-                                                     "3: screenshot " + after.string() + "\n");
+    const fs::path script = write_text("reload.txt", "2: screenshot " + before.string() +
+                                                         "\n"
+                                                         "3: wait-file " +
+                                                         go.string() +
+                                                         "\n"
+                                                         "3: reload-shaders\n"
+                                                         "3: screenshot " +
+                                                         after.string() + "\n");
     const std::string command = "VKWATER_SHADER_DIR='" + shaders.string() + "' xvfb-run -a '" VKWATER_CLI "' view " +
-                                kScenes + "pool.json --set water.grid_resolution=64 --width 160 --height 120 --paused "
-                                "--frames 5 --pass-timing-every 0 --validation --script " + script.string() + " 2>&1";
+                                kScenes +
+                                "pool.json --set water.grid_resolution=64 --width 160 --height 120 --paused "
+                                "--frames 5 --pass-timing-every 0 --validation --script " +
+                                script.string() + " 2>&1";
     FILE* viewer = ::popen(command.c_str(), "r");
     ASSERT_NE(viewer, nullptr);
     // The PNG is written after the EXR: once it is there, frame 2 is complete.

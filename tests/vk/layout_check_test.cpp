@@ -93,8 +93,9 @@ TEST_F(LayoutCheck, WrongDescriptorTypeNamesPassShaderAndBothTypes) {
     ComputePipelineDesc desc = probe_desc();
     binding(desc.layout, 1).descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     const std::string error = creation_error(desc, "probe pass");
-    EXPECT_CONTAINS(error, "pipeline 'probe pass' (tests/reflection_probe.comp.plain.spv): binding 1 is storage "
-                           "buffer x1 in the shader but uniform buffer x1 in the declared layout");
+    EXPECT_CONTAINS(error,
+                    "pipeline 'probe pass' (tests/reflection_probe.comp.plain.spv): binding 1 is storage "
+                    "buffer x1 in the shader but uniform buffer x1 in the declared layout");
     // Both layouts follow, whole.
     EXPECT_CONTAINS(error, "declared set 0 {0: uniform buffer x1 compute, 1: uniform buffer x1 compute");
     EXPECT_CONTAINS(error, "SPIR-V compute uses {0: uniform buffer x1, 1: storage buffer x1");
@@ -110,32 +111,36 @@ TEST_F(LayoutCheck, SampledImageDeclaredAsStorageImageThrows) {
 TEST_F(LayoutCheck, MissingBindingThrows) {
     ComputePipelineDesc desc = probe_desc();
     desc.layout.bindings.erase(desc.layout.bindings.begin() + 5);  // binding 5
-    EXPECT_CONTAINS(creation_error(desc, "probe"), "pipeline 'probe' (tests/reflection_probe.comp.plain.spv): "
-                                                   "binding 5 is storage image x1 in the shader but is not in the "
-                                                   "declared layout");
+    EXPECT_CONTAINS(creation_error(desc, "probe"),
+                    "pipeline 'probe' (tests/reflection_probe.comp.plain.spv): "
+                    "binding 5 is storage image x1 in the shader but is not in the "
+                    "declared layout");
 }
 
 TEST_F(LayoutCheck, SmallerArrayThrows) {
     ComputePipelineDesc desc = probe_desc();
     binding(desc.layout, 2).descriptorCount = 2;
-    EXPECT_CONTAINS(creation_error(desc, "probe"), "binding 2 is combined image sampler x3 in the shader but "
-                                                   "combined image sampler x2 in the declared layout");
+    EXPECT_CONTAINS(creation_error(desc, "probe"),
+                    "binding 2 is combined image sampler x3 in the shader but "
+                    "combined image sampler x2 in the declared layout");
 }
 
 TEST_F(LayoutCheck, OtherSetThrows) {
     ComputePipelineDesc desc = probe_desc();
     desc.shader = "tests/reflection_probe.comp.other_set";
-    EXPECT_CONTAINS(creation_error(desc, "probe"), "(tests/reflection_probe.comp.other_set.spv): set 1 binding 0 "
-                                                   "is storage buffer x1 in the shader but the declared layout has "
-                                                   "only set 0");
+    EXPECT_CONTAINS(creation_error(desc, "probe"),
+                    "(tests/reflection_probe.comp.other_set.spv): set 1 binding 0 "
+                    "is storage buffer x1 in the shader but the declared layout has "
+                    "only set 0");
 }
 
 TEST_F(LayoutCheck, WrongPushConstantSizeThrows) {
     ComputePipelineDesc desc = probe_desc();
     desc.layout.push_constant_bytes = 32;  // the block as a C++ struct with alignas(16) members
-    EXPECT_CONTAINS(creation_error(desc, "probe"), "pipeline 'probe' (tests/reflection_probe.comp.plain.spv): the "
-                                                   "push-constant block is 20 bytes in the shader but 32 bytes in "
-                                                   "the declared layout");
+    EXPECT_CONTAINS(creation_error(desc, "probe"),
+                    "pipeline 'probe' (tests/reflection_probe.comp.plain.spv): the "
+                    "push-constant block is 20 bytes in the shader but 32 bytes in "
+                    "the declared layout");
     desc.layout.push_constant_bytes = 0;
     EXPECT_CONTAINS(creation_error(desc, "probe"), "is 20 bytes in the shader but 0 bytes in the declared layout");
 }
@@ -159,16 +164,18 @@ TEST_F(LayoutCheck, StagesMayDeclareALeadingPartOfThePushBlock) {
 TEST_F(LayoutCheck, GraphicsPipelineNamesTheFragmentShader) {
     GraphicsPipelineDesc desc = sky_desc();
     desc.layout.bindings.clear();
-    EXPECT_CONTAINS(creation_error(desc, "sky"), "pipeline 'sky' (sky/sky.frag.frame.spv): binding 0 is uniform "
-                                                 "buffer x1 in the shader but is not in the declared layout");
+    EXPECT_CONTAINS(creation_error(desc, "sky"),
+                    "pipeline 'sky' (sky/sky.frag.frame.spv): binding 0 is uniform "
+                    "buffer x1 in the shader but is not in the declared layout");
 }
 
 TEST_F(LayoutCheck, StageMissingFromStageFlagsThrows) {
     GraphicsPipelineDesc desc = sky_desc();
     desc.layout.bindings[0].stageFlags = VK_SHADER_STAGE_VERTEX_BIT;
-    EXPECT_CONTAINS(creation_error(desc, "sky"), "pipeline 'sky' (sky/sky.frag.frame.spv): binding 0 (uniform "
-                                                 "buffer x1) is used by the fragment stage but the declared "
-                                                 "layout's stageFlags are vertex");
+    EXPECT_CONTAINS(creation_error(desc, "sky"),
+                    "pipeline 'sky' (sky/sky.frag.frame.spv): binding 0 (uniform "
+                    "buffer x1) is used by the fragment stage but the declared "
+                    "layout's stageFlags are vertex");
 }
 
 }  // namespace

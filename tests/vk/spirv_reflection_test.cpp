@@ -1,8 +1,8 @@
 // The reflection of compiled shaders from the build tree: the bindings each entry point uses,
 // with their descriptor types and counts, its stage, and its push-constant block's size.
+#include "engine/vk/spirv_reflection.hpp"
 #include "engine/core/errors.hpp"
 #include "engine/vk/shader_module.hpp"
-#include "engine/vk/spirv_reflection.hpp"
 
 #include <gtest/gtest.h>
 
@@ -49,8 +49,8 @@ TEST(SpirvReflection, SkyFrameVariantUsesTheFrameConstantsOnly) {
 
 TEST(SpirvReflection, SkyPerPixelVariantAlsoReadsTheCameraMediumMask) {
     const ReflectedStage sky = reflect_file("sky/sky.frag.per_pixel.spv");
-    expect_bindings(sky, {{0, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                          {0, 3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}});
+    expect_bindings(
+        sky, {{0, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {0, 3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}});
 }
 
 TEST(SpirvReflection, GodrayBlurComputeShader) {

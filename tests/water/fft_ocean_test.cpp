@@ -31,10 +31,10 @@ FftOceanSettings small_ocean(uint32_t n = 16) {
     return ocean;
 }
 
-FftOceanSurface ocean_surface(const FftOceanSettings& ocean, uint64_t seed, double choppiness,
-                              double level, double time) {
-    return FftOceanSurface(std::make_shared<const FftOceanSpectrum>(make_ocean_spectrum(ocean, seed)),
-                           choppiness, level, time);
+FftOceanSurface ocean_surface(const FftOceanSettings& ocean, uint64_t seed, double choppiness, double level,
+                              double time) {
+    return FftOceanSurface(std::make_shared<const FftOceanSpectrum>(make_ocean_spectrum(ocean, seed)), choppiness,
+                           level, time);
 }
 
 double sum_abs_modes(const FftOceanSurface& surface) { return surface.max_amplitude(); }
@@ -146,10 +146,10 @@ void expect_ocean_derivatives(double choppiness) {
         for (double z0 : {-4.4, 0.0, 8.8}) {
             // Rounding: the coordinates and level, plus each of the n^2 terms (whose phase
             // 2 pi f u carries about n eps) with the sum's growth of at most n in practice.
-            const double scale = std::abs(x0) + std::abs(z0) + level +
-                                 4.0 * n * (1.0 + choppiness) * sum_abs_modes(surface);
-            test::expect_derivatives_match_differences(
-                surface, x0, z0, step, test::central_difference_tolerance(step, third, scale));
+            const double scale =
+                std::abs(x0) + std::abs(z0) + level + 4.0 * n * (1.0 + choppiness) * sum_abs_modes(surface);
+            test::expect_derivatives_match_differences(surface, x0, z0, step,
+                                                       test::central_difference_tolerance(step, third, scale));
         }
     }
 }
@@ -180,8 +180,7 @@ TEST(water_ocean, PositiveChoppinessSqueezesTheCrests) {
     spectrum.h0.assign(256, 0.0);
     spectrum.h0[2] = 0.1;
     const double k = std::numbers::pi / 4.0, choppiness = 0.5;
-    const FftOceanSurface surface(std::make_shared<const FftOceanSpectrum>(spectrum), choppiness,
-                                  0.0, 0.0);
+    const FftOceanSurface surface(std::make_shared<const FftOceanSpectrum>(spectrum), choppiness, 0.0, 0.0);
     EXPECT_NEAR(surface.at_parameter(0.0, 0.0).position.y, 0.2, 1e-15);
     // Trochoid: x = x0 - choppiness 0.2 sin(k x0), so dx/dx0 = 1 - 0.1 k at the crest and
     // 1 + 0.1 k in the trough; points beside the crest move toward it.
@@ -215,7 +214,8 @@ TEST(water_ocean, BadSettingsAreRefusedNamingTheField) {
         FAIL() << "resolution 12 accepted";
     } catch (const UserError& e) {
         EXPECT_NE(std::string(e.what()).find("water.waves.resolution = 12: accepted a power of two in [16, 1024]"),
-                  std::string::npos) << e.what();
+                  std::string::npos)
+            << e.what();
     }
     ocean = small_ocean();
     ocean.wind_speed = 0.0;

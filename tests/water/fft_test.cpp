@@ -26,8 +26,7 @@ std::vector<std::complex<double>> random_array(uint32_t n, uint64_t seed) {
 
 // out[r][c] = sum over (b, a) of in[b][a] exp(+2 pi i (a c + b r) / n), the exponent reduced
 // modulo n so that every twiddle comes from an angle in [0, 2 pi).
-std::vector<std::complex<double>> naive_inverse_dft(const std::vector<std::complex<double>>& in,
-                                                    uint32_t n) {
+std::vector<std::complex<double>> naive_inverse_dft(const std::vector<std::complex<double>>& in, uint32_t n) {
     std::vector<std::complex<double>> out(in.size());
     for (uint32_t r = 0; r < n; ++r) {
         for (uint32_t c = 0; c < n; ++c) {

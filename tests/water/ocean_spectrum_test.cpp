@@ -25,8 +25,7 @@ double discrete_variance(const FftOceanSettings& ocean) {
     for (uint32_t b = 0; b < n; ++b) {
         for (uint32_t a = 0; a < n; ++a) {
             if (a == n / 2 || b == n / 2) continue;
-            const glm::dvec2 k = dk * glm::dvec2(FftOceanSpectrum::frequency(a, n),
-                                                 FftOceanSpectrum::frequency(b, n));
+            const glm::dvec2 k = dk * glm::dvec2(FftOceanSpectrum::frequency(a, n), FftOceanSpectrum::frequency(b, n));
             sum += ocean_spectrum(k, ocean) * dk * dk;
         }
     }
@@ -75,8 +74,8 @@ TEST(water_ocean_spectrum, JonswapParametersFollowTheFetchLaws) {
     EXPECT_NEAR(p.omega_peak, 1.0081737, 1e-7);
     // At the peak r = 1: S = alpha g^2 w_p^-5 exp(-5/4) gamma, and the peak is the maximum.
     const double at_peak = jonswap_frequency_spectrum(p.omega_peak, ocean);
-    EXPECT_NEAR(at_peak, p.alpha * kGravity * kGravity * std::pow(p.omega_peak, -5) *
-                             std::exp(-1.25) * 3.3, 1e-12 * at_peak);
+    EXPECT_NEAR(at_peak, p.alpha * kGravity * kGravity * std::pow(p.omega_peak, -5) * std::exp(-1.25) * 3.3,
+                1e-12 * at_peak);
     EXPECT_LT(jonswap_frequency_spectrum(0.98 * p.omega_peak, ocean), at_peak);
     EXPECT_LT(jonswap_frequency_spectrum(1.02 * p.omega_peak, ocean), at_peak);
 }
@@ -94,8 +93,7 @@ TEST(water_ocean_spectrum, JonswapDensityIntegratesBackToTheFrequencySpectrum) {
         const int count = 64;
         for (int i = 0; i < count; ++i) {
             const double theta = 2.0 * kPi * i / count;
-            ring += jonswap_spectrum(k * glm::dvec2(std::cos(theta), std::sin(theta)), ocean) * k *
-                    (2.0 * kPi / count);
+            ring += jonswap_spectrum(k * glm::dvec2(std::cos(theta), std::sin(theta)), ocean) * k * (2.0 * kPi / count);
         }
         const double expected = jonswap_frequency_spectrum(omega, ocean);
         EXPECT_NEAR(ring * 2.0 * omega / kGravity, expected, 1e-12 * expected) << "w = " << omega;
@@ -127,7 +125,7 @@ TEST(water_ocean_spectrum, RealisedVarianceMatchesTheSpectrum) {
     for (uint32_t b = 0; b < n; ++b) {
         for (uint32_t a = 0; a < n; ++a) {
             const int fx = FftOceanSpectrum::frequency(a, n), fz = FftOceanSpectrum::frequency(b, n);
-            if (a == n / 2 || b == n / 2 || fz < 0 || (fz == 0 && fx <= 0)) continue;  // one per pair
+            if (a == n / 2 || b == n / 2 || fz < 0 || (fz == 0 && fx <= 0)) continue;        // one per pair
             const double a_p = ocean_spectrum(spectrum.wave_vector(a, b), ocean) * dk * dk;  // Psi dk^2 / 2 twice
             sum_a += a_p;
             sum_a2 += a_p * a_p;
@@ -136,8 +134,7 @@ TEST(water_ocean_spectrum, RealisedVarianceMatchesTheSpectrum) {
     const double expected = 2.0 * sum_a;
     const double relative_sigma = std::sqrt(sum_a2) / sum_a;
     EXPECT_NEAR(expected, discrete_variance(ocean), 1e-12 * expected);
-    EXPECT_NEAR(mean_square / expected, 1.0, 4.0 * relative_sigma)
-        << "relative sigma " << relative_sigma;
+    EXPECT_NEAR(mean_square / expected, 1.0, 4.0 * relative_sigma) << "relative sigma " << relative_sigma;
 }
 
 }  // namespace

@@ -41,12 +41,11 @@ TEST(water_surface, MakeSurfacePicksTheModel) {
 
 TEST(water_surface, NormalPointsUpAndFallsBackAtCusps) {
     // Tangents of an overturned patch: the cross product points down and is flipped.
-    const SurfacePoint overturned = make_surface_point(glm::dvec3(0.0), glm::dvec3(-1.0, 0.0, 0.0),
-                                                       glm::dvec3(0.0, 0.0, 1.0));
+    const SurfacePoint overturned =
+        make_surface_point(glm::dvec3(0.0), glm::dvec3(-1.0, 0.0, 0.0), glm::dvec3(0.0, 0.0, 1.0));
     EXPECT_EQ(overturned.normal, glm::dvec3(0.0, 1.0, 0.0));
     // A Gerstner cusp: dP_du = 0. The normal would be NaN; the vertical limit is returned.
-    const SurfacePoint cusp = make_surface_point(glm::dvec3(0.0), glm::dvec3(0.0),
-                                                 glm::dvec3(0.0, 0.0, 1.0));
+    const SurfacePoint cusp = make_surface_point(glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0, 0.0, 1.0));
     EXPECT_EQ(cusp.normal, glm::dvec3(0.0, 1.0, 0.0));
 }
 

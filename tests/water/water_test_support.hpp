@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include <glm/glm.hpp>
 #include <gtest/gtest.h>
+#include <glm/glm.hpp>
 
 #include "engine/water/surface.hpp"
 
@@ -17,20 +17,18 @@ namespace vkw::test {
 // rounding error of a few eps times the magnitude `scale` of the sums that make it (the
 // coordinate, the level and the wave terms, sin() of a phase k x adding eps k x A), and the
 // difference divides that by 2h: 16 eps scale / h is a generous bound.
-inline double central_difference_tolerance(double step, double third_derivative_bound,
-                                           double scale) {
-    return step * step / 6.0 * third_derivative_bound +
-           16.0 * std::numeric_limits<double>::epsilon() * scale / step;
+inline double central_difference_tolerance(double step, double third_derivative_bound, double scale) {
+    return step * step / 6.0 * third_derivative_bound + 16.0 * std::numeric_limits<double>::epsilon() * scale / step;
 }
 
 // Checks dP_du, dP_dv and the normal at (x0, z0) against central differences with step h.
-inline void expect_derivatives_match_differences(const WaterSurface& surface, double x0,
-                                                 double z0, double step, double tolerance) {
+inline void expect_derivatives_match_differences(const WaterSurface& surface, double x0, double z0, double step,
+                                                 double tolerance) {
     const SurfacePoint p = surface.at_parameter(x0, z0);
-    const glm::dvec3 du = (surface.at_parameter(x0 + step, z0).position -
-                           surface.at_parameter(x0 - step, z0).position) / (2.0 * step);
-    const glm::dvec3 dv = (surface.at_parameter(x0, z0 + step).position -
-                           surface.at_parameter(x0, z0 - step).position) / (2.0 * step);
+    const glm::dvec3 du =
+        (surface.at_parameter(x0 + step, z0).position - surface.at_parameter(x0 - step, z0).position) / (2.0 * step);
+    const glm::dvec3 dv =
+        (surface.at_parameter(x0, z0 + step).position - surface.at_parameter(x0, z0 - step).position) / (2.0 * step);
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(p.dP_du[c], du[c], tolerance) << "dP_du[" << c << "] at " << x0 << ", " << z0;
         EXPECT_NEAR(p.dP_dv[c], dv[c], tolerance) << "dP_dv[" << c << "] at " << x0 << ", " << z0;
@@ -39,8 +37,7 @@ inline void expect_derivatives_match_differences(const WaterSurface& surface, do
     // once per factor, and normalising divides by |cross| (>= 0.1 on the surfaces tested), so
     // 4 |tangent| / |cross| times the tangent tolerance bounds its error.
     const glm::dvec3 cross = glm::cross(dv, du);
-    const double normal_tolerance =
-        4.0 * tolerance * (glm::length(du) + glm::length(dv)) / glm::length(cross);
+    const double normal_tolerance = 4.0 * tolerance * (glm::length(du) + glm::length(dv)) / glm::length(cross);
     const glm::dvec3 n = glm::normalize(cross);
     EXPECT_NEAR(glm::length(p.normal), 1.0, 1e-14);
     EXPECT_GT(p.normal.y, 0.0);

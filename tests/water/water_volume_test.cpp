@@ -86,8 +86,8 @@ FftOceanSurface small_ocean_surface(double choppiness) {
     ocean.resolution = 16;
     ocean.patch_size = 16.0;
     ocean.wind_speed = 5.0;
-    return FftOceanSurface(std::make_shared<const FftOceanSpectrum>(make_ocean_spectrum(ocean, 77)),
-                           choppiness, 0.0, 1.5);
+    return FftOceanSurface(std::make_shared<const FftOceanSpectrum>(make_ocean_spectrum(ocean, 77)), choppiness, 0.0,
+                           1.5);
 }
 
 TEST(water_volume, FftHeightfieldOverOnePatchKeepsTheFlatVolume) {

@@ -51,8 +51,8 @@ void expect_derivatives_everywhere(const WaveSettings& settings, double level, d
     const WaveSumSurface surface(settings, level, time);
     for (double x0 : {-7.3, -1.1, 0.0, 0.37, 2.9, 8.6}) {
         for (double z0 : {-5.2, -0.4, 0.81, 4.4}) {
-            const double tolerance = test::central_difference_tolerance(
-                kStep, third_derivative_bound(settings), rounding_scale(settings, x0, z0, level));
+            const double tolerance = test::central_difference_tolerance(kStep, third_derivative_bound(settings),
+                                                                        rounding_scale(settings, x0, z0, level));
             test::expect_derivatives_match_differences(surface, x0, z0, kStep, tolerance);
         }
     }
@@ -170,8 +170,7 @@ TEST(water_wave_sum, BadComponentsAreRefusedNamingTheField) {
     EXPECT_NE(refusal(sum_of({{-0.1, 1.0}})).find("water.waves.components[0].amplitude"), std::string::npos);
     EXPECT_NE(refusal(sum_of({{0.1, 1.0, 0.0, 0.0, -0.2}})).find("water.waves.components[0].steepness"),
               std::string::npos);
-    EXPECT_NE(refusal(sum_of({{0.1, 1.0, NAN}})).find("water.waves.components[0].direction_deg"),
-              std::string::npos);
+    EXPECT_NE(refusal(sum_of({{0.1, 1.0, NAN}})).find("water.waves.components[0].direction_deg"), std::string::npos);
 }
 
 }  // namespace

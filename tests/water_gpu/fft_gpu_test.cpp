@@ -41,8 +41,7 @@ std::size_t float_index(std::size_t p, std::size_t e, std::size_t plane_size) {
 
 // Runs the rows and columns passes in place on a host-visible buffer imported into the graph
 // (initial state: the host's write; final state: the host's read). `planes` is even.
-std::vector<Complex> gpu_inverse_fft(Context& context, const std::vector<Complex>& input, uint32_t n,
-                                     uint32_t planes) {
+std::vector<Complex> gpu_inverse_fft(Context& context, const std::vector<Complex>& input, uint32_t n, uint32_t planes) {
     const std::size_t size = std::size_t(n) * n;
     const VkDeviceSize bytes = input.size() * 2 * sizeof(float);
     Buffer buffer(context, {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true}, "fft grids");

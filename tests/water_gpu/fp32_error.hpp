@@ -27,8 +27,8 @@ inline constexpr double kTrigError = 4.0 * kUnitRoundoff;
 //   |error of one output| <= 2 log2(n) (pi u + sqrt(2) trig + 3 sqrt(2) u) sum |input|.
 inline double inverse_fft_error(double sum_abs_input, unsigned n) {
     const double stages = 2.0 * std::log2(double(n));
-    const double per_stage = std::numbers::pi * kUnitRoundoff + std::sqrt(2.0) * kTrigError +
-                             3.0 * std::sqrt(2.0) * kUnitRoundoff;
+    const double per_stage =
+        std::numbers::pi * kUnitRoundoff + std::sqrt(2.0) * kTrigError + 3.0 * std::sqrt(2.0) * kUnitRoundoff;
     return stages * per_stage * sum_abs_input;
 }
 

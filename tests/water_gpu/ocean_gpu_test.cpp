@@ -90,10 +90,10 @@ std::pair<SurfacePoint, VertexTolerance> ocean_sample(const OceanReference& refe
     tolerance.position.x = error[kOceanDispX] + kUnitRoundoff * (5.0 * std::abs(x0) + 2.0 * std::abs(f[kOceanDispX]));
     tolerance.position.y = error[kOceanHeight] + 2.0 * kUnitRoundoff * std::abs(cpu.position.y);
     tolerance.position.z = error[kOceanDispZ] + kUnitRoundoff * (5.0 * std::abs(z0) + 2.0 * std::abs(f[kOceanDispZ]));
-    const double du_error = error[kOceanDispXdX] + error[kOceanSlopeX] + error[kOceanDispXdZ] +
-                            kUnitRoundoff * std::abs(cpu.dP_du.x);
-    const double dv_error = error[kOceanDispXdZ] + error[kOceanSlopeZ] + error[kOceanDispZdZ] +
-                            kUnitRoundoff * std::abs(cpu.dP_dv.z);
+    const double du_error =
+        error[kOceanDispXdX] + error[kOceanSlopeX] + error[kOceanDispXdZ] + kUnitRoundoff * std::abs(cpu.dP_du.x);
+    const double dv_error =
+        error[kOceanDispXdZ] + error[kOceanSlopeZ] + error[kOceanDispZdZ] + kUnitRoundoff * std::abs(cpu.dP_dv.z);
     tolerance.normal = normal_error(cpu.dP_du, cpu.dP_dv, du_error, dv_error);
     return {cpu, tolerance};
 }

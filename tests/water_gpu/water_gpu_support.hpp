@@ -6,11 +6,11 @@
 #include "engine/framegraph/executor.hpp"
 #include "engine/vk/resources.hpp"
 #include "engine/water/surface.hpp"
-#include "passes/water/water_surface.hpp"
 #include "passes/present/readback.hpp"
+#include "passes/water/water_surface.hpp"
 
-#include <glm/glm.hpp>
 #include <gtest/gtest.h>
+#include <glm/glm.hpp>
 
 #include <algorithm>
 #include <cstdio>
@@ -65,9 +65,10 @@ struct WorstRatio {
     double position_tolerance = 0.0, normal_tolerance = 0.0;
 
     void print() const {
-        std::printf("worst error / tolerance: position %.4f, normal %.4f; largest tolerance: position %.2e m, "
-                    "normal %.2e\n",
-                    position, normal, position_tolerance, normal_tolerance);
+        std::printf(
+            "worst error / tolerance: position %.4f, normal %.4f; largest tolerance: position %.2e m, "
+            "normal %.2e\n",
+            position, normal, position_tolerance, normal_tolerance);
     }
 };
 

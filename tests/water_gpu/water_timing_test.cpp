@@ -55,7 +55,8 @@ TEST(water_gpu_timing, DISABLED_KernelTimesAtR256N256) {
     for (size_t count : {8u, 64u}) {
         inputs.waves.components.clear();
         for (size_t w = 0; w < count; ++w) {
-            inputs.waves.components.push_back({0.02, 1.0 + 0.37 * double(w), 13.0 * double(w), 0.0, 0.5 / double(count), -1.0});
+            inputs.waves.components.push_back(
+                {0.02, 1.0 + 0.37 * double(w), 13.0 * double(w), 0.0, 0.5 / double(count), -1.0});
         }
         print_pass_times(context, inputs, "sum, " + std::to_string(count) + " waves");
     }

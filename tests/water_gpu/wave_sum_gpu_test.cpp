@@ -57,8 +57,7 @@ VertexTolerance wave_sum_tolerance(const std::vector<WaveComponent>& waves, doub
     const double shift = glm::length(cpu.dP_du) * dx + glm::length(cpu.dP_dv) * dz;
     const double position = position_terms + sums * position_scale + shift;
     // Each tangent's three components: the Euclidean error is at most sqrt(3) times the bound.
-    const double tangent =
-        std::sqrt(3.0) * (tangent_terms + sums * tangent_scale + second_derivative * (dx + dz));
+    const double tangent = std::sqrt(3.0) * (tangent_terms + sums * tangent_scale + second_derivative * (dx + dz));
     return {glm::dvec3(position), normal_error(cpu.dP_du, cpu.dP_dv, tangent, tangent)};
 }
 
@@ -107,8 +106,14 @@ void expect_flat_grid(const std::vector<GpuVertex>& gpu, const passes::WaterSurf
     for (uint32_t j = 0; j < row; ++j) {
         for (uint32_t i = 0; i < row; ++i) {
             const GpuVertex& v = gpu[size_t(j) * row + i];
-            const float expected[8] = {e * (2.0f * float(i) - r) / r, static_cast<float>(inputs.level),
-                                       e * (2.0f * float(j) - r) / r, 1.0f, 0.0f, 1.0f, 0.0f, 0.0f};
+            const float expected[8] = {e * (2.0f * float(i) - r) / r,
+                                       static_cast<float>(inputs.level),
+                                       e * (2.0f * float(j) - r) / r,
+                                       1.0f,
+                                       0.0f,
+                                       1.0f,
+                                       0.0f,
+                                       0.0f};
             if (std::memcmp(&v, expected, sizeof expected) != 0 && wrong++ < 5) {
                 ADD_FAILURE() << "vertex " << i << "," << j << ": " << v.position[0] << " " << v.position[1] << " "
                               << v.position[2] << ", expected " << expected[0] << " " << expected[1] << " "
@@ -133,7 +138,8 @@ TEST_F(water_gpu_wave_sum, GridOverOneBindingIsWrittenInBands) {
     inputs.grid_resolution = 2048;
     const VkPhysicalDeviceLimits& limits = context().properties().limits;
     const size_t bands = passes::water_grid_bands(limits.maxStorageBufferRange, limits.minStorageBufferOffsetAlignment,
-                                                  inputs.grid_resolution).size();
+                                                  inputs.grid_resolution)
+                             .size();
     std::printf("R = 2048 takes %zu band(s) on this device\n", bands);
     expect_flat_grid(read_water_surface(context(), inputs), inputs);
 }

@@ -53,7 +53,8 @@ fg::BufferHandle add_caustic_scatter_pass(fg::FrameGraph& graph, ScatterKind kin
                                     std::to_string(push.height) + " texels exceeds one storage-buffer binding");
             }
             ComputePipelineDesc desc;
-            desc.shader = fixed ? "caustics/bench/caustic_scatter_fixed.comp" : "caustics/bench/caustic_scatter_float_cas.comp";
+            desc.shader =
+                fixed ? "caustics/bench/caustic_scatter_fixed.comp" : "caustics/bench/caustic_scatter_float_cas.comp";
             desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
             desc.layout.push_constant_bytes = sizeof(ScatterPush);
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);

@@ -83,8 +83,8 @@ Options parse(int argc, char** argv) {
                 const size_t comma = std::min(list.find(',', start), list.size());
                 const long grid = parse_number(list.substr(start, comma - start), "--grids");
                 if (grid < long(kMinGrid) || grid > long(kMaxGrid)) {
-                    usage_error("--grids: " + std::to_string(grid) + " is outside [" + std::to_string(kMinGrid) +
-                                ", " + std::to_string(kMaxGrid) + "]");
+                    usage_error("--grids: " + std::to_string(grid) + " is outside [" + std::to_string(kMinGrid) + ", " +
+                                std::to_string(kMaxGrid) + "]");
                 }
                 options.grids.push_back(uint32_t(grid));
                 start = comma + 1;
@@ -97,7 +97,8 @@ Options parse(int argc, char** argv) {
             options.runs = int(runs);
         } else if (arg == "--kernel" && has_value) {
             const std::string kernel = argv[++i];
-            if (kernel != "bilinear" && kernel != "adaptive") usage_error("--kernel: '" + kernel + "' is not bilinear or adaptive");
+            if (kernel != "bilinear" && kernel != "adaptive")
+                usage_error("--kernel: '" + kernel + "' is not bilinear or adaptive");
             options.kernel = kernel == "adaptive" ? CausticKernel::Adaptive : CausticKernel::Bilinear;
         } else if (arg == "--validate") {
             options.validate = true;
@@ -185,19 +186,21 @@ GridFigures measure(Context& context, uint32_t grid, int runs, bool native_float
 void print_tables(const std::vector<GridFigures>& all, const std::string& native_missing) {
     const std::string fixed = vkwbench::scatter_pass_name(vkwbench::ScatterKind::FixedPoint64);
     const std::string cas = vkwbench::scatter_pass_name(vkwbench::ScatterKind::FloatCas32);
-    std::printf("\nCaustic passes (ms, median):\n\n"
-                "| grid | photons | flux clear | photons (trace + splat) | resolve | photons/s |\n"
-                "| --- | --- | --- | --- | --- | --- |\n");
+    std::printf(
+        "\nCaustic passes (ms, median):\n\n"
+        "| grid | photons | flux clear | photons (trace + splat) | resolve | photons/s |\n"
+        "| --- | --- | --- | --- | --- | --- |\n");
     for (const GridFigures& f : all) {
         const double photons = double(f.grid) * f.grid, trace = f.pass_ms.at("caustic photons");
         std::printf("| %u^2 | %.0f | %.2f | %.2f | %.2f | %.1f M |\n", f.grid, photons,
                     f.pass_ms.at("caustic flux clear"), trace, f.pass_ms.at("caustic resolve"), photons / trace / 1e3);
     }
-    std::printf("\nScatter only, %u atomics per photon into the same map (ms, median; M atomic adds/s):\n\n"
-                "| grid | trace + splat | int64 scatter | ratio int64 scatter / (trace + splat) | int64 rate | "
-                "float32 CAS scatter | float32 CAS rate | CPU 2 threads, private maps | CPU 2 threads, atomics |\n"
-                "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n",
-                kAtomicsPerPhoton);
+    std::printf(
+        "\nScatter only, %u atomics per photon into the same map (ms, median; M atomic adds/s):\n\n"
+        "| grid | trace + splat | int64 scatter | ratio int64 scatter / (trace + splat) | int64 rate | "
+        "float32 CAS scatter | float32 CAS rate | CPU 2 threads, private maps | CPU 2 threads, atomics |\n"
+        "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n",
+        kAtomicsPerPhoton);
     for (const GridFigures& f : all) {
         const double adds = double(f.grid) * f.grid * kAtomicsPerPhoton;
         const double trace = f.pass_ms.at("caustic photons"), int64 = f.pass_ms.at(fixed), f32 = f.pass_ms.at(cas);
@@ -209,10 +212,11 @@ void print_tables(const std::vector<GridFigures>& all, const std::string& native
         std::printf("\nNative float atomics: not measured (%s).\n", native_missing.c_str());
         return;
     }
-    std::printf("\nNative float atomics, on a second device with VK_EXT_shader_atomic_float (ms, median; M atomic "
-                "adds/s):\n\n"
-                "| grid | int64 scatter | float32 atomicAdd scatter | float32 / int64 time | int64 rate | float32 rate |\n"
-                "| --- | --- | --- | --- | --- | --- |\n");
+    std::printf(
+        "\nNative float atomics, on a second device with VK_EXT_shader_atomic_float (ms, median; M atomic "
+        "adds/s):\n\n"
+        "| grid | int64 scatter | float32 atomicAdd scatter | float32 / int64 time | int64 rate | float32 rate |\n"
+        "| --- | --- | --- | --- | --- | --- |\n");
     for (const GridFigures& f : all) {
         const double adds = double(f.grid) * f.grid * kAtomicsPerPhoton;
         std::printf("| %u^2 | %.2f | %.2f | %.2f | %.0f M/s | %.0f M/s |\n", f.grid, f.native.int64_ms,
@@ -235,11 +239,12 @@ int main(int argc, char** argv) {
             Context context(context_options);
             log = context.shared_validation_log();
             native_missing = vkwbench::native_float_atomics_missing(context);
-            std::printf("device: %s; timing: one submission per pass, fence-timed on the CPU clock; %d runs per "
-                        "grid after one warm-up; %s splat kernel%s\n",
-                        context.device_name().c_str(), options.runs,
-                        options.kernel == CausticKernel::Adaptive ? "adaptive" : "bilinear",
-                        options.validate ? "; validation on" : "");
+            std::printf(
+                "device: %s; timing: one submission per pass, fence-timed on the CPU clock; %d runs per "
+                "grid after one warm-up; %s splat kernel%s\n",
+                context.device_name().c_str(), options.runs,
+                options.kernel == CausticKernel::Adaptive ? "adaptive" : "bilinear",
+                options.validate ? "; validation on" : "");
             for (const uint32_t grid : options.grids) {
                 all.push_back(measure(context, grid, options.runs, native_missing.empty(), options.kernel));
                 std::fprintf(stderr, "grid %u done\n", grid);

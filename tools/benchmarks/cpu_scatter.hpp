@@ -15,8 +15,8 @@ enum class CpuScatterMethod {
 };
 
 struct CpuScatterResult {
-    double ms = 0.0;          // the scatter and (PrivateBuffers) the reduction; not the zeroing
-    uint64_t checksum = 0;    // the sum of every texel, so the work cannot be optimised away
+    double ms = 0.0;        // the scatter and (PrivateBuffers) the reduction; not the zeroing
+    uint64_t checksum = 0;  // the sum of every texel, so the work cannot be optimised away
 };
 
 // The photons, map and margins of `push` (scatter_push).

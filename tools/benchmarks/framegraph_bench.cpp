@@ -56,7 +56,8 @@ void declare_thirty_passes(fg::FrameGraph& graph) {
             "splat " + n, fg::PassKind::Compute,
             [&](fg::PassBuilder& b, Data& d) {
                 b.read_storage(a.buffer);
-                d.image = b.write_storage(b.create_image("density " + n, {VK_FORMAT_R32_SFLOAT, fg::SizeClass::OutputRelative, 0.5f}));
+                d.image = b.write_storage(
+                    b.create_image("density " + n, {VK_FORMAT_R32_SFLOAT, fg::SizeClass::OutputRelative, 0.5f}));
             },
             [](const Data&, fg::PassContext&) {});
         const auto& g = graph.add_pass<Data>(
@@ -101,13 +102,19 @@ struct HandWrittenChain {
     const Context& context;
 
     explicit HandWrittenChain(const Context& c)
-        : pattern(c, {kSize, kSize, VK_FORMAT_R32G32B32A32_SFLOAT, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT}, "pattern"),
-          doubled(c, {kSize, kSize, VK_FORMAT_R32G32B32A32_SFLOAT, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT}, "doubled"),
+        : pattern(
+              c, {kSize, kSize, VK_FORMAT_R32G32B32A32_SFLOAT, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT},
+              "pattern"),
+          doubled(c,
+                  {kSize, kSize, VK_FORMAT_R32G32B32A32_SFLOAT,
+                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT},
+                  "doubled"),
           readback(c, {kBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "readback"),
           context(c) {
         VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
         VKW_CHECK(vkCreateSampler(c.device(), &info, nullptr, &sampler), "sampler");
-        ComputePipelineDesc cd{chain::kPatternShader, {{{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT}}}};
+        ComputePipelineDesc cd{chain::kPatternShader,
+                               {{{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT}}}};
         compute = std::make_unique<Pipeline>(c, cd, "hand compute");
         GraphicsPipelineDesc gd;
         gd.vertex_shader = "common/fullscreen.vert";
@@ -129,12 +136,13 @@ struct HandWrittenChain {
         write.pImageInfo = &storage;
         context.push_descriptor_set()(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute->layout(), 0, 1, &write);
         vkCmdDispatch(cmd, kSize / 8, kSize / 8, 1);
-        image_barrier(cmd, pattern.handle(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
-                      VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-        image_barrier(cmd, doubled.handle(), VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                      VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+        image_barrier(cmd, pattern.handle(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+        image_barrier(cmd, doubled.handle(), VK_PIPELINE_STAGE_2_NONE, 0,
+                      VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                      VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
         VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
         color.imageView = doubled.view();
         color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
@@ -158,12 +166,14 @@ struct HandWrittenChain {
         vkCmdDraw(cmd, 3, 1, 0, 0);
         vkCmdEndRendering(cmd);
         image_barrier(cmd, doubled.handle(), VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                      VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
-                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+                      VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                      VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {kSize, kSize, 1};
-        vkCmdCopyImageToBuffer(cmd, doubled.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.handle(), 1, &region);
+        vkCmdCopyImageToBuffer(cmd, doubled.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.handle(), 1,
+                               &region);
     }
 };
 
@@ -219,7 +229,8 @@ int main() {
         graph.compile(kSize, kSize);
         fg::FrameExecutor executor(context, graph, pipelines, {.timing = fg::TimingMode::None});
         const double by_hand = median_record_ms(context, pool, runs, [&](VkCommandBuffer cmd) { hand.record(cmd); });
-        const double by_graph = median_record_ms(context, pool, runs, [&](VkCommandBuffer cmd) { executor.record(cmd); });
+        const double by_graph =
+            median_record_ms(context, pool, runs, [&](VkCommandBuffer cmd) { executor.record(cmd); });
         const size_t passes = graph.compiled().order.size();
         std::printf("| record the chain by hand (%zu passes) | %.4f ms |\n", passes, by_hand);
         std::printf("| record it through the frame graph | %.4f ms |\n", by_graph);

@@ -76,7 +76,8 @@ public:
         VkDescriptorSetLayoutCreateInfo set_layout{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
         set_layout.bindingCount = 1;
         set_layout.pBindings = &binding;
-        VKW_CHECK(vkCreateDescriptorSetLayout(device_, &set_layout, nullptr, &set_layout_), "native scatter set layout");
+        VKW_CHECK(vkCreateDescriptorSetLayout(device_, &set_layout, nullptr, &set_layout_),
+                  "native scatter set layout");
         const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(ScatterPush)};
         VkPipelineLayoutCreateInfo layout{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
         layout.setLayoutCount = 1;
@@ -145,8 +146,13 @@ public:
         VkShaderModule module = VK_NULL_HANDLE;
         VKW_CHECK(vkCreateShaderModule(device_, &module_info, nullptr, &module), "native scatter shader");
         VkComputePipelineCreateInfo pipeline_info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-        pipeline_info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0,
-                               VK_SHADER_STAGE_COMPUTE_BIT, module, "main", nullptr};
+        pipeline_info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+                               nullptr,
+                               0,
+                               VK_SHADER_STAGE_COMPUTE_BIT,
+                               module,
+                               "main",
+                               nullptr};
         pipeline_info.layout = pipeline_layout_;
         VkPipeline pipeline = VK_NULL_HANDLE;
         VKW_CHECK(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &pipeline_info, nullptr, &pipeline),

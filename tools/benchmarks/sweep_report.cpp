@@ -110,12 +110,11 @@ void write_svg(const std::filesystem::path& file, const std::string& title, cons
                int downsample_factor) {
     if (rows.empty()) throw InternalError("write_svg: no rows");
     const std::vector<size_t> front = pareto_front(rows);
-    std::vector<Metric> metrics{
-        {"relMSE", [](const SweepRow& r) { return std::optional(r.rel_mse); }},
-        {"relMSE, both " + std::to_string(downsample_factor) + "x box-downsampled",
-         [](const SweepRow& r) { return std::optional(r.rel_mse_downsampled); }},
-        {"FLIP", [](const SweepRow& r) { return std::optional(r.flip); }},
-        {"|bias|", [](const SweepRow& r) { return std::optional(r.bias); }}};
+    std::vector<Metric> metrics{{"relMSE", [](const SweepRow& r) { return std::optional(r.rel_mse); }},
+                                {"relMSE, both " + std::to_string(downsample_factor) + "x box-downsampled",
+                                 [](const SweepRow& r) { return std::optional(r.rel_mse_downsampled); }},
+                                {"FLIP", [](const SweepRow& r) { return std::optional(r.flip); }},
+                                {"|bias|", [](const SweepRow& r) { return std::optional(r.bias); }}};
     if (std::any_of(rows.begin(), rows.end(), [](const SweepRow& r) { return r.caustic_rel_mse.has_value(); })) {
         metrics.push_back({"relMSE of the caustic layer", [](const SweepRow& r) { return r.caustic_rel_mse; }});
     }

@@ -28,8 +28,8 @@ Metrics compare_images(const ImageRGBA32F& test, const ImageRGBA32F& reference, 
 
 Metrics compare_layer(const ImageRGBA32F& test, const ImageRGBA32F& reference, const std::string& layer,
                       const ImageRGBA32F* mask, const FlipExposureRange* range) {
-    return compare_views(layer_view(test, layer, "the test image"), layer_view(reference, layer, "the reference"),
-                         mask, range);
+    return compare_views(layer_view(test, layer, "the test image"), layer_view(reference, layer, "the reference"), mask,
+                         range);
 }
 
 }  // namespace vkw::metrics

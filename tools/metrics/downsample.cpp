@@ -35,7 +35,8 @@ std::vector<float> downsample_plane(const std::vector<float>& values, int width,
                 for (int y = by * factor; y < (by + 1) * factor; ++y) {
                     for (int x = bx * factor; x < (bx + 1) * factor; ++x) {
                         sum += values[(static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                                       static_cast<std::size_t>(x)) * static_cast<std::size_t>(channels) +
+                                       static_cast<std::size_t>(x)) *
+                                          static_cast<std::size_t>(channels) +
                                       static_cast<std::size_t>(c)];
                     }
                 }

@@ -24,21 +24,22 @@ double luv_mean_distance(const RgbView& test, const RgbView& reference, std::spa
     require_comparable(test, reference, pixels);
     CompensatedSum reference_luminance;
     for (std::size_t p : pixels) {
-        reference_luminance.add(
-            luminance({reference.channel(p, 0), reference.channel(p, 1), reference.channel(p, 2)}));
+        reference_luminance.add(luminance({reference.channel(p, 0), reference.channel(p, 1), reference.channel(p, 2)}));
     }
     const double mean_luminance = reference_luminance.value() / static_cast<double>(pixels.size());
     if (!(mean_luminance > 0.0)) {
-        throw UserError("the L*u*v* distance needs a reference with a positive mean luminance over the compared "
-                        "pixels (it is " + std::to_string(mean_luminance) + ")");
+        throw UserError(
+            "the L*u*v* distance needs a reference with a positive mean luminance over the compared "
+            "pixels (it is " +
+            std::to_string(mean_luminance) + ")");
     }
     const double exposure = kMiddleGrey / mean_luminance;
     CompensatedSum distance;
     for (std::size_t p : pixels) {
         const Vec3 a = exposed_luv(test, p, exposure);
         const Vec3 b = exposed_luv(reference, p, exposure);
-        distance.add(std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-                               (a[2] - b[2]) * (a[2] - b[2])));
+        distance.add(
+            std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2])));
     }
     return distance.value() / static_cast<double>(pixels.size());
 }

@@ -48,8 +48,8 @@ ReferenceErrors::ReferenceErrors(ImageRGBA32F reference, int downsample_factor)
 FrameErrors ReferenceErrors::measure(const ImageRGBA32F& test) const {
     FrameErrors errors;
     errors.full = compare_images(test, reference_, nullptr, &range_);
-    errors.downsampled = compare_images(box_downsample(test, factor_), reference_downsampled_, nullptr,
-                                        &range_downsampled_);
+    errors.downsampled =
+        compare_images(box_downsample(test, factor_), reference_downsampled_, nullptr, &range_downsampled_);
     errors.caustic = layer_rel_mse(test, reference_, kCausticLayer);
     return errors;
 }

@@ -19,9 +19,7 @@ struct RgbView {
     const float* values = nullptr;
     int stride = 4;  // 4 for the RGBA of ImageRGBA32F, 3 for an ExtraLayer's rgb
 
-    std::size_t pixel_count() const {
-        return static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-    }
+    std::size_t pixel_count() const { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
     // Channel c (0 = R, 1 = G, 2 = B) of pixel p (row-major index).
     double channel(std::size_t p, int c) const { return values[p * static_cast<std::size_t>(stride) + c]; }
 };

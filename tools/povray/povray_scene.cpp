@@ -89,9 +89,10 @@ std::string water_mesh(const Scene& scene, uint32_t cells) {
     for (const glm::dvec3& n : normals) text += pov_vector(n) + "\n";
     // Texture 0, the surface: a perfect dielectric; Fresnel reflection with conserve_energy
     // leaves photons T = 1 - R. Texture 1, walls and bottom: opaque, black.
-    text += "  }\n  texture_list { 2,\n    texture { pigment { rgbf 1 } finish { ambient 0 emission 0 diffuse 0 "
-            "specular 0 reflection { 0, 1 fresnel on } conserve_energy } }\n    texture { pigment { rgb 0 } finish { "
-            "ambient 0 emission 0 diffuse 0 specular 0 } }\n  }\n";
+    text +=
+        "  }\n  texture_list { 2,\n    texture { pigment { rgbf 1 } finish { ambient 0 emission 0 diffuse 0 "
+        "specular 0 reflection { 0, 1 fresnel on } conserve_energy } }\n    texture { pigment { rgb 0 } finish { "
+        "ambient 0 emission 0 diffuse 0 specular 0 } }\n  }\n";
     text += "  face_indices { " + std::to_string(face_count) + ",\n" + faces + "  }\n";
     text += "  normal_indices { " + std::to_string(face_count) + ",\n" + normal_indices + "  }\n";
     // Closed: POV-Ray decides insideness (the camera's medium) along this direction.
@@ -153,8 +154,8 @@ std::string povray_floor_scene(const Scene& scene, const PovrayOptions& options)
     text += "plane {\n  y, " + number(scene.floor.height) +
             "\n  pigment { rgb 1 }\n  finish { ambient 0 emission 0 diffuse 1 specular 0 }\n}\n";
     text += water_mesh(scene, cells);
-    text += "  interior { ior " + number(water.ior) + " media { absorption " + triple(scene.medium.sigma_t()) +
-            " } }\n";
+    text +=
+        "  interior { ior " + number(water.ior) + " media { absorption " + triple(scene.medium.sigma_t()) + " } }\n";
     text += "  photons { target refraction on reflection off collect off }\n  hollow\n}\n";
     return text;
 }

@@ -39,9 +39,9 @@ struct FloorWindow {
 
 struct PovrayOptions {
     FloorWindow window;
-    uint32_t mesh_cells = 0;         // surface cells per side of the water mesh; 0: water.grid_resolution
-    double photon_spacing = 0.01;    // m between photons across the beam
-    double gather_radius = 0.0;      // m; 0: POV-Ray's automatic (adaptive) radius
+    uint32_t mesh_cells = 0;       // surface cells per side of the water mesh; 0: water.grid_resolution
+    double photon_spacing = 0.01;  // m between photons across the beam
+    double gather_radius = 0.0;    // m; 0: POV-Ray's automatic (adaptive) radius
 };
 
 // A square window of side `side` m around the middle of the floor that lies under the water

@@ -8,8 +8,7 @@
 
 namespace vkw::ref {
 
-BeamIrradiance::BeamIrradiance(const Scene& scene, const WaterSurface& surface, uint32_t cells_per_side,
-                               double patch)
+BeamIrradiance::BeamIrradiance(const Scene& scene, const WaterSurface& surface, uint32_t cells_per_side, double patch)
     : sun_direction_(scene.sun.direction),
       sun_irradiance_(scene.sun.irradiance),
       sigma_t_(scene.medium.sigma_t()),
@@ -49,11 +48,11 @@ glm::dvec3 BeamIrradiance::irradiance(const glm::dvec3& point, const glm::dvec3&
     const double depth = level_ + amplitude_ - point.y;
     const glm::dvec3 flat_entry = point - ((level_ - point.y) / -flat_refracted_.y) * flat_refracted_;
     const double cell = 2.0 * extent_ / cells_;
-    const double radius = depth * spread_ + amplitude_ * (1.0 + glm::length(glm::dvec2(flat_refracted_.x, flat_refracted_.z)) /
-                                                                     -flat_refracted_.y) + 2.0 * cell + patch_;
-    auto index_of = [&](double coordinate) {
-        return static_cast<int64_t>(std::floor((coordinate + extent_) / cell));
-    };
+    const double radius =
+        depth * spread_ +
+        amplitude_ * (1.0 + glm::length(glm::dvec2(flat_refracted_.x, flat_refracted_.z)) / -flat_refracted_.y) +
+        2.0 * cell + patch_;
+    auto index_of = [&](double coordinate) { return static_cast<int64_t>(std::floor((coordinate + extent_) / cell)); };
     // The patch's axes in the receiver's tangent plane.
     const glm::dvec3 axis_u = glm::normalize(
         glm::cross(std::abs(normal.y) < 0.9 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(1.0, 0.0, 0.0), normal));
@@ -81,7 +80,8 @@ glm::dvec3 BeamIrradiance::irradiance(const glm::dvec3& point, const glm::dvec3&
                     footprint[k] = v[k]->position + along[k] * v[k]->refracted;
                 }
                 if (!reaches) continue;
-                const double twice_area = glm::dot(glm::cross(footprint[1] - footprint[0], footprint[2] - footprint[0]), normal);
+                const double twice_area =
+                    glm::dot(glm::cross(footprint[1] - footprint[0], footprint[2] - footprint[0]), normal);
                 // The beam's flux through the surface triangle (docs/model.md section 4).
                 glm::dvec3 surface_normal =
                     glm::cross(v[2]->position - v[0]->position, v[1]->position - v[0]->position);
@@ -96,14 +96,16 @@ glm::dvec3 BeamIrradiance::irradiance(const glm::dvec3& point, const glm::dvec3&
                 double weights[3] = {1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0};  // where the beam is followed back
                 if (patch_ > 0.0) {
                     Polygon footprint_2d;
-                    for (const glm::dvec3& q : footprint) footprint_2d.push_back({glm::dot(q - point, axis_u), glm::dot(q - point, axis_v)});
+                    for (const glm::dvec3& q : footprint)
+                        footprint_2d.push_back({glm::dot(q - point, axis_u), glm::dot(q - point, axis_v)});
                     const double footprint_area = 0.5 * std::abs(twice_area);
                     const double overlap = overlap_with_square(footprint_2d, glm::dvec2(-0.5 * patch_), patch_);
                     if (footprint_area < 1e-30) {
                         // A footprint collapsed to a focus: all its flux lands where its centroid is.
                         const glm::dvec2 centre = (footprint_2d[0] + footprint_2d[1] + footprint_2d[2]) / 3.0;
                         share = std::abs(centre.x) <= 0.5 * patch_ && std::abs(centre.y) <= 0.5 * patch_
-                                    ? 1.0 / (patch_ * patch_) : 0.0;
+                                    ? 1.0 / (patch_ * patch_)
+                                    : 0.0;
                     } else {
                         share = overlap / footprint_area / (patch_ * patch_);
                     }
@@ -119,8 +121,8 @@ glm::dvec3 BeamIrradiance::irradiance(const glm::dvec3& point, const glm::dvec3&
                 }
                 if (share == 0.0) continue;
                 const double path = weights[0] * along[0] + weights[1] * along[1] + weights[2] * along[2];
-                const glm::dvec3 direction = glm::normalize(weights[0] * v[0]->refracted + weights[1] * v[1]->refracted +
-                                                            weights[2] * v[2]->refracted);
+                const glm::dvec3 direction = glm::normalize(
+                    weights[0] * v[0]->refracted + weights[1] * v[1]->refracted + weights[2] * v[2]->refracted);
                 const glm::dvec3 entry =
                     weights[0] * v[0]->position + weights[1] * v[1]->position + weights[2] * v[2]->position;
                 if (!visible(point, direction, path, entry)) continue;

@@ -20,8 +20,8 @@ struct Ray {
 
 struct TriangleHit {
     double distance;
-    uint32_t receiver;     // index of the mesh it belongs to
-    glm::dvec3 normal;     // interpolated shading normal, unit, facing the ray
+    uint32_t receiver;  // index of the mesh it belongs to
+    glm::dvec3 normal;  // interpolated shading normal, unit, facing the ray
 };
 
 class TriangleBvh {

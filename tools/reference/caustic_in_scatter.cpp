@@ -32,8 +32,7 @@ CausticInScatter::CausticInScatter(const Scene& scene, const WaterSurface& surfa
     auto worker = [&] {
         for (uint32_t k = next++; k < levels; k = next++) {
             maps_[k] = std::make_unique<FloorCausticMap>(scene, surface, settings.texels_per_side,
-                                                         settings.cells_per_side, settings.period,
-                                                         level_ - depths_[k]);
+                                                         settings.cells_per_side, settings.period, level_ - depths_[k]);
         }
     };
     std::vector<std::thread> pool;
@@ -53,8 +52,8 @@ glm::dvec3 CausticInScatter::flat_horizontal_irradiance(double depth) const {
 
 glm::dvec3 CausticInScatter::modulation(const glm::dvec3& point) const {
     const double depth = std::clamp(level_ - point.y, depths_.front(), depths_.back());
-    const size_t upper = std::min<size_t>(depths_.size() - 1,
-                                          size_t(std::upper_bound(depths_.begin(), depths_.end(), depth) - depths_.begin()));
+    const size_t upper = std::min<size_t>(
+        depths_.size() - 1, size_t(std::upper_bound(depths_.begin(), depths_.end(), depth) - depths_.begin()));
     const size_t lower = upper == 0 ? 0 : upper - 1;
     auto ratio = [&](size_t k) {
         const glm::dvec3 map = maps_[k]->irradiance(point.x, point.z);
@@ -83,8 +82,15 @@ glm::dvec3 CausticInScatter::segment_radiance(const glm::dvec3& origin, const gl
         const glm::dvec3 m = modulation(origin + (start + 0.5 * step) * direction);
         for (int c = 0; c < 3; ++c) {
             // The segment's flat in-scatter seen from its start, carried to the ray's origin.
-            const InScatterInput in{scene_.medium.sigma_s[c], sigma_t[c], scene_.medium.g, std::max(0.0, level_ - from.y),
-                                    step, direction, refracted_sun_, e_perp0_[c], 0.0};
+            const InScatterInput in{scene_.medium.sigma_s[c],
+                                    sigma_t[c],
+                                    scene_.medium.g,
+                                    std::max(0.0, level_ - from.y),
+                                    step,
+                                    direction,
+                                    refracted_sun_,
+                                    e_perp0_[c],
+                                    0.0};
             radiance[c] += m[c] * std::exp(-sigma_t[c] * start) * water_path_radiance(in);
         }
     }

@@ -57,7 +57,7 @@ private:
     glm::dvec3 refracted_sun_{0.0, -1.0, 0.0};
     glm::dvec3 e_perp0_{0.0};
     bool sun_up_ = false;
-    std::vector<double> depths_;  // below the mean level, increasing
+    std::vector<double> depths_;    // below the mean level, increasing
     std::vector<glm::dvec3> flat_;  // E_h,flat at each plane's depth
     std::vector<std::unique_ptr<FloorCausticMap>> maps_;
     double segment_length_ = 0.0;

@@ -21,10 +21,10 @@ FloorCausticMap::FloorCausticMap(const Scene& scene, const WaterSurface& surface
 
 FloorCausticMap::FloorCausticMap(const Scene& scene, const WaterSurface& surface, uint32_t texels_per_side,
                                  uint32_t cells_per_side, double period, double plane_y)
-    : FloorCausticMap(scene, surface, texels_per_side, cells_per_side,
-                      period > 0.0 ? Tile{0.5 * period, 0.5 * period, true} : Tile{0.0, scene.water->half_extent, false},
-                      period > 0.0 ? Tile{0.5 * period, 0.5 * period, true} : Tile{0.0, scene.floor.half_extent, false},
-                      plane_y) {}
+    : FloorCausticMap(
+          scene, surface, texels_per_side, cells_per_side,
+          period > 0.0 ? Tile{0.5 * period, 0.5 * period, true} : Tile{0.0, scene.water->half_extent, false},
+          period > 0.0 ? Tile{0.5 * period, 0.5 * period, true} : Tile{0.0, scene.floor.half_extent, false}, plane_y) {}
 
 FloorCausticMap::FloorCausticMap(const Scene& scene, const WaterSurface& surface, uint32_t texels_per_side,
                                  uint32_t cells_per_side, const Tile& cells, const Tile& texels, double plane_y)

@@ -46,8 +46,8 @@ double hemispherical_transmittance(double ior) {
 }
 
 double water_path_radiance(const InScatterInput& in) {
-    const double cos_t = -in.refracted_sun.y;                       // cos(theta_t)
-    const double c = -in.view_direction.y / cos_t;                  // downward component of v over cos(theta_t)
+    const double cos_t = -in.refracted_sun.y;       // cos(theta_t)
+    const double c = -in.view_direction.y / cos_t;  // downward component of v over cos(theta_t)
     const double cos_alpha = glm::dot(in.refracted_sun, -in.view_direction);
     // exp(-tau0) (1 - exp(-x)) / x with tau0 the sun's optical depth at z0 and
     // x = sigma_t s (1 + c). For x < 0 (rays rising faster than the beam sinks) it is
@@ -55,8 +55,8 @@ double water_path_radiance(const InScatterInput& in) {
     // at the segment's shallow end, >= 0, so neither exponential can overflow.
     const double tau0 = in.sigma_t * in.z0 / cos_t;
     const double x = in.sigma_t * in.s * (1.0 + c);
-    const double beam = x >= 0.0 ? std::exp(-tau0) * one_minus_exp_over_x(x)
-                                 : std::exp(-(tau0 + x)) * one_minus_exp_over_x(-x);
+    const double beam =
+        x >= 0.0 ? std::exp(-tau0) * one_minus_exp_over_x(x) : std::exp(-(tau0 + x)) * one_minus_exp_over_x(-x);
     const double scattered = in.sigma_s * henyey_greenstein(cos_alpha, in.g) * in.e_perp0 * in.s * beam;
     return in.l_behind * std::exp(-in.sigma_t * in.s) + scattered;
 }

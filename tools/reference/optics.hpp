@@ -37,10 +37,10 @@ double hemispherical_transmittance(double ior);
 struct InScatterInput {
     double sigma_s, sigma_t, g;
     double z0, s;
-    glm::dvec3 view_direction;     // v, unit
-    glm::dvec3 refracted_sun;      // t, unit, t.y < 0
+    glm::dvec3 view_direction;  // v, unit
+    glm::dvec3 refracted_sun;   // t, unit, t.y < 0
     double e_perp0;
-    double l_behind;               // radiance at the far end of the segment
+    double l_behind;  // radiance at the far end of the segment
 };
 double water_path_radiance(const InScatterInput& in);
 

@@ -11,8 +11,7 @@ namespace vkw::ref {
 
 Ray camera_ray(const Camera& camera, uint32_t width, uint32_t height, double x, double y) {
     const glm::dmat4 view = view_matrix(camera);
-    const glm::dmat4 inverse =
-        glm::inverse(projection_matrix(camera, double(width) / double(height)) * view);
+    const glm::dmat4 inverse = glm::inverse(projection_matrix(camera, double(width) / double(height)) * view);
     const glm::dvec2 ndc{2.0 * x / width - 1.0, 1.0 - 2.0 * y / height};
     const glm::dvec4 on_near_plane = inverse * glm::dvec4(ndc, 1.0, 1.0);
     const glm::dvec3 point = glm::dvec3(on_near_plane) / on_near_plane.w;

@@ -20,9 +20,9 @@ namespace vkw::ref {
 struct ReferenceOptions {
     uint32_t width = 400;
     uint32_t height = 300;
-    unsigned threads = 0;                        // 0: every hardware thread
-    std::function<void(double)> progress;        // called with the finished fraction
-    WaterTransport::Quality quality;             // wavy water's floor caustics (coarser: faster, for small tests)
+    unsigned threads = 0;                  // 0: every hardware thread
+    std::function<void(double)> progress;  // called with the finished fraction
+    WaterTransport::Quality quality;       // wavy water's floor caustics (coarser: faster, for small tests)
 };
 
 // The primary ray through pixel (x, y)'s centre, row 0 at the top: the same camera
@@ -31,9 +31,9 @@ Ray camera_ray(const Camera& camera, uint32_t width, uint32_t height, double x, 
 
 // What the reference knows of its own error.
 struct ReferenceReport {
-    double caustic_refinement_change = 0.0;  // relative RMS change of the floor caustics on refinement
+    double caustic_refinement_change = 0.0;   // relative RMS change of the floor caustics on refinement
     std::vector<std::string> approximations;  // what the image keeps approximate, one sentence each
-    double surface_height_error_bound = 0.0;   // m: the FFT ocean's sampled series (0: exact surfaces)
+    double surface_height_error_bound = 0.0;  // m: the FFT ocean's sampled series (0: exact surfaces)
     double surface_slope_error_bound = 0.0;
 };
 

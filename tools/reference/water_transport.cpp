@@ -19,7 +19,7 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Ray origins are pushed off the surface they leave by this much (metres): far above
 // double rounding at scene scale (1e-15 * 1e3 m), far below any feature of a scene.
 constexpr double kOffset = 1e-9;
-constexpr double kSunDiskSolidAngle = 6.80e-5;       // docs/model.md section 1
+constexpr double kSunDiskSolidAngle = 6.80e-5;  // docs/model.md section 1
 constexpr double kSunDiskAngularRadiusDeg = 0.2666;
 
 glm::dvec3 exp3(const glm::dvec3& x) { return {std::exp(x.x), std::exp(x.y), std::exp(x.z)}; }
@@ -67,8 +67,8 @@ WaterTransport::WaterTransport(const Scene& scene, const Quality& quality) : sce
         for (const WaveComponent& wave : scene.water->waves.components) {
             if (wave.amplitude > 0.0) shortest_wavelength_ = std::min(shortest_wavelength_, wave.wavelength);
         }
-        const auto cells = static_cast<uint32_t>(
-            std::ceil(2.0 * half_extent_ / shortest_wavelength_ * quality.cells_per_wavelength));
+        const auto cells =
+            static_cast<uint32_t>(std::ceil(2.0 * half_extent_ / shortest_wavelength_ * quality.cells_per_wavelength));
         if (meshes_under_water()) {
             // Meshes under the waves: every receiver (the floor too, so that the meshes shadow
             // it) takes the beams averaged over a patch the size of the floor map's texel, at
@@ -135,11 +135,11 @@ void WaterTransport::build_ocean(const Quality& quality) {
     if (meshes_under_water()) {
         throw UserError(scene_.source.string() +
                         ": receivers: the reference renderer does not compute receiver meshes under an FFT ocean yet "
-                        "(accepted: meshes entirely above y = " + std::to_string(level_ + max_amplitude_) +
-                        ", the highest crest)");
+                        "(accepted: meshes entirely above y = " +
+                        std::to_string(level_ + max_amplitude_) + ", the highest crest)");
     }
-    RefinedFloorCaustics caustics = refine_floor_caustics(scene_, *surface_, quality.ocean_floor_texels,
-                                                          quality.ocean_cells_per_period, period);
+    RefinedFloorCaustics caustics =
+        refine_floor_caustics(scene_, *surface_, quality.ocean_floor_texels, quality.ocean_cells_per_period, period);
     floor_caustics_ = std::move(caustics.map);
     caustic_refinement_change_ = caustics.relative_rms_change;
     // Beams that reach the floor near the water's edge may have entered beyond it, where the
@@ -271,8 +271,7 @@ bool WaterTransport::in_water(const glm::dvec3& p) const {
            p.y >= bottom_ - kBottomTolerance && p.y < surface_height(p.x, p.z);
 }
 
-std::optional<WaterTransport::SurfaceHit> WaterTransport::closest_receiver(const Ray& ray,
-                                                                                    double max_distance) const {
+std::optional<WaterTransport::SurfaceHit> WaterTransport::closest_receiver(const Ray& ray, double max_distance) const {
     const auto hit = bvh_->closest_hit(ray, max_distance);
     if (!hit) return std::nullopt;
     return SurfaceHit{hit->distance, albedo_[hit->receiver], hit->normal};
@@ -299,7 +298,7 @@ glm::dvec3 WaterTransport::sun_irradiance_under_water(const glm::dvec3& point, c
 }
 
 glm::dvec3 WaterTransport::receiver_radiance(const glm::dvec3& point, const SurfaceHit& hit,
-                                                 glm::dvec3* caustic) const {
+                                             glm::dvec3* caustic) const {
     glm::dvec3 irradiance;
     if (in_water(point)) {
         const glm::dvec3 sun = sun_irradiance_under_water(point, hit.normal);
@@ -311,7 +310,8 @@ glm::dvec3 WaterTransport::receiver_radiance(const glm::dvec3& point, const Surf
         glm::dvec3 sun(0.0);
         if (sun_up_) {
             const double cos_sun = std::max(0.0, -glm::dot(scene_.sun.direction, hit.normal));
-            if (cos_sun > 0.0 && !sun_blocked_in_air(point + kOffset * hit.normal)) sun = scene_.sun.irradiance * cos_sun;
+            if (cos_sun > 0.0 && !sun_blocked_in_air(point + kOffset * hit.normal))
+                sun = scene_.sun.irradiance * cos_sun;
         }
         irradiance = sun + std::numbers::pi * sky_average_;
     }
@@ -330,15 +330,16 @@ glm::dvec3 WaterTransport::radiance_in_air(const Ray& ray) const {
 }
 
 glm::dvec3 WaterTransport::in_water_segment(const glm::dvec3& origin, double length, const glm::dvec3& direction,
-                                                const glm::dvec3& behind) const {
+                                            const glm::dvec3& behind) const {
     if (in_scatter_) return in_scatter_->segment_radiance(origin, direction, length, behind);
     // A segment that starts in a crest above the mean level uses depth 0.
     const double z0 = std::max(0.0, level_ - origin.y);
     glm::dvec3 radiance;
     const glm::dvec3 sigma_t = scene_.medium.sigma_t();
     for (int c = 0; c < 3; ++c) {
-        InScatterInput in{scene_.medium.sigma_s[c], sigma_t[c], scene_.medium.g, z0, length, direction,
-                          refracted_sun_, sun_up_ ? e_perp0_[c] : 0.0, behind[c]};
+        InScatterInput in{
+            scene_.medium.sigma_s[c],    sigma_t[c], scene_.medium.g, z0, length, direction, refracted_sun_,
+            sun_up_ ? e_perp0_[c] : 0.0, behind[c]};
         radiance[c] = water_path_radiance(in);
     }
     return radiance;
@@ -365,8 +366,8 @@ PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray) const {
     if (!camera_in_water) {
         if (receiver || to_surface == kInfinity) {  // nothing but air on the way
             if (receiver) {
-                pixel.radiance = receiver_radiance(ray.origin + receiver->distance * ray.direction, *receiver,
-                                                   &pixel.caustic);
+                pixel.radiance =
+                    receiver_radiance(ray.origin + receiver->distance * ray.direction, *receiver, &pixel.caustic);
             } else {
                 pixel.radiance = radiance_in_air(ray);
             }

@@ -25,8 +25,8 @@
 
 #include "engine/scene/scene.hpp"
 #include "engine/water/surface.hpp"
-#include "tools/reference/bvh.hpp"
 #include "tools/reference/beam_irradiance.hpp"
+#include "tools/reference/bvh.hpp"
 #include "tools/reference/caustic_in_scatter.hpp"
 #include "tools/reference/floor_caustics.hpp"
 
@@ -47,8 +47,9 @@ class WaterTransport {
 public:
     // How finely wavy water's floor caustics are computed.
     struct Quality {
-        uint32_t floor_texels = 2048;        // texels per side of the floor's caustic map
-        double cells_per_wavelength = 32.0;  // surface cells per shortest wavelength (coarse map; the fine one doubles it)
+        uint32_t floor_texels = 2048;  // texels per side of the floor's caustic map
+        double cells_per_wavelength =
+            32.0;  // surface cells per shortest wavelength (coarse map; the fine one doubles it)
         // The FFT ocean: the padding of its sampled series (sampled_ocean_surface.hpp), and its
         // periodic floor map's texels and (coarse) surface cells per period.
         uint32_t ocean_padding = 4;
@@ -132,7 +133,7 @@ private:
     std::unique_ptr<TriangleBvh> bvh_;
     double level_ = 0.0, half_extent_ = 0.0, bottom_ = 0.0, ior_ = 1.0;
     bool has_water_ = false;
-    std::unique_ptr<WaterSurface> surface_;            // wavy water only
+    std::unique_ptr<WaterSurface> surface_;  // wavy water only
     // Steps along view rays: |f| / (|d_y| + |d_h| crossing_slope_) when crossing_slope_ > 0
     // (the FFT ocean), else the fixed step of 1/64 of the shortest wavelength.
     double crossing_slope_ = 0.0;

@@ -12,9 +12,9 @@
 // `water.time` (the renderer keeps no clock), so the timed frames and the measured one agree.
 #include "engine/core/errors.hpp"
 #include "engine/image/exr_io.hpp"
-#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
+#include "passes/frame/renderer.hpp"
 #include "tools/benchmarks/frame_memory.hpp"
 #include "tools/benchmarks/sweep_report.hpp"
 #include "tools/metrics/downsample.hpp"
@@ -60,7 +60,8 @@ SweepAxis parse_sweep(const std::string& text) {
         start = comma + 1;
     }
     if (key.empty() || axis.values.empty()) {
-        throw UserError("--sweep '" + text + "': expected key.path=value1,value2,... (a scene field as --set names it, "
+        throw UserError("--sweep '" + text +
+                        "': expected key.path=value1,value2,... (a scene field as --set names it, "
                         "and at least one value)");
     }
     return axis;
@@ -81,7 +82,8 @@ SweepAxis parse_alternatives(const std::string& text) {
         auto is_override = [](const std::string& o) { return o.find('=') != std::string::npos && o.front() != '='; };
         const bool valid = !overrides.empty() && std::all_of(overrides.begin(), overrides.end(), is_override);
         if (!valid) {
-            throw UserError("--alternatives '" + text + "': expected alternatives separated by '|', each one or more "
+            throw UserError("--alternatives '" + text +
+                            "': expected alternatives separated by '|', each one or more "
                             "key.path=value overrides separated by spaces");
         }
         axis.values.push_back(std::move(overrides));
@@ -121,8 +123,8 @@ metrics::ReferenceErrors load_reference(const std::string& path) {
     if (image.width < factor || image.height < factor) {
         throw UserError("--reference " + path + ": the image is " + metrics::size_text(image.width, image.height) +
                         ", but the errors at " + std::to_string(factor) +
-                        "x box-downsampled resolution need at least " +
-                        std::to_string(factor) + "x" + std::to_string(factor) + " pixels");
+                        "x box-downsampled resolution need at least " + std::to_string(factor) + "x" +
+                        std::to_string(factor) + " pixels");
     }
     return metrics::ReferenceErrors(std::move(image), factor);
 }
@@ -187,16 +189,17 @@ int run_bench(const BenchArgs& args) {
         rows.push_back(row);
     }
     bench::write_csv(out_dir / "sweep.csv", rows, metrics::kBenchDownsampleFactor);
-    bench::write_svg(out_dir / "sweep.svg", std::filesystem::path(args.scene).filename().string() + ", " +
-                                                std::to_string(width) + "x" + std::to_string(height) + ", " +
-                                                std::to_string(args.frames) + " frames, on " + context->device_name(),
+    bench::write_svg(out_dir / "sweep.svg",
+                     std::filesystem::path(args.scene).filename().string() + ", " + std::to_string(width) + "x" +
+                         std::to_string(height) + ", " + std::to_string(args.frames) + " frames, on " +
+                         context->device_name(),
                      rows, metrics::kBenchDownsampleFactor);
-    std::printf("time: median of %u frames after a warm-up (spread: interquartile range), one submission per "
-                "frame (whole frame), scene time frozen at water.time\n",
-                args.frames);
+    std::printf(
+        "time: median of %u frames after a warm-up (spread: interquartile range), one submission per "
+        "frame (whole frame), scene time frozen at water.time\n",
+        args.frames);
     if (args.frames < kRecommendedFrames) {
-        std::printf("note: fewer than %u frames per setting: the medians and spreads are rough\n",
-                    kRecommendedFrames);
+        std::printf("note: fewer than %u frames per setting: the medians and spreads are rough\n", kRecommendedFrames);
     }
     std::printf("memory: the frame graph's transient heap plus the imported buffers and images\n");
     std::printf("wrote %s and %s\n", (out_dir / "sweep.csv").c_str(), (out_dir / "sweep.svg").c_str());
@@ -221,8 +224,10 @@ Run add_bench_command(CLI::App& app) {
                         "Also sweep over whole sets of overrides: 'key.path=v key.path=v|key.path=v|...' (repeatable; "
                         "one axis each, combined with every other axis), e.g. "
                         "'effects.godrays.mode=off|effects.godrays.grid=32'");
-    command->add_option("--frames", args->frames, "Timed frames per setting (after one warm-up frame); 30 or more for a meaningful median "
-                        "and spread")
+    command
+        ->add_option("--frames", args->frames,
+                     "Timed frames per setting (after one warm-up frame); 30 or more for a meaningful median "
+                     "and spread")
         ->check(CLI::Range(1u, 100000u))
         ->capture_default_str();
     command->add_option("--out-dir", args->out_dir, "Folder for sweep.csv and sweep.svg (default bench-<scene>)");

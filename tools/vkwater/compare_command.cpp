@@ -96,9 +96,10 @@ Run add_compare_command(CLI::App& app) {
         ->required();
     command->add_option("--mask", args->mask, "Only pixels whose R is > 0.5 in this OpenEXR image count");
     command->add_option("--layer", args->layer, "Compare this extra layer (e.g. caustic) instead of R, G, B");
-    command->add_option("--downsample", args->downsample,
-                        "Also compare both images averaged over N x N pixel blocks (4 separates energy errors "
-                        "from sub-texel misplacement)")
+    command
+        ->add_option("--downsample", args->downsample,
+                     "Also compare both images averaged over N x N pixel blocks (4 separates energy errors "
+                     "from sub-texel misplacement)")
         ->check(CLI::Range(1, 4096))
         ->capture_default_str();
     return [args] { return run_compare(*args); };

@@ -4,11 +4,11 @@
 #include "engine/core/errors.hpp"
 #include "engine/framegraph/frame_graph.hpp"
 #include "engine/image/file_paths.hpp"
-#include "passes/frame/frame_needs.hpp"
-#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
 #include "engine/water/fft_ocean.hpp"
+#include "passes/frame/frame_needs.hpp"
+#include "passes/frame/renderer.hpp"
 #include "passes/receivers/receiver_meshes.hpp"
 #include "passes/water/water_surface_spectrum.hpp"
 #include "tools/vkwater/commands.hpp"
@@ -49,8 +49,7 @@ int run_passes(const PassesArgs& args) {
         if (!context) context = std::make_unique<Context>(ContextOptions{});
         receivers = std::make_unique<passes::ReceiverMeshes>(*context, scene.receivers);
     }
-    build_frame_graph(graph, scene, &constants, args.width, args.height, VK_NULL_HANDLE, ocean.get(),
-                      receivers.get());
+    build_frame_graph(graph, scene, &constants, args.width, args.height, VK_NULL_HANDLE, ocean.get(), receivers.get());
     graph.compile(args.width, args.height);
     std::printf("%s", graph.describe().c_str());
     if (args.barriers) std::printf("barriers:\n%s", graph.dump_barriers().c_str());

@@ -52,21 +52,24 @@ Run add_povray_command(CLI::App& app) {
     command->add_option("scene", args->scene, "Scene file (JSON, see scenes/README.md)")->required();
     command->add_option("--out,-o", args->out, "Output POV-Ray file")->required();
     command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
-    command->add_option("--window", args->window,
-                        "Floor window x0 z0 x1 z1 in metres (default: a square of --side around the middle of "
-                        "the floor lit through the surface)")
+    command
+        ->add_option("--window", args->window,
+                     "Floor window x0 z0 x1 z1 in metres (default: a square of --side around the middle of "
+                     "the floor lit through the surface)")
         ->expected(4);
     command->add_option("--side", args->side, "Side of the default window, m")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
-    command->add_option("--mesh-cells", args->options.mesh_cells,
-                        "Water surface cells per side (default: the scene's water.grid_resolution)")
+    command
+        ->add_option("--mesh-cells", args->options.mesh_cells,
+                     "Water surface cells per side (default: the scene's water.grid_resolution)")
         ->check(CLI::Range(1u, 4096u));
     command->add_option("--photon-spacing", args->options.photon_spacing, "Metres between photons across the beam")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
-    command->add_option("--gather-radius", args->options.gather_radius,
-                        "Fixed photon gather radius in metres (default 0: POV-Ray's adaptive radius)")
+    command
+        ->add_option("--gather-radius", args->options.gather_radius,
+                     "Fixed photon gather radius in metres (default 0: POV-Ray's adaptive radius)")
         ->check(CLI::NonNegativeNumber);
     return [args] { return run_povray(*args); };
 }

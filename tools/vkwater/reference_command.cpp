@@ -8,13 +8,13 @@
 #include "tools/reference/scene_hash.hpp"
 #include "tools/vkwater/commands.hpp"
 
-#include <nlohmann/json.hpp>
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <cstdio>
 #include <memory>
 
 namespace vkw::cli {
@@ -107,7 +107,8 @@ int run_reference(const ReferenceArgs& args) {
 
 Run add_reference_command(CLI::App& app) {
     auto args = std::make_shared<ReferenceArgs>();
-    CLI::App* command = app.add_subcommand("reference", "Render a scene with the CPU reference renderer (ground truth)");
+    CLI::App* command =
+        app.add_subcommand("reference", "Render a scene with the CPU reference renderer (ground truth)");
     command->add_option("scene", args->scene, "Scene file (JSON)")->required();
     command->add_option("--out,-o", args->out, "Output OpenEXR file (RGBA and the caustic layer)")->required();
     command->add_option("--width", args->width, "Image width in pixels")
@@ -116,13 +117,13 @@ Run add_reference_command(CLI::App& app) {
     command->add_option("--height", args->height, "Image height in pixels")
         ->check(CLI::Range(1u, 16384u))
         ->capture_default_str();
-    command->add_option("--threads", args->threads, "Worker threads (0: every hardware thread)")
-        ->capture_default_str();
+    command->add_option("--threads", args->threads, "Worker threads (0: every hardware thread)")->capture_default_str();
     command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
-    command->add_option("--cells-per-wavelength", args->cells_per_wavelength,
-                        "Wavy water: surface cells per shortest wavelength of the beam-mapped caustics (the "
-                        "estimate compares against half as many); more lowers the reference's error and costs "
-                        "about its square in time")
+    command
+        ->add_option("--cells-per-wavelength", args->cells_per_wavelength,
+                     "Wavy water: surface cells per shortest wavelength of the beam-mapped caustics (the "
+                     "estimate compares against half as many); more lowers the reference's error and costs "
+                     "about its square in time")
         ->check(CLI::Range(4.0, 256.0))
         ->capture_default_str();
     command->add_option("--manifest", args->manifest,

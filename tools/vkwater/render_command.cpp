@@ -4,9 +4,9 @@
 #include "engine/image/exr_io.hpp"
 #include "engine/image/file_paths.hpp"
 #include "engine/image/png_preview.hpp"
-#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
+#include "passes/frame/renderer.hpp"
 #include "tools/metrics/metrics.hpp"
 #include "tools/metrics/reference_errors.hpp"
 #include "tools/vkwater/commands.hpp"
@@ -130,9 +130,10 @@ Run add_render_command(CLI::App& app) {
     command->add_option("--height", args->height, "Image height in pixels")->capture_default_str();
     command->add_flag("--half", args->half, "Write half floats (values beyond 65504 are clamped and counted)");
     command->add_flag("--png", args->png, "Also write a tone-mapped PNG preview next to the EXR");
-    command->add_option("--repeat", args->repeat,
-                        "Render this many frames and report the last: the first frame includes llvmpipe's "
-                        "compilation of shader variants on first use")
+    command
+        ->add_option("--repeat", args->repeat,
+                     "Render this many frames and report the last: the first frame includes llvmpipe's "
+                     "compilation of shader variants on first use")
         ->check(CLI::Range(1u, 10000u))
         ->capture_default_str();
     command->add_flag("--no-caustic-layer", args->no_caustic_layer,

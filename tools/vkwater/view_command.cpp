@@ -2,9 +2,9 @@
 // camera, the parameter panel, the statistics overlay; --frames and --script make a
 // repeatable run that exits with a summary (tests, benchmarks).
 #include "engine/core/errors.hpp"
+#include "tools/vkwater/commands.hpp"
 #include "tools/vkwater/view/stats_overlay.hpp"
 #include "tools/vkwater/view/viewer.hpp"
-#include "tools/vkwater/commands.hpp"
 
 #include <map>
 #include <memory>
@@ -21,10 +21,9 @@ struct ViewArgs {
 };
 
 int run_view(ViewArgs& args) {
-    static const std::map<std::string, window::PresentMode> kModes = {
-        {"fifo", window::PresentMode::Fifo},
-        {"mailbox", window::PresentMode::Mailbox},
-        {"immediate", window::PresentMode::Immediate}};
+    static const std::map<std::string, window::PresentMode> kModes = {{"fifo", window::PresentMode::Fifo},
+                                                                      {"mailbox", window::PresentMode::Mailbox},
+                                                                      {"immediate", window::PresentMode::Immediate}};
     args.viewer.scene = args.scene;
     args.viewer.script = args.script;
     args.viewer.present = kModes.at(args.present);
@@ -51,19 +50,22 @@ Run add_view_command(CLI::App& app) {
     command->add_option("--present", args->present, "Present mode: fifo, mailbox or immediate")
         ->check(CLI::IsMember({"fifo", "mailbox", "immediate"}))
         ->capture_default_str();
-    command->add_option("--frames", args->viewer.frames,
-                        "Show this many frames, print the summary and exit (0: until the window closes)")
+    command
+        ->add_option("--frames", args->viewer.frames,
+                     "Show this many frames, print the summary and exit (0: until the window closes)")
         ->capture_default_str();
     command->add_option("--script", args->script,
                         "Run the commands of this file by frame (FRAME: camera|move|resize|set|screenshot|pause|"
                         "resume|time|mode|reload-shaders|wait-file ...; tools/vkwater/view/view_script.hpp)");
     command->add_option("--set", args->viewer.overrides, "Override a scene field: key.path=value (repeatable)");
-    command->add_option("--pass-timing-every", args->viewer.timing_every,
-                        "Run the scene graph alone every N frames for per-pass times (fence-timed on CPU "
-                        "devices); 0: never")
+    command
+        ->add_option("--pass-timing-every", args->viewer.timing_every,
+                     "Run the scene graph alone every N frames for per-pass times (fence-timed on CPU "
+                     "devices); 0: never")
         ->capture_default_str();
-    command->add_option("--screenshot-prefix", args->viewer.screenshot_prefix,
-                        "F12 writes PREFIX-<n>.exr (linear HDR) and PREFIX-<n>.png")
+    command
+        ->add_option("--screenshot-prefix", args->viewer.screenshot_prefix,
+                     "F12 writes PREFIX-<n>.exr (linear HDR) and PREFIX-<n>.png")
         ->capture_default_str();
     command->add_flag("--paused", args->viewer.paused, "Start with the water's clock stopped");
     add_device_options(*command, args->device);

@@ -58,8 +58,7 @@ FeatureMagnitudes detect_features(const Plane& achromatic, const FeatureKernels&
 }
 
 double feature_error(double edge_test, double edge_reference, double point_test, double point_reference) {
-    const double difference =
-        std::max(std::abs(edge_test - edge_reference), std::abs(point_test - point_reference));
+    const double difference = std::max(std::abs(edge_test - edge_reference), std::abs(point_test - point_reference));
     return std::pow(difference / std::sqrt(2.0), kQf);
 }
 

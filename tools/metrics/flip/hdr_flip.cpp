@@ -36,8 +36,7 @@ std::vector<float> hdr_flip_map(const RgbView& test, const RgbView& reference, c
     // The exposures are independent: a few workers take every workers-th one and keep their own
     // per-pixel maximum. The maximum does not depend on the order, so the result is the same
     // as one thread's. At most 4 workers: each holds about 160 bytes per pixel while it works.
-    const int workers =
-        std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, std::min(4, range.count));
+    const int workers = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, std::min(4, range.count));
     auto work = [&](int first) {
         std::vector<float> worst(reference.pixel_count(), 0.0f);
         for (int i = first; i < range.count; i += workers) {

@@ -46,8 +46,8 @@ Plane ldr_flip(const PreparedImage& test, const PreparedImage& reference) {
         const Vec3 a{test.hunt_lab[0][i], test.hunt_lab[1][i], test.hunt_lab[2][i]};
         const Vec3 b{reference.hunt_lab[0][i], reference.hunt_lab[1][i], reference.hunt_lab[2][i]};
         const double colour = colour_error(hyab(a, b));
-        const double feature = feature_error(test.features.edge[i], reference.features.edge[i],
-                                             test.features.point[i], reference.features.point[i]);
+        const double feature = feature_error(test.features.edge[i], reference.features.edge[i], test.features.point[i],
+                                             reference.features.point[i]);
         // The formula colour^(1 - feature), except that an exact colour match is no error: this
         // differs from it only where feature is exactly 1 and pow(0, 0) would give the maximum.
         out[i] = colour == 0.0 ? 0.0f : static_cast<float>(std::pow(colour, 1.0 - feature));

@@ -24,13 +24,13 @@ enum class CameraMode : uint8_t { Orbit, Fly };
 const char* camera_mode_name(CameraMode mode);
 
 struct CameraInput {
-    double dt = 0.0;                    // seconds since the last update, >= 0
-    glm::dvec2 drag{0.0};               // pixels the mouse moved with the turn button held (x right, y down)
-    glm::dvec2 pan{0.0};                // pixels the mouse moved with the pan button held (orbit only)
-    double wheel = 0.0;                 // wheel steps, positive away from the user
-    glm::dvec3 move{0.0};               // keys: x right (D - A), y up (E - Q), z forward (W - S)
-    bool fast = false;                  // Shift
-    bool slow = false;                  // Ctrl
+    double dt = 0.0;       // seconds since the last update, >= 0
+    glm::dvec2 drag{0.0};  // pixels the mouse moved with the turn button held (x right, y down)
+    glm::dvec2 pan{0.0};   // pixels the mouse moved with the pan button held (orbit only)
+    double wheel = 0.0;    // wheel steps, positive away from the user
+    glm::dvec3 move{0.0};  // keys: x right (D - A), y up (E - Q), z forward (W - S)
+    bool fast = false;     // Shift
+    bool slow = false;     // Ctrl
 };
 
 class CameraController {
@@ -52,7 +52,7 @@ public:
     double yaw_deg() const { return yaw_deg_; }      // 0 looks along -z, 90 along +x
     double pitch_deg() const { return pitch_deg_; }  // positive looks up
     double distance() const { return distance_; }
-    double speed() const { return speed_; }          // base speed, m/s
+    double speed() const { return speed_; }  // base speed, m/s
     glm::dvec3 velocity() const { return velocity_; }
 
 private:

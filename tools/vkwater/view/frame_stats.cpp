@@ -54,10 +54,10 @@ std::string FrameStats::summary(uint64_t frames) const {
     } else {
         const double med = median(counted_ms_);
         const double mean = std::accumulate(counted_ms_.begin(), counted_ms_.end(), 0.0) / counted_ms_.size();
-        std::snprintf(line, sizeof line,
-                      "frames: %llu; frame time over %zu intervals: median %.2f ms (%.2f fps), mean %.2f ms (%.2f fps)\n",
-                      static_cast<unsigned long long>(frames), counted_ms_.size(), med, 1000.0 / med, mean,
-                      1000.0 / mean);
+        std::snprintf(
+            line, sizeof line,
+            "frames: %llu; frame time over %zu intervals: median %.2f ms (%.2f fps), mean %.2f ms (%.2f fps)\n",
+            static_cast<unsigned long long>(frames), counted_ms_.size(), med, 1000.0 / med, mean, 1000.0 / mean);
         text += line;
     }
     if (timing_frames_ == 0) return text + "per-pass times: no timing frame ran\n";
@@ -73,8 +73,8 @@ std::string FrameStats::summary(uint64_t frames) const {
         }
         text += "\n";
     }
-    std::snprintf(line, sizeof line, "  %-28s %9.2f ms  (tonemap + overlay: one submission, fence-timed)\n",
-                  "present", median(present_ms_));
+    std::snprintf(line, sizeof line, "  %-28s %9.2f ms  (tonemap + overlay: one submission, fence-timed)\n", "present",
+                  median(present_ms_));
     text += line;
     std::snprintf(line, sizeof line, "  %-28s %9.2f ms  (sum of the above, each timing frame)\n", "frame",
                   median(total_ms_));

@@ -18,10 +18,10 @@ namespace vkw::window {
 struct ViewControls {
     CameraMode camera_mode = CameraMode::Orbit;
     bool paused = false;
-    double time_speed = 1.0;       // the water's seconds per second of frames
+    double time_speed = 1.0;  // the water's seconds per second of frames
     bool show_panels = true;
     // Requests, cleared by the viewer once served.
-    bool step = false;             // advance the paused clock by one frame
+    bool step = false;  // advance the paused clock by one frame
     bool screenshot = false;
     bool reload_shaders = false;
 };

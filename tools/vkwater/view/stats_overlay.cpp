@@ -51,8 +51,9 @@ void draw_stats_overlay(const OverlayInfo& info) {
     if (info.stats->has_timing()) {
         const fg::FrameReport& report = info.stats->last_report();
         ImGui::Separator();
-        ImGui::TextWrapped("pass times of frame %llu (%s):",
-                           static_cast<unsigned long long>(info.stats->last_timing_frame()), report.method_name().c_str());
+        ImGui::TextWrapped(
+            "pass times of frame %llu (%s):", static_cast<unsigned long long>(info.stats->last_timing_frame()),
+            report.method_name().c_str());
         if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_SizingFixedFit)) {
             for (const fg::PassTime& pass : report.passes) {
                 ImGui::TableNextRow();

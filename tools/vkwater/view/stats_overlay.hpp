@@ -26,7 +26,7 @@ struct OverlayInfo {
     uint64_t photons = 0;                   // 0 while the caustic photon pass is culled
     uint32_t photon_grid = 0;               // R: one photon per cell of the R x R surface grid
     size_t compile_count = 0;
-    std::string message;                    // a refused setting, shown until the next one
+    std::string message;  // a refused setting, shown until the next one
     CameraMode camera_mode = CameraMode::Orbit;
     glm::dvec3 camera_position{0.0};
     bool camera_in_water = false;

@@ -19,11 +19,16 @@ struct VerbName {
     ScriptVerb verb;
     std::string_view name;
 };
-constexpr VerbName kVerbs[] = {{ScriptVerb::Camera, "camera"},   {ScriptVerb::Move, "move"},
-                               {ScriptVerb::Resize, "resize"},   {ScriptVerb::Set, "set"},
-                               {ScriptVerb::Screenshot, "screenshot"}, {ScriptVerb::Pause, "pause"},
-                               {ScriptVerb::Resume, "resume"},   {ScriptVerb::Time, "time"},
-                               {ScriptVerb::Mode, "mode"},       {ScriptVerb::ReloadShaders, "reload-shaders"},
+constexpr VerbName kVerbs[] = {{ScriptVerb::Camera, "camera"},
+                               {ScriptVerb::Move, "move"},
+                               {ScriptVerb::Resize, "resize"},
+                               {ScriptVerb::Set, "set"},
+                               {ScriptVerb::Screenshot, "screenshot"},
+                               {ScriptVerb::Pause, "pause"},
+                               {ScriptVerb::Resume, "resume"},
+                               {ScriptVerb::Time, "time"},
+                               {ScriptVerb::Mode, "mode"},
+                               {ScriptVerb::ReloadShaders, "reload-shaders"},
                                {ScriptVerb::WaitFile, "wait-file"}};
 
 std::string_view trimmed(std::string_view text) {
@@ -50,8 +55,8 @@ class LineErrors {
 public:
     LineErrors(const std::string& file, int line) : file_(file), line_(line) {}
     [[noreturn]] void fail(const std::string& what, std::string_view accepted = kForms) const {
-        throw UserError(file_ + ": line " + std::to_string(line_) + ": " + what + " (accepted: " +
-                        std::string(accepted) + ")");
+        throw UserError(file_ + ": line " + std::to_string(line_) + ": " + what +
+                        " (accepted: " + std::string(accepted) + ")");
     }
     double number(std::string_view word, std::string_view what) const {
         double value = 0.0;
@@ -93,7 +98,8 @@ ScriptCommand parse_line(std::string_view line, const LineErrors& errors) {
     const std::string_view rest = trimmed(line.substr(colon + 1));
     const std::vector<std::string_view> all = words(rest);
     if (all.empty()) errors.fail("no command after 'FRAME:'");
-    const auto verb = std::find_if(std::begin(kVerbs), std::end(kVerbs), [&](const VerbName& v) { return v.name == all[0]; });
+    const auto verb =
+        std::find_if(std::begin(kVerbs), std::end(kVerbs), [&](const VerbName& v) { return v.name == all[0]; });
     if (verb == std::end(kVerbs)) errors.fail("unknown command '" + std::string(all[0]) + "'");
     command.verb = verb->verb;
     const std::vector<std::string_view> args(all.begin() + 1, all.end());
@@ -149,9 +155,7 @@ ScriptCommand parse_line(std::string_view line, const LineErrors& errors) {
             break;
         case ScriptVerb::Pause:
         case ScriptVerb::Resume:
-        case ScriptVerb::ReloadShaders:
-            expect_arguments(errors, args, 0, verb->name);
-            break;
+        case ScriptVerb::ReloadShaders: expect_arguments(errors, args, 0, verb->name); break;
     }
     return command;
 }
@@ -209,8 +213,8 @@ void check_script_fits(const ViewScript& script, uint32_t frames) {
             throw UserError(script.name + ": line " + std::to_string(command.line) + ": " +
                             script_verb_name(command.verb) + " at frame " + std::to_string(command.frame) +
                             (command.frames ? " (+" + std::to_string(command.frames) + " frames)" : "") +
-                            " would not run within --frames " + std::to_string(frames) +
-                            " (accepted: frames 0 to " + std::to_string(frames - 1) + ")");
+                            " would not run within --frames " + std::to_string(frames) + " (accepted: frames 0 to " +
+                            std::to_string(frames - 1) + ")");
         }
     }
 }

@@ -35,20 +35,30 @@
 namespace vkw::window {
 
 enum class ScriptVerb : uint8_t {
-    Camera, Move, Resize, Set, Screenshot, Pause, Resume, Time, Mode, ReloadShaders, WaitFile
+    Camera,
+    Move,
+    Resize,
+    Set,
+    Screenshot,
+    Pause,
+    Resume,
+    Time,
+    Mode,
+    ReloadShaders,
+    WaitFile
 };
 const char* script_verb_name(ScriptVerb verb);
 
 struct ScriptCommand {
     uint32_t frame = 0;
     ScriptVerb verb = ScriptVerb::Pause;
-    int line = 0;                      // 1-based, for messages
-    glm::dvec3 position{0.0};          // camera, move
-    glm::dvec3 target{0.0};            // camera, move
-    uint32_t frames = 0;               // move
-    uint32_t width = 0, height = 0;    // resize
-    std::string text;                  // set: "key=value"; screenshot, wait-file: the path
-    double seconds = 0.0;              // time
+    int line = 0;                    // 1-based, for messages
+    glm::dvec3 position{0.0};        // camera, move
+    glm::dvec3 target{0.0};          // camera, move
+    uint32_t frames = 0;             // move
+    uint32_t width = 0, height = 0;  // resize
+    std::string text;                // set: "key=value"; screenshot, wait-file: the path
+    double seconds = 0.0;            // time
     CameraMode mode = CameraMode::Orbit;
 };
 

@@ -2,22 +2,22 @@
 
 #include "engine/core/errors.hpp"
 #include "engine/image/file_paths.hpp"
-#include "passes/frame/renderer.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
 #include "engine/vk/shader_module.hpp"
-#include "tools/vkwater/view/camera_controller.hpp"
-#include "tools/vkwater/view/frame_stats.hpp"
 #include "engine/window/frames_in_flight.hpp"
 #include "engine/window/glfw_window.hpp"
 #include "engine/window/imgui_layer.hpp"
-#include "tools/vkwater/view/parameter_panel.hpp"
-#include "passes/present/present_graph.hpp"
 #include "engine/window/screenshot.hpp"
+#include "passes/frame/renderer.hpp"
+#include "passes/present/present_graph.hpp"
+#include "passes/present/present_handoff.hpp"
+#include "tools/vkwater/view/camera_controller.hpp"
+#include "tools/vkwater/view/frame_stats.hpp"
+#include "tools/vkwater/view/parameter_panel.hpp"
 #include "tools/vkwater/view/stats_overlay.hpp"
 #include "tools/vkwater/view/view_script.hpp"
 #include "tools/vkwater/view/window_input.hpp"
-#include "passes/present/present_handoff.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -51,8 +51,12 @@ struct PanelSnapshot {
     double fov_y_deg, exposure;
 
     explicit PanelSnapshot(const Scene& scene)
-        : sun(scene.sun), water(scene.water), medium(scene.medium), effects(scene.effects),
-          fov_y_deg(scene.camera.fov_y_deg), exposure(scene.camera.exposure) {}
+        : sun(scene.sun),
+          water(scene.water),
+          medium(scene.medium),
+          effects(scene.effects),
+          fov_y_deg(scene.camera.fov_y_deg),
+          exposure(scene.camera.exposure) {}
     void restore(Scene& scene) const {
         scene.sun = sun;
         scene.water = water;
@@ -123,11 +127,11 @@ private:
     FrameStats stats_;
     uint64_t frame_ = 0;  // frames shown so far: the number of the next one
     uint64_t timing_due_ = FrameStats::kWarmupFrames;
-    std::vector<std::string> pass_list_;  // the scene graph's living passes, last frame
+    std::vector<std::string> pass_list_;           // the scene graph's living passes, last frame
     fg::FrameExecutor* scene_executor_ = nullptr;  // valid until the next prepare or reload
     std::optional<Clock::time_point> last_frame_start_;
-    bool last_frame_waited_ = false;  // it waited on purpose: its interval is not counted
-    bool disturbed_ = false;          // this frame recreated or reloaded something
+    bool last_frame_waited_ = false;                  // it waited on purpose: its interval is not counted
+    bool disturbed_ = false;                          // this frame recreated or reloaded something
     std::vector<std::filesystem::path> screenshots_;  // requested for this frame
     uint32_t screenshot_count_ = 0;
     std::string message_;
@@ -148,8 +152,7 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options) {
         }
     }
 
-    window_ = std::make_unique<GlfwWindow>(options_.width, options_.height,
-                                           "vkwater view: " + options_.scene.string());
+    window_ = std::make_unique<GlfwWindow>(options_.width, options_.height, "vkwater view: " + options_.scene.string());
     ContextOptions context_options;
     context_options.validation = options_.validation;
     context_options.device_name = options_.device;
@@ -157,7 +160,8 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options) {
     context_options.swapchain = true;
     context_ = std::make_unique<Context>(context_options);
     std::printf("device: %s%s\n", context_->device_name().c_str(), options_.validation ? " (with validation)" : "");
-    swapchain_ = std::make_unique<Swapchain>(*context_, window_->create_surface(context_->instance()), options_.present);
+    swapchain_ =
+        std::make_unique<Swapchain>(*context_, window_->create_surface(context_->instance()), options_.present);
     frames_ = std::make_unique<FramesInFlight>(*context_);
     renderer_ = std::make_unique<Renderer>(*context_);
     imgui_ = std::make_unique<ImGuiLayer>(*context_, window_->handle(), FramesInFlight::kSlots);
@@ -196,8 +200,9 @@ std::unique_ptr<PresentGraph> Viewer::make_present_graph(uint32_t image, VkBuffe
     images.swapchain_image = swapchain_->image(image);
     images.swapchain_view = swapchain_->view(image);
     images.swapchain_format = swapchain_->format();
-    return std::make_unique<PresentGraph>(*context_, present_pipelines_, images, &tonemap_,
-                                          [this](VkCommandBuffer cmd) { imgui_->record(cmd); }, readback);
+    return std::make_unique<PresentGraph>(
+        *context_, present_pipelines_, images, &tonemap_, [this](VkCommandBuffer cmd) { imgui_->record(cmd); },
+        readback);
 }
 
 void Viewer::recreate_swapchain(VkExtent2D size) {
@@ -207,13 +212,15 @@ void Viewer::recreate_swapchain(VkExtent2D size) {
     frames_->set_image_count(swapchain_->image_count());
     const VkExtent2D extent = swapchain_->extent();
     if (window_hdr_.desc().width != extent.width || window_hdr_.desc().height != extent.height) {
-        window_hdr_ = Image(*context_,
-                            {extent.width, extent.height, VK_FORMAT_R32G32B32A32_SFLOAT,
-                             VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT},
-                            "window HDR");
+        window_hdr_ =
+            Image(*context_,
+                  {extent.width, extent.height, VK_FORMAT_R32G32B32A32_SFLOAT,
+                   VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT},
+                  "window HDR");
         ++hdr_generation_;
     }
-    for (uint32_t i = 0; i < swapchain_->image_count(); ++i) present_graphs_.push_back(make_present_graph(i, VK_NULL_HANDLE));
+    for (uint32_t i = 0; i < swapchain_->image_count(); ++i)
+        present_graphs_.push_back(make_present_graph(i, VK_NULL_HANDLE));
     tonemap_.encode_srgb = !swapchain_->encodes_srgb();
     if (imgui_->connected_format() != swapchain_->format()) {
         imgui_->connect(present_graphs_.front()->overlay_render_pass(), swapchain_->format());
@@ -244,8 +251,8 @@ void Viewer::run_command(const ScriptCommand& command) {
             move_.reset();
             break;
         case ScriptVerb::Move:
-            move_ = CameraMove{camera_.position(), camera_.target(), command.position, command.target, frame_,
-                               command.frames};
+            move_ = CameraMove{camera_.position(), camera_.target(), command.position,
+                               command.target,     frame_,           command.frames};
             break;
         case ScriptVerb::Resize:
             if (!window_->resize(command.width, command.height, kResizeTimeoutSeconds)) {
@@ -392,17 +399,17 @@ bool Viewer::render_frame() {
     }
     fg::FrameReport report;
     if (timing || screenshot) frames_->wait_all();  // these frames run alone
-    if (timing) report = executor.execute();       // each pass alone, timed (fences on CPU devices)
+    if (timing) report = executor.execute();        // each pass alone, timed (fences on CPU devices)
     frames_->begin(slot);
     if (!timing) executor.record(slot.cmd);
     Buffer readback;
     std::unique_ptr<PresentGraph> screenshot_graph;
     if (screenshot) {
         const VkExtent2D extent = swapchain_->extent();
-        readback = Buffer(*context_,
-                          {VkDeviceSize{extent.width} * extent.height * 4 * sizeof(float),
-                           VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
-                          "screenshot readback");
+        readback = Buffer(
+            *context_,
+            {VkDeviceSize{extent.width} * extent.height * 4 * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
+            "screenshot readback");
         screenshot_graph = make_present_graph(image, readback.handle());
         screenshot_graph->record(slot.cmd);
     } else {
@@ -435,7 +442,7 @@ bool Viewer::render_frame() {
             std::printf("frame %llu: wrote %s (linear HDR, %ux%u) and %s\n", static_cast<unsigned long long>(frame_),
                         exr.c_str(), extent.width, extent.height, png.c_str());
         } catch (const UserError& error) {
-            if (scripted_) throw;  // (a script's paths were checked before the window opened)
+            if (scripted_) throw;     // (a script's paths were checked before the window opened)
             message_ = error.what();  // F12 in an unwritable folder: say so, keep the session
         }
     }

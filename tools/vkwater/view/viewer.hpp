@@ -22,12 +22,12 @@ struct ViewerOptions {
     std::vector<std::string> overrides;  // --set, applied in order when loading the scene
     uint32_t width = 800, height = 600;  // the window's initial framebuffer size
     PresentMode present = PresentMode::Fifo;
-    uint32_t frames = 0;                 // stop after this many frames; 0: when the window closes
-    std::filesystem::path script;        // empty: none (view_script.hpp)
-    uint32_t timing_every = 30;          // frames between per-pass timing frames; 0: never
+    uint32_t frames = 0;                             // stop after this many frames; 0: when the window closes
+    std::filesystem::path script;                    // empty: none (view_script.hpp)
+    uint32_t timing_every = 30;                      // frames between per-pass timing frames; 0: never
     std::string screenshot_prefix = "vkwater-view";  // F12 writes <prefix>-<n>.exr and .png
-    bool paused = false;                 // start with the water's clock stopped
-    std::string device;                  // substring of the device name; empty: the best one
+    bool paused = false;                             // start with the water's clock stopped
+    std::string device;                              // substring of the device name; empty: the best one
     bool validation = false;
 };
 

@@ -4,8 +4,8 @@
 // panel, a focused text field).
 #pragma once
 
-#include "tools/vkwater/view/camera_controller.hpp"
 #include "engine/window/glfw_window.hpp"
+#include "tools/vkwater/view/camera_controller.hpp"
 #include "tools/vkwater/view/parameter_panel.hpp"
 
 namespace vkw::window {
