@@ -22,7 +22,11 @@ std::string FrameReport::method_name() const {
 
 FrameExecutor::FrameExecutor(Context& context, FrameGraph& graph, PipelineStore& pipelines,
                              const ExecutorOptions& options)
-    : context_(context), graph_(graph), pipelines_(pipelines), options_(options) {
+    : context_(context),
+      pipelines_(pipelines),
+      options_(options),
+      graph_(&graph),
+      signature_(graph.physical_signature()) {
     if (options_.timing == TimingMode::Auto) {
         options_.timing = context_.is_cpu_device() ? TimingMode::Fences : TimingMode::Timestamps;
     }
@@ -60,7 +64,7 @@ FrameExecutor::FrameExecutor(Context& context, FrameGraph& graph, PipelineStore&
     if (options_.timing == TimingMode::Timestamps) {
         VkQueryPoolCreateInfo query_info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
         query_info.queryType = VK_QUERY_TYPE_TIMESTAMP;
-        query_info.queryCount = static_cast<uint32_t>(2 * graph_.compiled().order.size() + 2);
+        query_info.queryCount = static_cast<uint32_t>(2 * graph_->compiled().order.size() + 2);
         VKW_CHECK(vkCreateQueryPool(device, &query_info, nullptr, &query_pool_), "timestamp query pool");
     }
 }
@@ -84,8 +88,8 @@ FrameExecutor::~FrameExecutor() {
 // ---------------------------------------------------------------- resources
 
 void FrameExecutor::realize_resources(bool check_finite) {
-    const CompiledGraph& compiled = graph_.compiled();
-    const auto& resources = graph_.resources();
+    const CompiledGraph& compiled = graph_->compiled();
+    const auto& resources = graph_->resources();
     images_.resize(resources.size());
     buffers_.resize(resources.size());
 
@@ -102,7 +106,7 @@ void FrameExecutor::realize_resources(bool check_finite) {
             VkImageUsageFlags usage = decl.image_usage;
             if (check_finite && format_is_float_color(decl.image.format)) usage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
             images_[r] = Image::create_unbound(
-                context_, {graph_.image_width(r), graph_.image_height(r), decl.image.format, usage}, decl.name);
+                context_, {graph_->image_width(r), graph_->image_height(r), decl.image.format, usage}, decl.name);
             needs = images_[r].memory_requirements();
         } else {
             buffers_[r] = Buffer::create_unbound(context_, {decl.buffer.size, decl.buffer_usage, false}, decl.name);
@@ -114,7 +118,9 @@ void FrameExecutor::realize_resources(bool check_finite) {
         type_bits &= needs.memoryTypeBits;
     }
     if (aliased.empty()) {
-        graph_.apply_aliasing({}, {});
+        graph_->apply_aliasing({}, {});
+        alias_plan_ = {};
+        aliased_.clear();
         return;
     }
     if (type_bits == 0) {
@@ -133,31 +139,47 @@ void FrameExecutor::realize_resources(bool check_finite) {
             buffers_[r].bind(heaps_.back().handle(), plan.offsets[i], resources[r].name);
         }
     }
-    graph_.apply_aliasing(plan, aliased);
+    graph_->apply_aliasing(plan, aliased);
+    alias_plan_ = std::move(plan);
+    aliased_ = std::move(aliased);
+}
+
+bool FrameExecutor::can_adopt(const FrameGraph& graph, const ExecutorOptions& options) const {
+    const TimingMode timing = options.timing == TimingMode::Auto
+                                  ? (context_.is_cpu_device() ? TimingMode::Fences : TimingMode::Timestamps)
+                                  : options.timing;
+    return options.check_finite == options_.check_finite && timing == options_.timing &&
+           graph.physical_signature() == signature_;
+}
+
+void FrameExecutor::adopt(FrameGraph& graph) {
+    graph_ = &graph;
+    // The same memory plan, so the new graph's aliasing barriers are the ones recorded before.
+    graph_->apply_aliasing(alias_plan_, aliased_);
 }
 
 VkImage FrameExecutor::image(uint32_t resource) const {
-    const ResourceDecl& decl = graph_.resources()[resource];
+    const ResourceDecl& decl = graph_->resources()[resource];
     return decl.imported ? decl.imported_image.image : images_[resource].handle();
 }
 
 VkImageView FrameExecutor::view(uint32_t resource) const {
-    const ResourceDecl& decl = graph_.resources()[resource];
+    const ResourceDecl& decl = graph_->resources()[resource];
     return decl.imported ? decl.imported_image.view : images_[resource].view();
 }
 
 VkBuffer FrameExecutor::buffer(uint32_t resource) const {
-    const ResourceDecl& decl = graph_.resources()[resource];
+    const ResourceDecl& decl = graph_->resources()[resource];
     return decl.imported ? decl.imported_buffer.buffer : buffers_[resource].handle();
 }
 
 VkImageLayout FrameExecutor::layout_in_pass(uint32_t pass, uint32_t resource) const {
-    const CompiledGraph& compiled = graph_.compiled();
+    const CompiledGraph& compiled = graph_->compiled();
     for (const TimelineAccess& access : compiled.timelines[resource].accesses) {
         if (compiled.order[access.position] == pass) return access.state.layout;
     }
-    throw InternalError("pass '" + graph_.passes()[pass].name + "' did not declare '" +
-                        graph_.resources()[resource].name + "'");
+    throw InternalError("pass '" + graph_->passes()[pass].name + "' did not declare '" +
+                        graph_->resources()[resource].name + "'");
 }
 
 // ---------------------------------------------------------------- render passes
@@ -190,19 +212,19 @@ std::vector<const ResourceUse*> attachments_of(const PassDecl& pass) {
 }  // namespace
 
 void FrameExecutor::create_render_passes() {
-    const CompiledGraph& compiled = graph_.compiled();
-    render_passes_.assign(graph_.passes().size(), VK_NULL_HANDLE);
-    framebuffers_.assign(graph_.passes().size(), VK_NULL_HANDLE);
+    const CompiledGraph& compiled = graph_->compiled();
+    render_passes_.assign(graph_->passes().size(), VK_NULL_HANDLE);
+    framebuffers_.assign(graph_->passes().size(), VK_NULL_HANDLE);
     for (uint32_t pass : compiled.order) {
-        const PassDecl& decl = graph_.passes()[pass];
-        if (decl.kind != PassKind::Graphics || graph_.recording_of(pass) != RecordingKind::RenderPassObject) continue;
+        const PassDecl& decl = graph_->passes()[pass];
+        if (decl.kind != PassKind::Graphics || graph_->recording_of(pass) != RecordingKind::RenderPassObject) continue;
         std::vector<VkAttachmentDescription> descriptions;
         std::vector<VkAttachmentReference> color_refs;
         VkAttachmentReference depth_ref{VK_ATTACHMENT_UNUSED, VK_IMAGE_LAYOUT_UNDEFINED};
         std::vector<VkImageView> views;
         VkExtent2D extent{};
         for (const ResourceUse* use : attachments_of(decl)) {
-            const ResourceDecl& resource = graph_.resources()[use->resource];
+            const ResourceDecl& resource = graph_->resources()[use->resource];
             // The graph's barriers put the image in its layout before the render pass
             // begins, so the render pass itself transitions nothing.
             const VkImageLayout layout = layout_in_pass(pass, use->resource);
@@ -224,7 +246,7 @@ void FrameExecutor::create_render_passes() {
             }
             descriptions.push_back(description);
             views.push_back(view(use->resource));
-            extent = {graph_.image_width(use->resource), graph_.image_height(use->resource)};
+            extent = {graph_->image_width(use->resource), graph_->image_height(use->resource)};
         }
         VkSubpassDescription subpass{};
         subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
@@ -270,7 +292,7 @@ void FrameExecutor::record_barriers(VkCommandBuffer cmd, const std::vector<Barri
             b.newLayout = barrier.dst.layout;
             b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
             b.image = image(barrier.resource);
-            b.subresourceRange = {format_aspect(graph_.resources()[barrier.resource].image.format), 0, 1, 0, 1};
+            b.subresourceRange = {format_aspect(graph_->resources()[barrier.resource].image.format), 0, 1, 0, 1};
             image_barriers.push_back(b);
         } else {
             VkBufferMemoryBarrier2 b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
@@ -293,11 +315,11 @@ void FrameExecutor::record_barriers(VkCommandBuffer cmd, const std::vector<Barri
 }
 
 void FrameExecutor::begin_rendering(VkCommandBuffer cmd, uint32_t pass) {
-    const PassDecl& decl = graph_.passes()[pass];
+    const PassDecl& decl = graph_->passes()[pass];
     const auto attachments = attachments_of(decl);
     if (attachments.empty()) throw InternalError("graphics pass '" + decl.name + "' declares no attachment");
-    const VkExtent2D extent{graph_.image_width(attachments.front()->resource),
-                            graph_.image_height(attachments.front()->resource)};
+    const VkExtent2D extent{graph_->image_width(attachments.front()->resource),
+                            graph_->image_height(attachments.front()->resource)};
     std::vector<VkClearValue> clears;
     for (const ResourceUse* use : attachments) {
         VkClearValue clear{};
@@ -333,7 +355,7 @@ void FrameExecutor::begin_rendering(VkCommandBuffer cmd, uint32_t pass) {
             } else {
                 depth = info;
                 has_depth = true;
-                has_stencil = format_has_stencil(graph_.resources()[use->resource].image.format);
+                has_stencil = format_has_stencil(graph_->resources()[use->resource].image.format);
             }
         }
         VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
@@ -366,9 +388,9 @@ void FrameExecutor::end_rendering(VkCommandBuffer cmd, uint32_t pass) const {
 }
 
 void FrameExecutor::record_pass(VkCommandBuffer cmd, uint32_t position, std::vector<FiniteCheck>& checks) {
-    const CompiledGraph& compiled = graph_.compiled();
+    const CompiledGraph& compiled = graph_->compiled();
     const uint32_t pass = compiled.order[position];
-    const PassDecl& decl = graph_.passes()[pass];
+    const PassDecl& decl = graph_->passes()[pass];
     record_barriers(cmd, compiled.barriers.before_pass[position]);
     context_.begin_label(cmd, decl.name);
     if (decl.kind == PassKind::Graphics) begin_rendering(cmd, pass);
@@ -381,9 +403,9 @@ void FrameExecutor::record_pass(VkCommandBuffer cmd, uint32_t position, std::vec
 }
 
 void FrameExecutor::drop_barrier_for_test(const std::string& pass, const std::string& resource) {
-    const CompiledGraph& compiled = graph_.compiled();
+    const CompiledGraph& compiled = graph_->compiled();
     for (size_t position = 0; position < compiled.order.size(); ++position) {
-        if (graph_.passes()[compiled.order[position]].name != pass) continue;
+        if (graph_->passes()[compiled.order[position]].name != pass) continue;
         auto& barriers = const_cast<CompiledGraph&>(compiled).barriers.before_pass[position];
         std::erase_if(barriers, [&](const Barrier& b) { return compiled.timelines[b.resource].name == resource; });
     }
@@ -423,7 +445,7 @@ double FrameExecutor::submit_and_wait(VkCommandBuffer cmd) {
 
 void FrameExecutor::record(VkCommandBuffer cmd) {
     pending_checks_.clear();
-    for (uint32_t position = 0; position < graph_.compiled().order.size(); ++position) {
+    for (uint32_t position = 0; position < graph_->compiled().order.size(); ++position) {
         record_pass(cmd, position, pending_checks_);
     }
 }
@@ -434,7 +456,7 @@ void FrameExecutor::scan_finite_checks() {
 }
 
 FrameReport FrameExecutor::execute() {
-    const CompiledGraph& compiled = graph_.compiled();
+    const CompiledGraph& compiled = graph_->compiled();
     FrameReport report;
     report.method = options_.timing;
     std::vector<FiniteCheck> checks;
@@ -443,11 +465,11 @@ FrameReport FrameExecutor::execute() {
 
     if (options_.timing == TimingMode::Fences) {
         for (uint32_t position = 0; position < count; ++position) {
-            const std::string& name = graph_.passes()[compiled.order[position]].name;
+            const std::string& name = graph_->passes()[compiled.order[position]].name;
             VkCommandBuffer cmd = begin_command_buffer(name);
             record_pass(cmd, position, checks);
             const double ms = submit_and_wait(cmd);
-            report.passes.push_back({name, ms, graph_.created_bytes(compiled.order[position])});
+            report.passes.push_back({name, ms, graph_->created_bytes(compiled.order[position])});
             report.total_ms += ms;
             scan_finite_checks(checks);  // before the next pass, so the first offender is named
             checks.clear();
@@ -479,9 +501,9 @@ FrameReport FrameExecutor::execute() {
         const double period_ns = context_.properties().limits.timestampPeriod;
         for (uint32_t position = 0; position < count; ++position) {
             report.passes.push_back(
-                {graph_.passes()[compiled.order[position]].name,
+                {graph_->passes()[compiled.order[position]].name,
                  static_cast<double>(ticks[2 * position + 1] - ticks[2 * position]) * period_ns * 1e-6,
-                 graph_.created_bytes(compiled.order[position])});
+                 graph_->created_bytes(compiled.order[position])});
         }
     }
     return report;

@@ -49,6 +49,14 @@ public:
     FrameExecutor(const FrameExecutor&) = delete;
     FrameExecutor& operator=(const FrameExecutor&) = delete;
 
+    // Whether `graph` (compiled) can run on this executor's resources: its physical signature
+    // is the one this executor was made for, under the same options.
+    bool can_adopt(const FrameGraph& graph, const ExecutorOptions& options) const;
+    // Runs `graph` from now on, on the same resources (can_adopt must hold): a frame declared
+    // anew, with new values captured by its passes, creates no Vulkan object. `graph` must
+    // outlive the executor or the next adopt.
+    void adopt(FrameGraph& graph);
+
     // Records, submits and waits. Throws InternalError naming the pass, resource and
     // texel of the first non-finite value when check_finite is on.
     FrameReport execute();
@@ -67,7 +75,7 @@ public:
 
     // For PassContext.
     Context& context() { return context_; }
-    FrameGraph& graph() { return graph_; }
+    FrameGraph& graph() { return *graph_; }
     PipelineStore& pipelines() { return pipelines_; }
     VkImage image(uint32_t resource) const;
     VkImageView view(uint32_t resource) const;
@@ -85,7 +93,7 @@ private:
         uint32_t resource;
         uint32_t width, height;
         VkFormat format;
-        Buffer readback;
+        size_t buffer;  // index into finite_buffers_
     };
     void realize_resources(bool check_finite);
     void create_render_passes();
@@ -95,16 +103,20 @@ private:
     void end_rendering(VkCommandBuffer cmd, uint32_t pass) const;
     void record_finite_checks(VkCommandBuffer cmd, uint32_t position, std::vector<FiniteCheck>& checks);
     void scan_finite_checks(const std::vector<FiniteCheck>& checks) const;
+    std::vector<Buffer> finite_buffers_;       // host-visible copies of the checked images, kept across frames
     std::vector<FiniteCheck> pending_checks_;  // recorded by record(), scanned by scan_finite_checks()
     VkCommandBuffer begin_command_buffer(const std::string& name);
     double submit_and_wait(VkCommandBuffer cmd);
 
     Context& context_;
-    FrameGraph& graph_;
     PipelineStore& pipelines_;
     ExecutorOptions options_;
-    std::vector<Image> images_;    // by resource index; empty for imported or unused resources
-    std::vector<Buffer> buffers_;  // likewise
+    FrameGraph* graph_;              // the graph it runs: the one it was made for, or one adopted since
+    std::string signature_;          // graph_->physical_signature() of the graph it was made for
+    AliasPlan alias_plan_;           // the transient heap's layout, handed to every adopted graph
+    std::vector<uint32_t> aliased_;  // the resources placed in it
+    std::vector<Image> images_;      // by resource index; empty for imported or unused resources
+    std::vector<Buffer> buffers_;    // likewise
     std::vector<DeviceMemory> heaps_;
     uint64_t heap_bytes_ = 0;
     uint64_t unaliased_bytes_ = 0;

@@ -13,10 +13,10 @@
 namespace vkw::fg {
 
 void FrameExecutor::record_finite_checks(VkCommandBuffer cmd, uint32_t position, std::vector<FiniteCheck>& checks) {
-    const CompiledGraph& compiled = graph_.compiled();
+    const CompiledGraph& compiled = graph_->compiled();
     const uint32_t pass = compiled.order[position];
-    for (const ResourceUse& use : graph_.passes()[pass].uses) {
-        const ResourceDecl& decl = graph_.resources()[use.resource];
+    for (const ResourceUse& use : graph_->passes()[pass].uses) {
+        const ResourceDecl& decl = graph_->resources()[use.resource];
         if (use.version_written == use.version_read || !decl.is_image || !format_is_float_color(decl.image.format)) {
             continue;
         }
@@ -26,9 +26,17 @@ void FrameExecutor::record_finite_checks(VkCommandBuffer cmd, uint32_t position,
         for (const TimelineAccess& access : compiled.timelines[use.resource].accesses) {
             if (access.position == position) in_pass = access.state;
         }
-        const uint32_t width = graph_.image_width(use.resource), height = graph_.image_height(use.resource);
+        const uint32_t width = graph_->image_width(use.resource), height = graph_->image_height(use.resource);
         const VkDeviceSize bytes = VkDeviceSize{width} * height * format_texel_bytes(decl.image.format);
-        Buffer readback(context_, {bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "finite check of " + decl.name);
+        // The n-th check of a frame reuses the n-th buffer: a graph with the same signature checks
+        // the same images in the same order, so frames after the first allocate nothing.
+        const size_t slot = checks.size();
+        if (slot >= finite_buffers_.size()) finite_buffers_.resize(slot + 1);
+        if (finite_buffers_[slot].size() != bytes) {
+            finite_buffers_[slot] =
+                Buffer(context_, {bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "finite check of " + decl.name);
+        }
+        const Buffer& readback = finite_buffers_[slot];
 
         const AccessState copy_state = access_state(Use::TransferSrc, PassKind::Transfer);
         const Barrier to_copy{use.resource, true, {in_pass.stages, in_pass.access, in_pass.layout}, copy_state};
@@ -55,7 +63,7 @@ void FrameExecutor::record_finite_checks(VkCommandBuffer cmd, uint32_t position,
         dependency.pBufferMemoryBarriers = &to_host;
         vkCmdPipelineBarrier2(cmd, &dependency);
 
-        checks.push_back({pass, use.resource, width, height, decl.image.format, std::move(readback)});
+        checks.push_back({pass, use.resource, width, height, decl.image.format, slot});
     }
 }
 
@@ -80,7 +88,7 @@ void FrameExecutor::scan_finite_checks(const std::vector<FiniteCheck>& checks) c
         const uint32_t channels = channels_of(check.format);
         const bool half = format_texel_bytes(check.format) / channels == 2;
         const size_t values = size_t{check.width} * check.height * channels;
-        const auto* bytes = static_cast<const unsigned char*>(check.readback.mapped());
+        const auto* bytes = static_cast<const unsigned char*>(finite_buffers_[check.buffer].mapped());
         for (size_t i = 0; i < values; ++i) {
             bool finite;
             float value;
@@ -95,9 +103,9 @@ void FrameExecutor::scan_finite_checks(const std::vector<FiniteCheck>& checks) c
             }
             if (finite) continue;
             const size_t texel = i / channels;
-            throw InternalError("finite check: pass '" + graph_.passes()[check.pass].name + "' wrote " +
+            throw InternalError("finite check: pass '" + graph_->passes()[check.pass].name + "' wrote " +
                                 (std::isnan(value) ? "NaN" : "Inf") + " into '" +
-                                graph_.resources()[check.resource].name + "' at texel (" +
+                                graph_->resources()[check.resource].name + "' at texel (" +
                                 std::to_string(texel % check.width) + ", " + std::to_string(texel / check.width) +
                                 "), channel " + std::to_string(i % channels));
         }

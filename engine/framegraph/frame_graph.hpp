@@ -219,6 +219,11 @@ public:
     bool creates(const ResourceUse& use) const;
     uint64_t created_bytes(uint32_t pass) const;
 
+    // Everything of the compiled graph that becomes a Vulkan object (transients with their
+    // lifetimes, imports, living passes and their uses): an executor realized for one graph
+    // runs any other graph with the same signature (FrameExecutor::adopt).
+    std::string physical_signature() const;
+
     // Printable forms, for `vkwater passes` and golden tests.
     std::string describe() const;
     std::string dump_barriers() const;

@@ -70,6 +70,16 @@ public:
     void begin_label(VkCommandBuffer cmd, const std::string& label) const;
     void end_label(VkCommandBuffer cmd) const;
 
+    // How many of the costly objects this device has made so far: a frame that only moves a
+    // clock or a slider must make none (the renderer's caching is tested by these counts).
+    struct CreationCounts {
+        uint64_t memory_allocations = 0;  // vkAllocateMemory
+        uint64_t pipelines = 0;           // vkCreateGraphicsPipelines + vkCreateComputePipelines
+    };
+    const CreationCounts& creation_counts() const { return creation_counts_; }
+    void count_memory_allocation() const { ++creation_counts_.memory_allocations; }
+    void count_pipeline() const { ++creation_counts_.pipelines; }
+
     // Records with `record` into a fresh primary command buffer, submits, and waits.
     void submit_and_wait(const std::function<void(VkCommandBuffer)>& record, const std::string& name);
 
@@ -95,6 +105,7 @@ private:
     PFN_vkSetDebugUtilsObjectNameEXT set_object_name_ = nullptr;
     PFN_vkCmdBeginDebugUtilsLabelEXT begin_label_ = nullptr;
     PFN_vkCmdEndDebugUtilsLabelEXT end_label_ = nullptr;
+    mutable CreationCounts creation_counts_;  // counting is not a change of the device
 };
 
 // The names of the physical devices Vulkan reports (for `--device` help and errors).

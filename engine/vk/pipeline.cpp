@@ -44,6 +44,7 @@ Pipeline::Pipeline(const Context& context, const ComputePipelineDesc& desc, cons
     info.layout = layout_;
     VKW_CHECK(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_),
               "pipeline '" + name + "'");
+    context.count_pipeline();
     context.set_name(pipeline_, VK_OBJECT_TYPE_PIPELINE, name);
 }
 
@@ -144,6 +145,7 @@ Pipeline::Pipeline(const Context& context, const GraphicsPipelineDesc& desc, con
     info.renderPass = desc.render_pass;
     VKW_CHECK(vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_),
               "pipeline '" + name + "'");
+    context.count_pipeline();
     context.set_name(pipeline_, VK_OBJECT_TYPE_PIPELINE, name);
 }
 

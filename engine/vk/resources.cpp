@@ -15,6 +15,7 @@ DeviceMemory::DeviceMemory(const Context& context, VkDeviceSize size, uint32_t t
     info.allocationSize = size;
     info.memoryTypeIndex = context.find_memory_type(type_bits, properties);
     VKW_CHECK(vkAllocateMemory(device_, &info, nullptr, &memory_), "memory of '" + name + "'");
+    context.count_memory_allocation();
     context.set_name(memory_, VK_OBJECT_TYPE_DEVICE_MEMORY, name);
     if (properties & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT) {
         VKW_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_), "mapping '" + name + "'");

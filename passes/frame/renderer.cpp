@@ -27,6 +27,7 @@
 #include "passes/water/water_volume_stencil.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <optional>
@@ -201,66 +202,23 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
     }
 }
 
-// Everything that depends on the configuration; destroyed in reverse order.
-struct Renderer::CompiledFrame {
-    std::string configuration;
-    Buffer readback;
-    Buffer caustic_readback;  // RenderOptions::caustic_layer only
-    std::unique_ptr<fg::FrameGraph> graph;
-    std::unique_ptr<fg::FrameExecutor> executor;
+// The frame's readback targets, kept while the output size and layers stay the same (the graph
+// imports them, so they outlive every graph that does).
+struct Renderer::Readback {
+    uint32_t width = 0, height = 0;
+    bool with_hdr = false;  // false for a window's frame, which ends in its own hand-off
+    bool caustic_layer = false;
+    Buffer hdr;
+    Buffer caustic;  // RenderOptions::caustic_layer only
 };
 
-// The water settings that shape the graph (its passes and their push constants); time
-// and amplitudes of a wave sum are per-frame data the passes capture at declaration,
-// so they are part of it too until those passes read them at record time.
-std::string Renderer::water_configuration(const Scene& scene) {
-    if (!scene.water) return "no water";
-    const Water& water = *scene.water;
-    std::string key = std::to_string(water.grid_resolution) + " " + std::to_string(int(water.waves.model)) + " " +
-                      std::to_string(water.time) + " " + std::to_string(water.level) + " " +
-                      std::to_string(water.half_extent) + " " + std::to_string(water.waves.components.size());
-    // The caustic passes capture the light and the medium at declaration too.
-    key += " sun " + std::to_string(scene.sun.direction.x) + "," + std::to_string(scene.sun.direction.y) + "," +
-           std::to_string(scene.sun.direction.z) + " " + std::to_string(scene.sun.irradiance.x) + "," +
-           std::to_string(scene.sun.irradiance.y) + "," + std::to_string(scene.sun.irradiance.z) + " ior " +
-           std::to_string(water.ior) + " floor " + std::to_string(scene.floor.height) + " sigma_t " +
-           std::to_string(scene.medium.sigma_t().x) + "," + std::to_string(scene.medium.sigma_t().y) + "," +
-           std::to_string(scene.medium.sigma_t().z);
-    // The photon pass captures its sampling and its splat kernel at declaration.
-    const CausticSettings& caustics = scene.effects.caustics;
-    key += " photons " + std::to_string(int(caustics.method)) + "/" + std::to_string(caustics.sub_photons) + "/" +
-           std::to_string(int(caustics.jitter)) + "/" + std::to_string(int(caustics.splat)) + "/" +
-           std::to_string(int(caustics.kernel)) + "/" + std::to_string(caustics.map_scale) + " blur " +
-           std::to_string(scene.effects.caustic_blur.radius);
-    // The water pass captures its shading model at declaration.
-    const WaterShadingSettings& shading = scene.effects.water;
-    key += " shading " + std::to_string(int(shading.fresnel)) + "/" + std::to_string(shading.fresnel_power);
-    if (shading.depth_blend) {
-        key += "/" + std::to_string(shading.depth_blend->colour.x) + "," +
-               std::to_string(shading.depth_blend->colour.y) + "," + std::to_string(shading.depth_blend->colour.z) +
-               "/" + std::to_string(shading.depth_blend->k);
-    }
-    // The water pass and the scene views capture the lookup methods at declaration.
-    for (const Effect effect : {Effect::Reflection, Effect::Refraction}) {
-        key += " " + std::to_string(int(scene.effects[effect].method)) + "/" +
-               std::to_string(scene.effects[effect].max_steps) + "/" +
-               std::to_string(scene.effects[effect].shallow_blend);
-    }
-    for (const WaveComponent& wave : water.waves.components) {
-        key += " " + std::to_string(wave.amplitude) + "," + std::to_string(wave.wavelength) + "," +
-               std::to_string(wave.direction_deg) + "," + std::to_string(wave.phase_deg) + "," +
-               std::to_string(wave.steepness) + "," + std::to_string(wave.speed);
-    }
-    return key;
-}
-
-// The sun shadow pass captures its fit (the sun and the floor square; the meshes are
-// covered by receiver_meshes) at declaration.
-std::string Renderer::sun_shadow_configuration(const Scene& scene) {
-    return "shadow " + std::to_string(scene.sun.direction.x) + "," + std::to_string(scene.sun.direction.y) + "," +
-           std::to_string(scene.sun.direction.z) + " floor " + std::to_string(scene.floor.height) + "," +
-           std::to_string(scene.floor.half_extent);
-}
+// This frame's declaration and the executor whose resources run it: the executor outlives the
+// graphs it adopts, one per frame, while their physical signature holds.
+struct Renderer::CompiledFrame {
+    std::unique_ptr<fg::FrameGraph> graph;
+    std::unique_ptr<fg::FrameExecutor> executor;
+    fg::ExecutorOptions options;
+};
 
 const passes::OceanSpectrumBuffer* Renderer::ocean_spectrum(const Scene& scene) {
     if (!scene.water || scene.water->waves.model != WaveModel::FftOcean) return nullptr;
@@ -290,6 +248,25 @@ const passes::ReceiverMeshes* Renderer::receiver_meshes(const Scene& scene) {
     return receivers_.get();
 }
 
+const Renderer::Readback& Renderer::readback_targets(const RenderOptions& options, bool window_output) {
+    // A window's frame ends in its own hand-off (FrameOutput), not in a readback: no buffers.
+    const bool hdr = !window_output;
+    const bool caustic = hdr && options.caustic_layer;
+    if (readback_ && readback_->width == options.width && readback_->height == options.height &&
+        readback_->with_hdr == hdr && readback_->caustic_layer == caustic) {
+        return *readback_;
+    }
+    frame_.reset();  // the compiled frame imported the old buffers
+    readback_ = std::make_unique<Readback>();
+    *readback_ = {options.width, options.height, hdr, caustic, {}, {}};
+    if (hdr) {
+        const BufferDesc desc{hdr_bytes(options.width, options.height), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true};
+        readback_->hdr = Buffer(context_, desc, "HDR readback");
+        if (caustic) readback_->caustic = Buffer(context_, desc, "caustic layer readback");
+    }
+    return *readback_;
+}
+
 Renderer::Renderer(Context& context) : context_(context), constants_(std::make_unique<FrameConstants>()) {}
 
 Renderer::~Renderer() = default;
@@ -301,10 +278,10 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options) 
     result.image.width = static_cast<int>(options.width);
     result.image.height = static_cast<int>(options.height);
     result.image.rgba.resize(size_t{options.width} * options.height * 4);
-    std::memcpy(result.image.rgba.data(), frame.readback.mapped(), result.image.rgba.size() * sizeof(float));
+    std::memcpy(result.image.rgba.data(), readback_->hdr.mapped(), result.image.rgba.size() * sizeof(float));
     if (options.caustic_layer) {
         // RGBA on the device, RGB in the image's layer (the alpha holds nothing).
-        const auto* rgba = static_cast<const float*>(frame.caustic_readback.mapped());
+        const auto* rgba = static_cast<const float*>(readback_->caustic.mapped());
         ExtraLayer layer{"caustic", std::vector<float>(size_t{options.width} * options.height * 3)};
         for (size_t i = 0; i < size_t{options.width} * options.height; ++i) {
             for (int c = 0; c < 3; ++c) layer.rgb[3 * i + c] = rgba[4 * i + c];
@@ -371,13 +348,6 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
         }
     }
     fg::FrameNeeds needs = decide_frame_needs(scene, double(options.width) / double(options.height));
-    // Everything the graph's shape depends on; the rest reaches it through the constants.
-    const std::string configuration =
-        water_configuration(scene) + " " + sun_shadow_configuration(scene) + " " + std::to_string(options.width) + "x" +
-        std::to_string(options.height) + " " + needs.key() + " " + std::to_string(int(options.recording)) + " " +
-        std::to_string(int(options.check_finite)) + " " + std::to_string(int(options.timing)) + " layer " +
-        std::to_string(int(options.caustic_layer)) + " " + passes::godray_configuration(scene.effects.godrays) +
-        " output " + (output ? output->key : std::string("readback"));
     *constants_ = make_frame_constants(scene, options.width, options.height);
     // Counted once (docs/model.md section 1): the godray passes, when they run, are the
     // in-scatter of sunlight, and the shading's analytic in-scatter is switched off. (An
@@ -386,31 +356,33 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
     if (godrays && godrays->needed) constants_->medium_options.x = 0.0f;
     const passes::OceanSpectrumBuffer* ocean = ocean_spectrum(scene);
     const passes::ReceiverMeshes* receivers = receiver_meshes(scene);
+    const Readback& readback = readback_targets(options, output != nullptr);
 
-    if (!frame_ || frame_->configuration != configuration) {
-        frame_.reset();  // release the old graph's resources before making new ones
-        auto frame = std::make_unique<CompiledFrame>();
-        frame->configuration = configuration;
-        if (!output) {
-            frame->readback =
-                Buffer(context_, {hdr_bytes(options.width, options.height), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
-                       "HDR readback");
-            if (options.caustic_layer) {
-                frame->caustic_readback =
-                    Buffer(context_, {hdr_bytes(options.width, options.height), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
-                           "caustic layer readback");
-            }
-        }
-        frame->graph = std::make_unique<fg::FrameGraph>(std::move(needs));
-        frame->graph->set_default_recording(options.recording);
-        build_frame_graph(*frame->graph, scene, constants_.get(), options.width, options.height,
-                          frame->readback.handle(), ocean, receivers, output, frame->caustic_readback.handle());
-        frame->graph->compile(options.width, options.height);
-        ++compile_count_;
-        frame->executor = std::make_unique<fg::FrameExecutor>(
-            context_, *frame->graph, pipelines_, fg::ExecutorOptions{options.check_finite, options.timing});
-        frame_ = std::move(frame);
+    // The graph is declared and compiled every frame (what its passes capture, the clock and
+    // every setting, is new each frame); the device objects are made only when the compiled
+    // graph's physical signature changes.
+    const auto declare_start = std::chrono::steady_clock::now();
+    auto graph = std::make_unique<fg::FrameGraph>(std::move(needs));
+    graph->set_default_recording(options.recording);
+    build_frame_graph(*graph, scene, constants_.get(), options.width, options.height, readback.hdr.handle(), ocean,
+                      receivers, output, readback.caustic.handle());
+    graph->compile(options.width, options.height);
+    const fg::ExecutorOptions executor_options{options.check_finite, options.timing};
+    const bool reuse = frame_ && frame_->executor->can_adopt(*graph, executor_options);
+    last_declare_ms_ =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - declare_start).count();
+    if (reuse) {
+        frame_->executor->adopt(*graph);
+        frame_->graph = std::move(graph);  // the previous frame's declaration goes; its objects stay
+        return *frame_;
     }
+    frame_.reset();  // release the old graph's resources before making new ones
+    auto frame = std::make_unique<CompiledFrame>();
+    frame->graph = std::move(graph);
+    frame->options = executor_options;
+    frame->executor = std::make_unique<fg::FrameExecutor>(context_, *frame->graph, pipelines_, executor_options);
+    ++realize_count_;
+    frame_ = std::move(frame);
     return *frame_;
 }
 

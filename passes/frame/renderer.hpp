@@ -1,8 +1,8 @@
-// Renders a scene offscreen: decides the frame's needs, builds and compiles the frame
-// graph, runs it on the device and reads the HDR image back. The compiled graph and
-// its resources are kept and reused while the configuration (output size, needs,
-// recording kind, check and timing modes) stays the same; only the frame constants
-// change between such frames.
+// Renders a scene offscreen: decides the frame's needs, declares and compiles the frame
+// graph, runs it on the device and reads the HDR image back. The graph is declared anew
+// every frame (a few hundred microseconds of CPU); its device objects (transient images and
+// buffers, their memory, render passes, pipelines) are kept and reused while the compiled
+// graph's physical signature stays the same, as in Filament's frame graph.
 #pragma once
 
 #include "engine/framegraph/executor.hpp"
@@ -43,10 +43,8 @@ class ReceiverMeshes;
 }  // namespace passes
 
 // The last passes of a frame in place of the readback, for a caller that keeps or shows the
-// image itself (the window hands the HDR colour on to its present graph). `key` stands for
-// what `add_passes` declares in the renderer's configuration: a different key compiles anew.
+// image itself (the window hands the HDR colour on to its present graph).
 struct FrameOutput {
-    std::string key;
     std::function<void(fg::FrameGraph& graph, fg::ImageHandle hdr)> add_passes;
 };
 
@@ -79,26 +77,31 @@ public:
 
     // Pipelines created so far; culled passes never add one.
     const fg::PipelineStore& pipelines() const { return pipelines_; }
-    // How many times a frame graph was compiled (once per configuration).
-    size_t compile_count() const { return compile_count_; }
+    // How many times the frame's device objects were made: once per physical signature of the
+    // compiled graph (output size, the passes that live, their resources), not per frame.
+    size_t realize_count() const { return realize_count_; }
+    // The CPU time of the last frame's declaration and compilation, in milliseconds.
+    double last_declare_ms() const { return last_declare_ms_; }
 
 private:
     struct CompiledFrame;
+    struct Readback;
     CompiledFrame& prepare(const Scene& scene, const RenderOptions& options, const FrameOutput* output);
-    static std::string water_configuration(const Scene& scene);
-    static std::string sun_shadow_configuration(const Scene& scene);
+    const Readback& readback_targets(const RenderOptions& options, bool window_output);
     const passes::OceanSpectrumBuffer* ocean_spectrum(const Scene& scene);
     const passes::ReceiverMeshes* receiver_meshes(const Scene& scene);
     Context& context_;
     fg::PipelineStore pipelines_;
     std::unique_ptr<FrameConstants> constants_;  // stable address, read when the frame records
+    std::unique_ptr<Readback> readback_;         // declared before frame_: destroyed after it
     std::unique_ptr<CompiledFrame> frame_;
     std::unique_ptr<passes::OceanSpectrumBuffer> ocean_;  // the FFT ocean's h0 on the device
     std::string ocean_key_;                               // the settings it was made for
     std::unique_ptr<passes::ReceiverMeshes> receivers_;   // the scene's receiver meshes on the device
     const void* receivers_source_ = nullptr;              // the scene whose receivers they are
     size_t receivers_count_ = 0;
-    size_t compile_count_ = 0;
+    size_t realize_count_ = 0;
+    double last_declare_ms_ = 0.0;
 };
 
 }  // namespace vkw

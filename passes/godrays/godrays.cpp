@@ -1,4 +1,4 @@
-// add_godray_passes, godray_configuration (godrays.hpp).
+// add_godray_passes (godrays.hpp).
 #include "passes/godrays/godrays.hpp"
 
 #include "passes/godrays/godrays_beams.hpp"
@@ -40,12 +40,6 @@ void add_godray_passes(fg::FrameGraph& graph, const GodrayInputs& inputs) {
     const fg::ImageHandle blurred_x = add_godray_blur_pass(graph, radiance, view_depth, scale, BlurAxis::X);
     add_godray_composite_pass(graph, add_godray_blur_pass(graph, blurred_x, view_depth, scale, BlurAxis::Y),
                               view_depth);
-}
-
-std::string godray_configuration(const GodraySettings& settings) {
-    return "godrays " + std::to_string(settings.grid) + " " + std::to_string(settings.resolution_scale) + " " +
-           std::to_string(int(settings.method)) + " " + std::to_string(settings.march_steps) + " " +
-           std::to_string(settings.max_depth.value_or(-1.0));
 }
 
 }  // namespace vkw::passes

@@ -32,7 +32,4 @@ struct GodrayInputs {
 // new kHdrColor.
 void add_godray_passes(fg::FrameGraph& graph, const GodrayInputs& inputs);
 
-// What of `settings` the passes capture at declaration: part of the renderer's configuration key.
-std::string godray_configuration(const GodraySettings& settings);
-
 }  // namespace vkw::passes

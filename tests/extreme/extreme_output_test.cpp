@@ -66,25 +66,25 @@ TEST_F(extreme_output, MillionCausticPeakInAHalfFloatExr) {
 constexpr int kNanX = 17, kNanY = 5;
 
 FrameOutput nan_then_readback(VkBuffer readback) {
-    return {"extreme: NaN injection", [readback](fg::FrameGraph& graph, fg::ImageHandle hdr) {
-                struct Data {
-                    fg::ImageHandle hdr;
-                };
-                const auto& data = graph.add_pass<Data>(
-                    "inject NaN", fg::PassKind::Graphics,
-                    [&](fg::PassBuilder& builder, Data& d) { d.hdr = builder.color_attachment(hdr, fg::LoadOp::Load); },
-                    [](const Data&, fg::PassContext& pass) {
-                        VkClearAttachment clear{VK_IMAGE_ASPECT_COLOR_BIT, 0, {}};
-                        clear.clearValue.color.float32[0] = 0.25f;
-                        clear.clearValue.color.float32[1] = std::numeric_limits<float>::quiet_NaN();
-                        clear.clearValue.color.float32[2] = 0.25f;
-                        clear.clearValue.color.float32[3] = 1.0f;
-                        const VkClearRect rect{{{kNanX, kNanY}, {1, 1}}, 0, 1};
-                        vkCmdClearAttachments(pass.cmd(), 1, &clear, 1, &rect);
-                    });
-                passes::add_readback_pass(graph, data.hdr, readback,
-                                          VkDeviceSize{kExtremeWidth} * kExtremeHeight * 4 * sizeof(float));
-            }};
+    return {[readback](fg::FrameGraph& graph, fg::ImageHandle hdr) {
+        struct Data {
+            fg::ImageHandle hdr;
+        };
+        const auto& data = graph.add_pass<Data>(
+            "inject NaN", fg::PassKind::Graphics,
+            [&](fg::PassBuilder& builder, Data& d) { d.hdr = builder.color_attachment(hdr, fg::LoadOp::Load); },
+            [](const Data&, fg::PassContext& pass) {
+                VkClearAttachment clear{VK_IMAGE_ASPECT_COLOR_BIT, 0, {}};
+                clear.clearValue.color.float32[0] = 0.25f;
+                clear.clearValue.color.float32[1] = std::numeric_limits<float>::quiet_NaN();
+                clear.clearValue.color.float32[2] = 0.25f;
+                clear.clearValue.color.float32[3] = 1.0f;
+                const VkClearRect rect{{{kNanX, kNanY}, {1, 1}}, 0, 1};
+                vkCmdClearAttachments(pass.cmd(), 1, &clear, 1, &rect);
+            });
+        passes::add_readback_pass(graph, data.hdr, readback,
+                                  VkDeviceSize{kExtremeWidth} * kExtremeHeight * 4 * sizeof(float));
+    }};
 }
 
 TEST_F(extreme_output, InjectedNanIsNamedByPassResourceAndTexel) {

@@ -1,6 +1,7 @@
-// The renderer compiles its frame graph once per configuration and reuses it: a new
-// camera changes the image without a recompile (the constants are read at record
-// time), a new output size recompiles, and no pipeline is ever created twice.
+// The renderer declares and compiles its frame graph every frame and keeps the device objects
+// while the compiled graph's physical signature holds: a new camera, a running water clock or a
+// moved slider (sun, wave amplitude) reach the image and make no pipeline and allocate no memory;
+// a new output size makes new objects, and no pipeline is ever created twice.
 #include "engine/scene/scene_loader.hpp"
 #include "passes/frame/renderer.hpp"
 #include "tests/support/gpu_test.hpp"
@@ -12,22 +13,60 @@ namespace {
 
 using RendererReuse = GpuTest;
 
-TEST_F(RendererReuse, CompilesOncePerConfigurationAndUpdatesConstants) {
+TEST_F(RendererReuse, KeepsItsDeviceObjectsWhileTheSignatureHolds) {
     Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
     Renderer renderer(context());
     const RenderOptions options{64, 48, true, fg::TimingMode::None};
     const RenderResult first = renderer.render(scene, options);
     const size_t pipelines_after_first = renderer.pipelines().size();
+    const Context::CreationCounts after_first = context().creation_counts();
+    EXPECT_EQ(renderer.realize_count(), 1u);
+    EXPECT_GT(after_first.pipelines, 0u);
+    EXPECT_GT(after_first.memory_allocations, 0u);
 
     scene.camera.target.y += 2.0;  // look up: more sky, less floor
     const RenderResult second = renderer.render(scene, options);
-    EXPECT_EQ(renderer.compile_count(), 1u);
-    EXPECT_EQ(renderer.pipelines().size(), pipelines_after_first);
     EXPECT_NE(first.image.rgba, second.image.rgba) << "the new camera did not reach the shaders";
 
-    renderer.render(scene, {32, 24, true, fg::TimingMode::None});
-    EXPECT_EQ(renderer.compile_count(), 2u);
+    // The water's clock runs for ten frames, the sun and a wave's amplitude move: every frame
+    // is declared anew (its passes capture the new values) and runs on the same objects.
+    std::vector<float> previous = second.image.rgba;
+    for (int frame = 0; frame < 10; ++frame) {
+        scene.water->time += 1.0 / 30.0;
+        if (frame == 4) scene.water->waves.components[0].amplitude *= 1.5;
+        if (frame == 7) scene.sun.direction = glm::normalize(scene.sun.direction + glm::dvec3(0.05, 0.0, 0.0));
+        const RenderResult moving = renderer.render(scene, options);
+        EXPECT_NE(moving.image.rgba, previous) << "frame " << frame << ": the change did not reach the image";
+        previous = moving.image.rgba;
+    }
+    EXPECT_EQ(renderer.realize_count(), 1u);
     EXPECT_EQ(renderer.pipelines().size(), pipelines_after_first);
+    EXPECT_EQ(context().creation_counts().pipelines, after_first.pipelines) << "a running frame made a pipeline";
+    EXPECT_EQ(context().creation_counts().memory_allocations, after_first.memory_allocations)
+        << "a running frame allocated memory";
+
+    renderer.render(scene, {32, 24, true, fg::TimingMode::None});
+    EXPECT_EQ(renderer.realize_count(), 2u);
+    EXPECT_EQ(renderer.pipelines().size(), pipelines_after_first);
+    EXPECT_GT(context().creation_counts().memory_allocations, after_first.memory_allocations)
+        << "a new output size needs new targets";
+}
+
+// A frame declared anew is the same frame: the image of a renderer that has run other frames
+// before equals a fresh renderer's, bit for bit.
+TEST_F(RendererReuse, AnAdoptedGraphRendersWhatAFreshOneRenders) {
+    Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
+    const RenderOptions options{64, 48, true, fg::TimingMode::None};
+    Renderer warm(context());
+    scene.water->time = 0.25;
+    warm.render(scene, options);
+    scene.water->time = 0.5;
+    const RenderResult adopted = warm.render(scene, options);
+    EXPECT_EQ(warm.realize_count(), 1u);
+
+    Renderer fresh(context());
+    const RenderResult made = fresh.render(scene, options);
+    EXPECT_EQ(adopted.image.rgba, made.image.rgba);
 }
 
 }  // namespace

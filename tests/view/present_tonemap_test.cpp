@@ -39,15 +39,13 @@ TEST_F(PresentTonemap, MatchesThePngPreviewChainWithinOneLevel) {
                              "display readback");
         Buffer hdr_bytes(context(), {VkDeviceSize{width} * height * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
                          "HDR readback");
-        const FrameOutput output{"tonemap test", [&](fg::FrameGraph& graph, fg::ImageHandle hdr) {
-                                     fg::ImportedImage target{display.handle(), display.view(), width, height, format};
-                                     fg::ImageHandle shown = graph.import_image("display", target);
-                                     shown = passes::add_present_tonemap_pass(graph, hdr, shown, &settings);
-                                     passes::add_readback_pass(graph, shown, display_bytes.handle(),
-                                                               display_bytes.size(), "display readback");
-                                     passes::add_readback_pass(graph, hdr, hdr_bytes.handle(), hdr_bytes.size(),
-                                                               "HDR readback");
-                                 }};
+        const FrameOutput output{[&](fg::FrameGraph& graph, fg::ImageHandle hdr) {
+            fg::ImportedImage target{display.handle(), display.view(), width, height, format};
+            fg::ImageHandle shown = graph.import_image("display", target);
+            shown = passes::add_present_tonemap_pass(graph, hdr, shown, &settings);
+            passes::add_readback_pass(graph, shown, display_bytes.handle(), display_bytes.size(), "display readback");
+            passes::add_readback_pass(graph, hdr, hdr_bytes.handle(), hdr_bytes.size(), "HDR readback");
+        }};
         Renderer renderer(context());
         renderer.prepare_frame(scene, {width, height, false, fg::TimingMode::None}, output).execute();
 

@@ -44,9 +44,9 @@ FrameMemory measure_frame_memory(Renderer& renderer, const Scene& scene, const R
     // The same passes as render()'s frame, ending in a readback declared with its size but no
     // buffer (never recorded: this frame is only compiled and its transients allocated), as
     // `vkwater passes` declares it.
-    const FrameOutput same_as_render{"memory measurement", [&](fg::FrameGraph& graph, fg::ImageHandle hdr) {
-                                         passes::add_readback_pass(graph, hdr, VK_NULL_HANDLE, readback_bytes(options));
-                                     }};
+    const FrameOutput same_as_render{[&](fg::FrameGraph& graph, fg::ImageHandle hdr) {
+        passes::add_readback_pass(graph, hdr, VK_NULL_HANDLE, readback_bytes(options));
+    }};
     fg::FrameExecutor& executor = renderer.prepare_frame(scene, options, same_as_render);
     return {executor.transient_heap_bytes(), imported_bytes(executor.graph())};
 }

@@ -31,8 +31,8 @@ void draw_stats_overlay(const OverlayInfo& info) {
     } else {
         ImGui::Text("frame: warming up");
     }
-    ImGui::TextWrapped("%ux%u, present %s, %s; graph compiled %zu times", info.extent.width, info.extent.height,
-                       info.present_mode.c_str(), info.device.c_str(), info.compile_count);
+    ImGui::TextWrapped("%ux%u, present %s, %s; device frames made %zu times", info.extent.width, info.extent.height,
+                       info.present_mode.c_str(), info.device.c_str(), info.realize_count);
     ImGui::TextWrapped("camera (%s) at %.2f %.2f %.2f, %s the mean water level%s", camera_mode_name(info.camera_mode),
                        info.camera_position.x, info.camera_position.y, info.camera_position.z,
                        info.camera_in_water ? "below" : "above", info.paused ? "; time paused" : "");

@@ -25,8 +25,8 @@ struct OverlayInfo {
     const fg::FrameGraph* graph = nullptr;  // the scene graph of this frame (compiled)
     uint64_t photons = 0;                   // 0 while the caustic photon pass is culled
     uint32_t photon_grid = 0;               // R: one photon per cell of the R x R surface grid
-    size_t compile_count = 0;
-    std::string message;  // a refused setting, shown until the next one
+    size_t realize_count = 0;               // Renderer::realize_count
+    std::string message;                    // a refused setting, shown until the next one
     CameraMode camera_mode = CameraMode::Orbit;
     glm::dvec3 camera_position{0.0};
     bool camera_in_water = false;

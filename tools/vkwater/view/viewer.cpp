@@ -307,7 +307,7 @@ void Viewer::update_ui_and_camera(double wall_dt) {
             info.photon_grid = scene_->water->grid_resolution;  // the renderer traces one photon per cell
             info.photons = uint64_t{info.photon_grid} * info.photon_grid;
         }
-        info.compile_count = renderer_->compile_count();
+        info.realize_count = renderer_->realize_count();
         info.message = message_;
         info.camera_mode = controls_.camera_mode;
         info.camera_position = camera_.position();
@@ -352,16 +352,15 @@ fg::FrameExecutor& Viewer::prepare_scene_frame() {
     options.width = swapchain_->extent().width;
     options.height = swapchain_->extent().height;
     // The hand-off image is imported: a new one (a new size) is a new graph.
-    const FrameOutput output{"window HDR " + std::to_string(hdr_generation_),
-                             [this](fg::FrameGraph& graph, fg::ImageHandle hdr) {
-                                 fg::ImportedImage target;
-                                 target.image = window_hdr_.handle();
-                                 target.view = window_hdr_.view();
-                                 target.width = window_hdr_.desc().width;
-                                 target.height = window_hdr_.desc().height;
-                                 target.format = window_hdr_.desc().format;
-                                 passes::add_present_handoff_pass(graph, hdr, target);
-                             }};
+    const FrameOutput output{[this](fg::FrameGraph& graph, fg::ImageHandle hdr) {
+        fg::ImportedImage target;
+        target.image = window_hdr_.handle();
+        target.view = window_hdr_.view();
+        target.width = window_hdr_.desc().width;
+        target.height = window_hdr_.desc().height;
+        target.format = window_hdr_.desc().format;
+        passes::add_present_handoff_pass(graph, hdr, target);
+    }};
     try {
         scene_executor_ = &renderer_->prepare_frame(*scene_, options, output);
     } catch (const UserError& error) {
@@ -477,7 +476,7 @@ void Viewer::run() {
     }
     frames_->wait_all();
     std::printf("%s", stats_.summary(frame_).c_str());
-    std::printf("frame graph compiled %zu times; present mode %s\n", renderer_->compile_count(),
+    std::printf("frame graph device objects made %zu times; present mode %s\n", renderer_->realize_count(),
                 present_mode_name(swapchain_->mode()));
     // The view at exit as vkwater render takes it, to render the same picture offscreen.
     const glm::dvec3 p = camera_.position(), t = camera_.target();

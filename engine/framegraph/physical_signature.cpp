@@ -1,0 +1,111 @@
+// FrameGraph::physical_signature (frame_graph.hpp): everything of a compiled graph that the
+// executor turns into Vulkan objects. Two graphs with the same signature can run on the same
+// images, buffers, memory, render passes and framebuffers: what differs between them (the
+// values their passes captured, the constants they read) reaches the device only when the
+// passes record.
+#include "engine/framegraph/frame_graph.hpp"
+
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+namespace vkw::fg {
+
+namespace {
+
+// Appends the raw bytes of plain values: the signature is compared, never shown.
+class SignatureWriter {
+public:
+    template <class T>
+    void add(const T& value) {
+        static_assert(std::is_trivially_copyable_v<T>);
+        text_.append(reinterpret_cast<const char*>(&value), sizeof value);
+    }
+    void add(const std::string& value) {
+        add(value.size());
+        text_ += value;
+    }
+    std::string take() { return std::move(text_); }
+
+private:
+    std::string text_;
+};
+
+void add_access(SignatureWriter& out, const AccessState& state) {
+    out.add(state.stages);
+    out.add(state.access);
+    out.add(state.layout);
+}
+
+}  // namespace
+
+std::string FrameGraph::physical_signature() const {
+    const CompiledGraph& graph = compiled();
+    SignatureWriter out;
+    out.add(graph.output_width);
+    out.add(graph.output_height);
+    out.add(resources_.size());
+    for (uint32_t r = 0; r < resources_.size(); ++r) {
+        const ResourceDecl& decl = resources_[r];
+        const bool live = graph.resource_live[r];
+        out.add(decl.name);
+        out.add(decl.is_image);
+        out.add(decl.imported);
+        out.add(live);
+        if (!live) continue;
+        if (decl.imported) {
+            // The same objects in the same states: the executor keeps no copy of them, but the
+            // recorded views, framebuffers and barriers name them.
+            if (decl.is_image) {
+                const ImportedImage& image = decl.imported_image;
+                out.add(image.image);
+                out.add(image.view);
+                out.add(image.width);
+                out.add(image.height);
+                out.add(image.format);
+                add_access(out, image.initial);
+                out.add(image.final_state.has_value());
+                if (image.final_state) add_access(out, *image.final_state);
+            } else {
+                const ImportedBuffer& buffer = decl.imported_buffer;
+                out.add(buffer.buffer);
+                out.add(buffer.size);
+                add_access(out, buffer.initial);
+                out.add(buffer.final_state.has_value());
+                if (buffer.final_state) add_access(out, *buffer.final_state);
+            }
+            continue;
+        }
+        // A transient: its creation info and the lifetime that places it in the shared heap.
+        if (decl.is_image) {
+            out.add(decl.image.format);
+            out.add(image_width(r));
+            out.add(image_height(r));
+            out.add(decl.image_usage);
+        } else {
+            out.add(decl.buffer.size);
+            out.add(decl.buffer_usage);
+        }
+        out.add(graph.first_use[r]);
+        out.add(graph.last_use[r]);
+    }
+    // The living passes in order, with every use: render passes, framebuffers and the query
+    // pool follow from them (and the barriers, which the executor reads from the graph anyway).
+    out.add(graph.order.size());
+    for (const uint32_t p : graph.order) {
+        const PassDecl& pass = passes_[p];
+        out.add(pass.name);
+        out.add(pass.kind);
+        out.add(recording_of(p));
+        out.add(pass.uses.size());
+        for (const ResourceUse& use : pass.uses) {
+            out.add(use.resource);
+            out.add(use.use);
+            out.add(use.shader_stages);
+            out.add(use.load);
+        }
+    }
+    return out.take();
+}
+
+}  // namespace vkw::fg
