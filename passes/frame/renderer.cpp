@@ -9,6 +9,7 @@
 #include "passes/caustics/caustics_photons.hpp"
 #include "passes/caustics/caustics_procedural.hpp"
 #include "passes/caustics/caustics_resolve.hpp"
+#include "passes/common/calibration.hpp"
 #include "passes/common/frame_constants_upload.hpp"
 #include "passes/common/frame_keys.hpp"
 #include "passes/frame/frame_needs.hpp"
@@ -366,6 +367,8 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
     graph->set_default_recording(options.recording);
     build_frame_graph(*graph, scene, constants_.get(), options.width, options.height, readback.hdr.handle(), ocean,
                       receivers, output, readback.caustic.handle());
+    // Timed frames carry the unit their times are reported in; untimed ones (tests) need none.
+    if (options.timing != fg::TimingMode::None) passes::add_calibration_pass(*graph);
     graph->compile(options.width, options.height);
     const fg::ExecutorOptions executor_options{options.check_finite, options.timing};
     const bool reuse = frame_ && frame_->executor->can_adopt(*graph, executor_options);

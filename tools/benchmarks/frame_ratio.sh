@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# frame_ratio.sh OLD_COMMIT [ROUNDS] [SCENE ...]
+#
+# The frame and every pass of the built-in scenes at 800x600, from this tree's build (build/)
+# and from OLD_COMMIT built beside it, interleaved: each round runs every scene with both builds,
+# alternating which goes first, and the table takes each figure's median over the rounds. Times
+# are printed in units of the same frame's own passes, so the 2x swings of a shared machine
+# cancel:
+#   cal   the calibration pass (a constant shader over every pixel; passes/common/calibration.hpp),
+#         recorded in every timed frame of builds that have it;
+#   sky   the sky pass (a cheap full-screen pass every build has): the unit both builds share.
+# Fence-timed on CPU devices, GPU timestamps elsewhere (vkwater render's own timing).
+#
+# OLD_BUILD=DIR uses an existing build of OLD_COMMIT instead of building one in
+# build/frame_ratio/OLD_COMMIT. Prints a Markdown table (docs/performance.md keeps one).
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+root=$(pwd)
+
+if [ $# -lt 1 ]; then
+  echo "usage: tools/benchmarks/frame_ratio.sh OLD_COMMIT [ROUNDS] [SCENE ...]" >&2
+  exit 1
+fi
+old_commit=$(git rev-parse --short "$1")
+rounds=${2:-3}
+shift $(( $# >= 2 ? 2 : 1 ))
+scenes=("$@")
+[ ${#scenes[@]} -gt 0 ] || scenes=(calm pool lake ocean underwater box)
+width=800 height=600
+
+new_vk=$root/build/tools/vkwater/vkwater
+[ -x "$new_vk" ] || { echo "frame_ratio: build this tree first (build/tools/vkwater/vkwater)" >&2; exit 1; }
+
+old_build=${OLD_BUILD:-$root/build/frame_ratio/$old_commit}
+old_vk=$old_build/tools/vkwater/vkwater
+if [ ! -x "$old_vk" ]; then
+  source_dir=$root/build/frame_ratio/$old_commit-src
+  [ -d "$source_dir" ] || git worktree add --detach "$source_dir" "$old_commit" > /dev/null
+  cmake -S "$source_dir" -B "$old_build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF > /dev/null
+  cmake --build "$old_build" --target vkwater
+fi
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# run BUILD_NAME VKWATER SCENE ROUND: one render's pass lines as "scene build round pass ms".
+run() {
+  local name=$1 vk=$2 scene=$3 round=$4
+  # Each build reads its own shaders: a build's SPIR-V is where its binary was built.
+  "$vk" render "scenes/$scene.json" --width $width --height $height --repeat 2 --out "$work/$name.exr" 2> /dev/null |
+    awk -v s="$scene" -v b="$name" -v r="$round" '
+      /^pass times/ { on = 1; next }
+      on && /^  [^ ]/ && / ms/ {
+        line = substr($0, 3); sub(/ creates .*/, "", line); sub(/ ms.*/, "", line)
+        n = split(line, f, " "); ms = f[n]; name = f[1]; for (i = 2; i < n; i++) name = name " " f[i]
+        if (name ~ /^declare/) next
+        printf "%s\t%s\t%s\t%s\t%s\n", s, b, r, name, ms
+      }
+      on && !/^  / { on = 0 }'
+}
+
+for round in $(seq 1 "$rounds"); do
+  for scene in "${scenes[@]}"; do
+    if [ $((round % 2)) -eq 1 ]; then
+      run old "$old_vk" "$scene" "$round"; run new "$new_vk" "$scene" "$round"
+    else
+      run new "$new_vk" "$scene" "$round"; run old "$old_vk" "$scene" "$round"
+    fi
+  done
+done > "$work/times.tsv"
+
+# Per round, each pass over that round's unit of the same frame; then the median over rounds.
+awk -F'\t' -v old="$old_commit" '
+  { key = $1 SUBSEP $2 SUBSEP $3; ms[key, $4] = $5; if ($4 == "calibration") cal[key] = $5; if ($4 == "sky") sky[key] = $5
+    if (!(($1, $2, $4) in seen)) { seen[$1, $2, $4] = 1; order[$1, $2, ++count[$1, $2]] = $4 }
+    rounds[$3] = 1; scenes[$1] = 1 }
+  function median(values, n,    i, j, t) {
+    for (i = 2; i <= n; i++) for (j = i; j > 1 && values[j - 1] > values[j]; j--) { t = values[j]; values[j] = values[j - 1]; values[j - 1] = t }
+    return n % 2 ? values[(n + 1) / 2] : (values[n / 2] + values[n / 2 + 1]) / 2
+  }
+  function unit_median(scene, build, pass, units,    r, n, v, key) {
+    n = 0; delete v
+    for (r in rounds) { key = scene SUBSEP build SUBSEP r
+      if (((key, pass) in ms) && (key in units) && units[key] > 0) v[++n] = ms[key, pass] / units[key] }
+    return n ? sprintf("%.1f", median(v, n)) : "-"
+  }
+  function ms_median(scene, build, pass,    r, n, v, key) {
+    n = 0; delete v
+    for (r in rounds) { key = scene SUBSEP build SUBSEP r; if ((key, pass) in ms) v[++n] = ms[key, pass] }
+    return n ? sprintf("%.1f", median(v, n)) : "-"
+  }
+  END {
+    print "| scene | pass | " old " ms | " old " sky | new ms | new sky | new cal |"
+    print "| --- | --- | --- | --- | --- | --- | --- |"
+    for (scene in scenes) {
+      delete listed
+      for (i = 1; i <= count[scene, "new"]; i++) { p = order[scene, "new", i]; listed[p] = 1
+        print "| " scene " | " p " | " ms_median(scene, "old", p) " | " unit_median(scene, "old", p, sky) " | " ms_median(scene, "new", p) " | " unit_median(scene, "new", p, sky) " | " unit_median(scene, "new", p, cal) " |" }
+      for (i = 1; i <= count[scene, "old"]; i++) { p = order[scene, "old", i]; if (p in listed) continue
+        print "| " scene " | " p " | " ms_median(scene, "old", p) " | " unit_median(scene, "old", p, sky) " | - | - | - |" }
+    }
+  }' "$work/times.tsv"
