@@ -11,9 +11,9 @@ if ! command -v "$formatter" > /dev/null; then
   exit 1
 fi
 
-# The tracked sources when this is a git checkout; every source under the tree otherwise.
+# The tracked and new (not ignored) sources when this is a git checkout; every source under the tree otherwise.
 if git rev-parse --is-inside-work-tree > /dev/null 2>&1; then
-  mapfile -t files < <(git ls-files -- '*.cpp' '*.hpp' '*.h')
+  mapfile -t files < <(git ls-files --cached --others --exclude-standard -- '*.cpp' '*.hpp' '*.h')
 else
   mapfile -t files < <(find engine passes tools tests -name '*.cpp' -o -name '*.hpp' -o -name '*.h' | sort)
 fi

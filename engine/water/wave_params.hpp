@@ -46,6 +46,8 @@ struct FftOceanSettings {
     double fetch = 100000.0;       // m (JONSWAP only)
     double amplitude_scale = 1.0;  // multiplies the spectrum's amplitude
     double choppiness = 0.0;       // horizontal displacement scale (0: heightfield)
+
+    bool operator==(const FftOceanSettings&) const = default;
 };
 
 struct WaveSettings {

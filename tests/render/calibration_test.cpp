@@ -1,7 +1,7 @@
 // The calibration pass: recorded in every timed frame and reported under its name, never culled
 // (nothing reads its target), and it changes no pixel of the image; untimed frames leave it out.
-#include "engine/scene/scene_loader.hpp"
 #include "passes/common/calibration.hpp"
+#include "engine/scene/scene_loader.hpp"
 #include "passes/frame/renderer.hpp"
 #include "tests/support/gpu_test.hpp"
 
