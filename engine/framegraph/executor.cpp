@@ -20,6 +20,11 @@ std::string FrameReport::method_name() const {
     return "whole frame, fence-timed on the CPU clock";
 }
 
+TimingMode FrameExecutor::resolved_timing(TimingMode timing) const {
+    if (timing != TimingMode::Auto) return timing;
+    return context_.is_cpu_device() ? TimingMode::Fences : TimingMode::Timestamps;
+}
+
 FrameExecutor::FrameExecutor(Context& context, FrameGraph& graph, PipelineStore& pipelines,
                              const ExecutorOptions& options)
     : context_(context),
@@ -27,9 +32,7 @@ FrameExecutor::FrameExecutor(Context& context, FrameGraph& graph, PipelineStore&
       options_(options),
       graph_(&graph),
       signature_(graph.physical_signature()) {
-    if (options_.timing == TimingMode::Auto) {
-        options_.timing = context_.is_cpu_device() ? TimingMode::Fences : TimingMode::Timestamps;
-    }
+    options_.timing = resolved_timing(options_.timing);
     // Finite checks copy each written float image right after its pass, inside the
     // same command buffer, and are scanned in pass order once the frame is done, so
     // the first offender is still named and a single-submission frame stays one
@@ -145,10 +148,7 @@ void FrameExecutor::realize_resources(bool check_finite) {
 }
 
 bool FrameExecutor::can_adopt(const FrameGraph& graph, const ExecutorOptions& options) const {
-    const TimingMode timing = options.timing == TimingMode::Auto
-                                  ? (context_.is_cpu_device() ? TimingMode::Fences : TimingMode::Timestamps)
-                                  : options.timing;
-    return options.check_finite == options_.check_finite && timing == options_.timing &&
+    return options.check_finite == options_.check_finite && resolved_timing(options.timing) == options_.timing &&
            graph.physical_signature() == signature_;
 }
 

@@ -95,7 +95,10 @@ private:
         VkFormat format;
         size_t buffer;  // index into finite_buffers_
     };
+    // Auto made concrete: fences on CPU devices (their timestamps leave out raster work), else timestamps.
+    TimingMode resolved_timing(TimingMode timing) const;
     void realize_resources(bool check_finite);
+
     void create_render_passes();
     void record_pass(VkCommandBuffer cmd, uint32_t position, std::vector<FiniteCheck>& checks);
     void record_barriers(VkCommandBuffer cmd, const std::vector<Barrier>& barriers) const;
