@@ -3,7 +3,10 @@
 #include "engine/water/fft_ocean.hpp"
 
 #include <cmath>
+#include <mutex>
 #include <numbers>
+#include <optional>
+#include <utility>
 
 #include "engine/water/counter_rng.hpp"
 #include "engine/water/ocean_spectrum.hpp"
@@ -97,6 +100,20 @@ SurfacePoint ocean_surface_point(const OceanFieldValues& f, double x0, double z0
     const glm::dvec3 dP_du(1.0 + f[kOceanDispXdX], f[kOceanSlopeX], f[kOceanDispXdZ]);
     const glm::dvec3 dP_dv(f[kOceanDispXdZ], f[kOceanSlopeZ], 1.0 + f[kOceanDispZdZ]);
     return make_surface_point(position, dP_du, dP_dv);
+}
+
+std::shared_ptr<const FftOceanSpectrum> shared_ocean_spectrum(const FftOceanSettings& ocean, uint64_t seed) {
+    FftOceanSettings shape = ocean;
+    shape.choppiness = 0.0;  // scales the displacement at evaluation, not h0
+    static std::mutex mutex;
+    static std::optional<std::pair<FftOceanSettings, uint64_t>> last_key;
+    static std::shared_ptr<const FftOceanSpectrum> last;
+    const std::lock_guard lock(mutex);
+    if (!last_key || last_key->first != shape || last_key->second != seed) {
+        last = std::make_shared<const FftOceanSpectrum>(make_ocean_spectrum(ocean, seed));
+        last_key = std::make_pair(shape, seed);
+    }
+    return last;
 }
 
 }  // namespace vkw

@@ -26,6 +26,7 @@
 #include <complex>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -54,6 +55,12 @@ struct FftOceanSpectrum {
 
 // Throws vkw::UserError (validate_ocean) for bad settings.
 FftOceanSpectrum make_ocean_spectrum(const FftOceanSettings& ocean, uint64_t seed);
+
+// make_ocean_spectrum, kept: h0 is a pure function of the settings that shape it (choppiness does
+// not) and the seed, and the costliest part of a CPU ocean. The last spectrum is returned again
+// while they stay the same, so a frame that needs the ocean several times (its bounds, the
+// device copy) builds it once, and a caller can tell a new spectrum by its pointer. Thread-safe.
+std::shared_ptr<const FftOceanSpectrum> shared_ocean_spectrum(const FftOceanSettings& ocean, uint64_t seed);
 
 // Deep-water dispersion w = sqrt(g |k|), rad/s.
 double ocean_angular_frequency(const glm::dvec2& k);

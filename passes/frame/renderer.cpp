@@ -223,16 +223,13 @@ struct Renderer::CompiledFrame {
 
 const passes::OceanSpectrumBuffer* Renderer::ocean_spectrum(const Scene& scene) {
     if (!scene.water || scene.water->waves.model != WaveModel::FftOcean) return nullptr;
-    const FftOceanSettings& o = scene.water->waves.ocean;
-    const std::string key = std::to_string(o.resolution) + " " + std::to_string(o.patch_size) + " " +
-                            std::to_string(o.wind_speed) + " " + std::to_string(o.wind_direction_deg) + " " +
-                            std::to_string(int(o.spectrum)) + " " + std::to_string(o.fetch) + " " +
-                            std::to_string(o.amplitude_scale) + " " + std::to_string(scene.water->waves.seed);
-    if (!ocean_ || key != ocean_key_) {
+    // The spectrum the CPU bounds use too: a new one (new settings or seed) is a new pointer.
+    std::shared_ptr<const FftOceanSpectrum> spectrum =
+        shared_ocean_spectrum(scene.water->waves.ocean, scene.water->waves.seed);
+    if (!ocean_ || spectrum != ocean_source_) {
         frame_.reset();  // the compiled frame imported the old buffer
-        ocean_ = std::make_unique<passes::OceanSpectrumBuffer>(
-            context_, std::make_shared<const FftOceanSpectrum>(make_ocean_spectrum(o, scene.water->waves.seed)));
-        ocean_key_ = key;
+        ocean_ = std::make_unique<passes::OceanSpectrumBuffer>(context_, spectrum);
+        ocean_source_ = std::move(spectrum);
     }
     return ocean_.get();
 }

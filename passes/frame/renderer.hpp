@@ -20,6 +20,7 @@
 namespace vkw {
 
 class Context;
+struct FftOceanSpectrum;
 
 struct RenderOptions {
     uint32_t width = 800;
@@ -95,10 +96,10 @@ private:
     std::unique_ptr<FrameConstants> constants_;  // stable address, read when the frame records
     std::unique_ptr<Readback> readback_;         // declared before frame_: destroyed after it
     std::unique_ptr<CompiledFrame> frame_;
-    std::unique_ptr<passes::OceanSpectrumBuffer> ocean_;  // the FFT ocean's h0 on the device
-    std::string ocean_key_;                               // the settings it was made for
-    std::unique_ptr<passes::ReceiverMeshes> receivers_;   // the scene's receiver meshes on the device
-    const void* receivers_source_ = nullptr;              // the scene whose receivers they are
+    std::unique_ptr<passes::OceanSpectrumBuffer> ocean_;    // the FFT ocean's h0 on the device
+    std::shared_ptr<const FftOceanSpectrum> ocean_source_;  // the CPU spectrum it was made from
+    std::unique_ptr<passes::ReceiverMeshes> receivers_;     // the scene's receiver meshes on the device
+    const void* receivers_source_ = nullptr;                // the scene whose receivers they are
     size_t receivers_count_ = 0;
     size_t realize_count_ = 0;
     double last_declare_ms_ = 0.0;
