@@ -2,6 +2,7 @@
 // the sky's radiance and the bottom of the water.
 #include "engine/scene/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -9,6 +10,10 @@
 #include "engine/scene/angles.hpp"
 
 namespace vkw {
+
+uint32_t Water::drawn_mesh_resolution() const {
+    return mesh_resolution.value_or(std::min(kDefaultWaterMeshResolution, grid_resolution));
+}
 
 glm::dvec3 direction_toward_sun(double elevation_deg, double azimuth_deg) {
     double sin_el = 0.0, cos_el = 0.0, sin_az = 0.0, cos_az = 0.0;

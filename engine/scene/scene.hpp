@@ -64,6 +64,8 @@ struct FloorPlane {
     double half_extent = 10.0;         // metres, > 0
 };
 
+inline constexpr uint32_t kDefaultWaterMeshResolution = 256;
+
 // The water body: a surface around y = level over the square |x|, |z| <= half_extent, and the
 // water volume below it down to level - depth (or to the floor when depth is not given).
 struct Water {
@@ -73,6 +75,12 @@ struct Water {
     // Surface grid cells per side, in [2, 4096]. The device's own limits (buffer sizes,
     // dispatch counts) are checked by the renderer, not here.
     uint32_t grid_resolution = 256;
+    // Cells per side of the mesh the water is drawn with, in [2, 4096]: each pixel then finds
+    // the exact surface from the mesh's point (docs/water_surface.md), so
+    // the mesh need not be as fine as the photon grid. nullopt: the smaller of
+    // kDefaultWaterMeshResolution and grid_resolution.
+    std::optional<uint32_t> mesh_resolution;
+    uint32_t drawn_mesh_resolution() const;
     double time = 0.0;            // seconds at which the waves are evaluated
     std::optional<double> depth;  // metres below level, > 0; nullopt: down to the floor
     WaveSettings waves;           // the file's water.seed is waves.seed

@@ -14,6 +14,9 @@ Water read_water(FieldReader& fields) {
     // Only the schema's range here: what the device can hold is checked by the renderer.
     water.grid_resolution = static_cast<uint32_t>(
         fields.integer("grid_resolution", Range::closed(2.0, 4096.0, "cells per side"), defaults.grid_resolution));
+    if (const auto mesh = fields.optional_integer("mesh_resolution", Range::closed(2.0, 4096.0, "cells per side"))) {
+        water.mesh_resolution = static_cast<uint32_t>(*mesh);
+    }
     water.time = fields.number("time", Range::any("s"), defaults.time);
     water.depth = fields.optional_number("depth", Range::above(0.0, "m"));
     const auto seed =

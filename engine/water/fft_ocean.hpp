@@ -51,6 +51,9 @@ struct FftOceanSpectrum {
     std::size_t opposite(std::size_t index) const;         // the index of -k
     // 2 sum |h0|: bounds |h| at every time and place (each h~ is bounded by |h0(k)| + |h0(-k)|).
     double amplitude_bound() const;
+    // 2 sum |h0| |k|^2: bounds every second derivative of h, and of the displacements over the
+    // choppiness, at every time and place (1/m).
+    double curvature_bound() const;
 };
 
 // Throws vkw::UserError (validate_ocean) for bad settings.

@@ -123,12 +123,14 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
         graph.blackboard().put(keys::kSunShadow, *sun_shadow);
     }
     // The surface grid comes first: the stencil split, which the floor reads, draws it.
-    std::optional<fg::BufferHandle> surface;
+    std::optional<passes::WaterSurfaceBuffers> water_buffers;
+    std::optional<fg::BufferHandle> surface;  // the grid
     if (scene.water && graph.needs().needs(Effect::Water)) {
         const Water& water = *scene.water;
         passes::WaterSurfaceInputs inputs{water.level, water.half_extent, water.grid_resolution,
                                           water.time,  water.waves,       ocean};
-        surface = passes::add_water_surface_pass(graph, inputs);
+        water_buffers = passes::add_water_surface_passes(graph, inputs, water.drawn_mesh_resolution());
+        surface = water_buffers->grid;
         // Without it (culled: no ray can start in the water) the shading falls back to the
         // per-frame camera medium of the frame constants.
         if (graph.needs().needs(Effect::UnderwaterView)) {
@@ -181,8 +183,7 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
     passes::add_floor_pass(graph, caustic_layer);
     if (receivers && !receivers->empty()) passes::add_receivers_pass(graph, *receivers);
     if (surface) {
-        passes::add_water_shading_pass(graph, *surface, scene.water->grid_resolution,
-                                       scene_lookups(graph, scene, receivers, caustic_layer),
+        passes::add_water_shading_pass(graph, *water_buffers, scene_lookups(graph, scene, receivers, caustic_layer),
                                        passes::water_surface_shading(scene.effects.water));
     }
     // Godrays only with a decision, as the frame constants' analytic in-scatter switch has it.

@@ -6,25 +6,11 @@
 #include "passes/common/frame_keys.hpp"
 #include "passes/receivers/lighting_inputs.hpp"
 #include "passes/scene_views/scene_view.hpp"
+#include "passes/water/water_surface_draw.hpp"
 
 namespace vkw::passes {
 
 namespace {
-// Mirrors the push constants of water_surface.vert/.frag.
-struct WaterPush {
-    uint32_t resolution;
-    uint32_t reflection_method, refraction_method;  // SCENE_LOOKUP_*: 0 off, 1 projective, 2 screen-space
-    uint32_t reflection_steps, refraction_steps;
-    float scene_size;
-    float shallow_blend;
-    uint32_t fresnel;  // 0 exact, 1 Schlick, 2 Optical Phenomena c. 2008's power term
-    float fresnel_power;
-    uint32_t depth_blend;  // 1: Optical Phenomena c. 2008's depth colour
-    float blend_k;
-    float pad;  // water_colour is a vec4 at offset 48
-    float water_colour[4];
-};
-static_assert(sizeof(WaterPush) == 64);
 
 uint32_t lookup_code(const std::optional<fg::ImageHandle>& view, SceneLookup method) {
     if (!view) return 0;
@@ -44,10 +30,10 @@ WaterSurfaceShading water_surface_shading(const WaterShadingSettings& settings) 
     return shading;
 }
 
-void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uint32_t grid_resolution,
-                            const WaterSceneLookups& lookups, const WaterSurfaceShading& shading) {
+void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& surface, const WaterSceneLookups& lookups,
+                            const WaterSurfaceShading& shading) {
     struct Data {
-        fg::BufferHandle surface;
+        WaterSurfaceReads surface;
         fg::ImageHandle hdr, depth;
         LightingInputs lighting;
         // Bound at 8 and 9; a missing one is stood in for by the other (its lookup is off).
@@ -59,12 +45,12 @@ void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uin
         "water", fg::PassKind::Graphics,
         [&](fg::PassBuilder& builder, Data& d) {
             builder.serves(Effect::Water);
-            d.surface = builder.read_storage(surface, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT);
+            d.surface.declare(builder, surface);
+            constexpr VkPipelineStageFlags2 fragment = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
             d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
             d.depth = builder.depth_stencil_attachment(graph.blackboard().get(keys::kSceneDepth), fg::LoadOp::Load);
             d.layer.load(builder, graph.blackboard());
             d.lighting.declare(builder, graph.blackboard());
-            constexpr VkPipelineStageFlags2 fragment = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
             if (lookups.reflection_view) d.reflection_view = builder.sample(*lookups.reflection_view, fragment);
             if (lookups.refraction_view) d.refraction_view = builder.sample(*lookups.refraction_view, fragment);
             if (d.layer.image && d.refraction_view && graph.blackboard().has(keys::kRefractionViewCaustic)) {
@@ -72,14 +58,15 @@ void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uin
                     builder.sample(graph.blackboard().get(keys::kRefractionViewCaustic), fragment);
             }
         },
-        [grid_resolution, lookups, shading](const Data& d, fg::PassContext& context) {
+        [base = water_surface_push(surface, shading.refine_steps), lookups, shading](const Data& d,
+                                                                                     fg::PassContext& context) {
             const bool views = d.reflection_view || d.refraction_view;
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "water/water_surface.vert";
             desc.fragment_shader =
                 d.lighting.shader("water/water_surface.frag") + (views ? "_views" : "") + d.layer.variant();
             const bool layer_of_views = views && d.layer.image;
-            desc.layout.bindings = {{2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT}};
+            d.surface.add_layout(desc.layout.bindings);
             if (views) {
                 desc.layout.bindings.push_back(
                     {8, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
@@ -90,12 +77,13 @@ void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uin
                 desc.layout.bindings.push_back(
                     {10, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
             }
-            desc.layout.push_constant_bytes = sizeof(WaterPush);
+            desc.layout.push_constant_bytes = sizeof(WaterSurfacePush);
             d.lighting.add_layout(desc.layout.bindings);
             desc.depth_test = true;
             desc.depth_write = true;
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
-            std::vector<fg::DescriptorBinding> bindings{context.storage_buffer(2, d.surface)};
+            std::vector<fg::DescriptorBinding> bindings;
+            d.surface.add_bindings(context, bindings);
             d.lighting.add_bindings(context, bindings);
             if (views) {
                 const fg::ImageHandle either = d.reflection_view ? *d.reflection_view : *d.refraction_view;
@@ -109,21 +97,22 @@ void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uin
                 bindings.push_back(context.sampled(10, d.refraction_view_caustic.value_or(either)));
             }
             context.bind(pipeline, bindings);
-            const WaterPush push{grid_resolution,
-                                 lookup_code(d.reflection_view, lookups.reflection_method),
-                                 lookup_code(d.refraction_view, lookups.refraction_method),
-                                 static_cast<uint32_t>(lookups.reflection_steps),
-                                 static_cast<uint32_t>(lookups.refraction_steps),
-                                 lookups.scene_size,
-                                 lookups.shallow_blend,
-                                 static_cast<uint32_t>(shading.fresnel),
-                                 shading.fresnel_power,
-                                 shading.depth_blend ? 1u : 0u,
-                                 shading.blend_k,
-                                 0.0f,
-                                 {shading.water_colour.r, shading.water_colour.g, shading.water_colour.b, 0.0f}};
+            WaterSurfacePush push = base;
+            push.reflection_method = lookup_code(d.reflection_view, lookups.reflection_method);
+            push.refraction_method = lookup_code(d.refraction_view, lookups.refraction_method);
+            push.reflection_steps = static_cast<uint32_t>(lookups.reflection_steps);
+            push.refraction_steps = static_cast<uint32_t>(lookups.refraction_steps);
+            push.scene_size = lookups.scene_size;
+            push.shallow_blend = lookups.shallow_blend;
+            push.fresnel = static_cast<uint32_t>(shading.fresnel);
+            push.fresnel_power = shading.fresnel_power;
+            push.depth_blend = shading.depth_blend ? 1u : 0u;
+            push.blend_k = shading.blend_k;
+            push.water_colour[0] = shading.water_colour.r;
+            push.water_colour[1] = shading.water_colour.g;
+            push.water_colour[2] = shading.water_colour.b;
             context.push_constants(pipeline, push);
-            vkCmdDraw(context.cmd(), 6 * grid_resolution * grid_resolution, 1, 0, 0);
+            d.surface.draw(context);
         });
     graph.blackboard().put(keys::kHdrColor, data.hdr);
     graph.blackboard().put(keys::kSceneDepth, data.depth);

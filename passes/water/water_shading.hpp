@@ -2,13 +2,15 @@
 // exact Fresnel, the sky in reflection, the floor through refraction (both exact: the sky
 // by direction, the floor as a plane), the medium along every path, from above and from
 // below; with scene views (passes/scene_views/scene_view.hpp), reflected and refracted rays also meet
-// the receiver meshes. Reads the surface grid of passes/water/water_surface.hpp and, when the
-// stencil split published it before, keys::kCameraMedium (per-pixel camera medium); serves
-// Effect::Water.
+// the receiver meshes. Draws the mesh of passes/water/water_surface.hpp and recovers the exact
+// surface per pixel from the wave table or the ocean's fields (water/surface_refinement.glsl);
+// reads, when the stencil split published it before, keys::kCameraMedium (per-pixel camera
+// medium); serves Effect::Water.
 #pragma once
 
 #include "engine/framegraph/frame_graph.hpp"
 #include "engine/scene/scene.hpp"
+#include "passes/water/water_surface.hpp"
 
 #include <optional>
 
@@ -30,10 +32,12 @@ struct WaterSurfaceShading {
     bool depth_blend = false;
     glm::vec3 water_colour{0.0f, 0.2f, 0.1f};
     float blend_k = 0.5f;
+    // Newton steps per pixel from the mesh to the exact surface; 0 shades the mesh as drawn.
+    uint32_t refine_steps = 4;
 };
 WaterSurfaceShading water_surface_shading(const WaterShadingSettings& settings);
 
-void add_water_shading_pass(fg::FrameGraph& graph, fg::BufferHandle surface, uint32_t grid_resolution,
+void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& surface,
                             const WaterSceneLookups& lookups = {}, const WaterSurfaceShading& shading = {});
 
 }  // namespace vkw::passes

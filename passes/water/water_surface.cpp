@@ -49,21 +49,29 @@ VkDeviceSize water_surface_bytes(uint32_t grid_resolution) {
     return row * row * kWaterVertexBytes;
 }
 
-fg::BufferHandle add_water_surface_pass(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs) {
+WaterSurfaceBuffers add_water_surface_passes(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs,
+                                             uint32_t mesh_resolution) {
     check_grid(inputs);
+    WaterSurfaceInputs mesh = inputs;
+    mesh.grid_resolution = mesh_resolution;
+    check_grid(mesh);
     validate_waves(inputs.waves);
     switch (inputs.waves.model) {
-        case WaveModel::Flat: return add_wave_sum_passes(graph, inputs, {});
+        case WaveModel::Flat: return add_wave_sum_passes(graph, inputs, {}, mesh_resolution);
         case WaveModel::Sum:
             if (inputs.waves.components.size() > kMaxGpuWaves) {
                 throw UserError("water.waves.components has " + std::to_string(inputs.waves.components.size()) +
                                 " waves: accepted 0 to " + std::to_string(kMaxGpuWaves) +
                                 " (each vertex of the GPU surface sums them all)");
             }
-            return add_wave_sum_passes(graph, inputs, inputs.waves.components);
-        case WaveModel::FftOcean: check_ocean(inputs); return add_ocean_passes(graph, inputs);
+            return add_wave_sum_passes(graph, inputs, inputs.waves.components, mesh_resolution);
+        case WaveModel::FftOcean: check_ocean(inputs); return add_ocean_passes(graph, inputs, mesh_resolution);
     }
     throw InternalError("add_water_surface_pass: unknown wave model");
+}
+
+fg::BufferHandle add_water_surface_pass(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs) {
+    return add_water_surface_passes(graph, inputs, inputs.grid_resolution).grid;
 }
 
 }  // namespace vkw::passes

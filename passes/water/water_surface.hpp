@@ -24,6 +24,7 @@
 #include "engine/water/wave_params.hpp"
 
 #include <cstdint>
+#include <optional>
 
 namespace vkw::passes {
 
@@ -43,6 +44,36 @@ struct WaterSurfaceInputs {
     // CPU FftOceanSpectrum). Owned by the caller, alive until the frame has executed.
     const OceanSpectrumBuffer* ocean = nullptr;
 };
+
+// The scene's wave model as the water's per-pixel refinement evaluates it
+// (shaders/water/surface_refinement.glsl): the sum's wave table or the ocean's fields.
+struct WaterSurfaceModel {
+    bool ocean = false;
+    uint32_t wave_count = 0;       // the sum's waves in the table
+    uint32_t ocean_n = 0;          // the ocean's nodes per side
+    float nodes_per_metre = 0.0f;  // n / patch_size
+    float level = 0.0f, half_extent = 0.0f;
+    float mesh_sag = 0.0f;  // m: a bound on the drawn mesh's distance from the surface
+};
+
+// What the surface's passes leave for their readers.
+struct WaterSurfaceBuffers {
+    fg::BufferHandle grid;  // the (R + 1)^2 vertices: the photons, the godrays and the stencil split
+    // The (M + 1)^2 vertices of the mesh the water is drawn with (M = mesh_resolution); the grid
+    // itself when M = R.
+    fg::BufferHandle mesh;
+    uint32_t mesh_resolution = 0;
+    // The sum's wave table (a uniform buffer of kMaxGpuWaves waves), for the ocean an empty one:
+    // the refinement's shader declares both models' bindings.
+    fg::BufferHandle waves;
+    std::optional<fg::BufferHandle> ocean_fields;  // the FFT's fields (water_surface_ocean.hpp)
+    WaterSurfaceModel model;
+};
+
+// Adds the passes: the grid at R = inputs.grid_resolution, and the drawn mesh at
+// `mesh_resolution` cells per side (1..16384) from the same waves or fields.
+WaterSurfaceBuffers add_water_surface_passes(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs,
+                                             uint32_t mesh_resolution);
 
 // Adds the passes and returns the vertex buffer (written by a compute pass; declare the
 // reader's use, e.g. read_storage with the vertex stage, on the returned handle).

@@ -102,4 +102,31 @@ fg::BufferHandle add_water_grid_pass(fg::FrameGraph& graph, const WaterGridKerne
     return data.vertices;
 }
 
+// How far a mesh cell's flat triangles may lie from the surface they interpolate: h^2 / 8 times
+// the bound on |d^2 P / du^2| (per unit of parameter squared), h the cell's diagonal, for the
+// mesh of `mesh_resolution` cells over [-E, E]^2.
+inline float water_mesh_sag(double half_extent, uint32_t mesh_resolution, double second_derivative_bound) {
+    const double cell = 2.0 * half_extent / mesh_resolution;
+    return static_cast<float>(2.0 * cell * cell / 8.0 * second_derivative_bound);
+}
+
+// The grid kernel's pass at R = push.grid.resolution into out.grid and, where mesh_resolution
+// differs, its pass `mesh_pass` at that resolution from the same input into out.mesh (else
+// out.mesh is the grid).
+template <class Push>
+void add_water_grid_and_mesh_passes(fg::FrameGraph& graph, const WaterGridKernel& kernel, const char* mesh_pass,
+                                    fg::BufferHandle input, Push push, uint32_t mesh_resolution,
+                                    WaterSurfaceBuffers& out) {
+    out.grid = add_water_grid_pass(graph, kernel, input, push);
+    out.mesh = out.grid;
+    out.mesh_resolution = mesh_resolution;
+    out.model.level = push.grid.level;
+    out.model.half_extent = push.grid.half_extent;
+    if (mesh_resolution == push.grid.resolution) return;
+    WaterGridKernel mesh_kernel = kernel;
+    mesh_kernel.pass = mesh_pass;
+    push.grid.resolution = mesh_resolution;
+    out.mesh = add_water_grid_pass(graph, mesh_kernel, input, push);
+}
+
 }  // namespace vkw::passes

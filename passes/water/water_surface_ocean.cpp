@@ -5,6 +5,7 @@
 #include "passes/water/water_surface_fft.hpp"
 #include "passes/water/water_surface_grid.hpp"
 #include "passes/water/water_surface_spectrum.hpp"
+#include "passes/water/water_surface_sum.hpp"
 
 #include <numbers>
 
@@ -67,14 +68,25 @@ fg::BufferHandle add_spectra_pass(fg::FrameGraph& graph, const WaterSurfaceInput
 
 }  // namespace
 
-fg::BufferHandle add_ocean_passes(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs) {
+WaterSurfaceBuffers add_ocean_passes(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs,
+                                     uint32_t mesh_resolution) {
     const FftOceanSpectrum& spectrum = inputs.ocean->spectrum();
     const fg::BufferHandle spectra = add_spectra_pass(graph, inputs);
-    const fg::BufferHandle fields = add_inverse_fft_passes(graph, spectra, spectrum.n, kOceanGridCount);
+    WaterSurfaceBuffers out;
+    out.ocean_fields = add_inverse_fft_passes(graph, spectra, spectrum.n, kOceanGridCount);
+    // The refinement's shader declares the sum's table too: an empty one stands in.
+    out.waves = add_wave_table_pass(graph, {}, inputs.time);
     const GridPush push{water_grid_push(inputs), spectrum.n, static_cast<float>(spectrum.n / spectrum.patch_size)};
-    return add_water_grid_pass(
+    add_water_grid_and_mesh_passes(
         graph, {"water surface (ocean grid)", "water/ocean_grid.comp", "ocean grid", VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-        fields, push);
+        "water mesh (ocean grid)", *out.ocean_fields, push, mesh_resolution, out);
+    out.model.ocean = true;
+    out.model.ocean_n = push.n;
+    out.model.nodes_per_metre = push.nodes_per_metre;
+    // As the sum's (water_surface_sum.cpp), with the spectrum's bound on the second derivatives.
+    out.model.mesh_sag = water_mesh_sag(inputs.half_extent, mesh_resolution,
+                                        (1.0 + inputs.waves.ocean.choppiness) * inputs.ocean->curvature_bound());
+    return out;
 }
 
 }  // namespace vkw::passes

@@ -13,7 +13,7 @@ namespace vkw::passes {
 // (zw), plane p carrying field 2p in its real and 2p + 1 in its imaginary part.
 inline constexpr uint32_t kOceanGridCount = 2;
 
-// inputs.ocean must match inputs.waves.ocean (add_water_surface_pass checks).
-fg::BufferHandle add_ocean_passes(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs);
+// inputs.ocean must match inputs.waves.ocean (add_water_surface_passes checks).
+WaterSurfaceBuffers add_ocean_passes(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs, uint32_t mesh_resolution);
 
 }  // namespace vkw::passes

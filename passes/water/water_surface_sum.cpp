@@ -47,13 +47,11 @@ GpuWave gpu_wave(const WaveComponent& c, double time) {
 
 }  // namespace
 
-fg::BufferHandle add_wave_sum_passes(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs,
-                                     const std::vector<WaveComponent>& waves) {
+fg::BufferHandle add_wave_table_pass(fg::FrameGraph& graph, const std::vector<WaveComponent>& waves, double time) {
     // The kernel's uniform block declares all kMaxGpuWaves entries, so the buffer holds them
     // all (2 KiB); wave_count says how many are used.
     std::vector<GpuWave> table(kMaxGpuWaves, GpuWave{});
-    for (size_t i = 0; i < waves.size(); ++i) table[i] = gpu_wave(waves[i], inputs.time);
-
+    for (size_t i = 0; i < waves.size(); ++i) table[i] = gpu_wave(waves[i], time);
     struct UploadData {
         fg::BufferHandle waves;
     };
@@ -66,11 +64,26 @@ fg::BufferHandle add_wave_sum_passes(fg::FrameGraph& graph, const WaterSurfaceIn
         [table](const UploadData& d, fg::PassContext& context) {
             vkCmdUpdateBuffer(context.cmd(), context.buffer(d.waves), 0, table.size() * sizeof(GpuWave), table.data());
         });
+    return upload.waves;
+}
 
+WaterSurfaceBuffers add_wave_sum_passes(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs,
+                                        const std::vector<WaveComponent>& waves, uint32_t mesh_resolution) {
+    WaterSurfaceBuffers out;
+    out.waves = add_wave_table_pass(graph, waves, inputs.time);
     const SumPush push{water_grid_push(inputs), static_cast<uint32_t>(waves.size())};
-    return add_water_grid_pass(
+    add_water_grid_and_mesh_passes(
         graph, {"water surface (wave sum)", "water/wave_sum.comp", "wave sum", VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
-        upload.waves, push);
+        "water mesh (wave sum)", out.waves, push, mesh_resolution, out);
+    out.model.wave_count = push.wave_count;
+    // sum (A k + s) k bounds |d^2 P / du^2| of the waves.
+    double curvature = 0.0;
+    for (const WaveComponent& w : waves) {
+        const double k = 2.0 * std::numbers::pi / w.wavelength;
+        curvature += (w.amplitude * k + w.steepness) * k;
+    }
+    out.model.mesh_sag = water_mesh_sag(inputs.half_extent, mesh_resolution, curvature);
+    return out;
 }
 
 }  // namespace vkw::passes

@@ -10,8 +10,12 @@
 
 namespace vkw::passes {
 
-// `waves`: at most kMaxGpuWaves, already validated (add_water_surface_pass checks both).
-fg::BufferHandle add_wave_sum_passes(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs,
-                                     const std::vector<WaveComponent>& waves);
+// Uploads the wave table of `waves` at `time` (kMaxGpuWaves entries, the unused ones zero) and
+// returns it: the grid kernel's input and, for the per-pixel refinement, a uniform buffer.
+fg::BufferHandle add_wave_table_pass(fg::FrameGraph& graph, const std::vector<WaveComponent>& waves, double time);
+
+// `waves`: at most kMaxGpuWaves, already validated (add_water_surface_passes checks both).
+WaterSurfaceBuffers add_wave_sum_passes(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs,
+                                        const std::vector<WaveComponent>& waves, uint32_t mesh_resolution);
 
 }  // namespace vkw::passes

@@ -16,6 +16,7 @@
 #include "common/medium.glsl"
 #include "common/sky.glsl"
 #include "water/camera_medium.glsl"
+#include "water/surface_refinement.glsl"
 #include "water/underwater_light.glsl"
 
 #ifdef VKWATER_SCENE_VIEWS
@@ -23,18 +24,6 @@
 #endif
 
 layout(set = 0, binding = 1, std430) readonly buffer Optics { SceneOptics optics; };
-layout(push_constant) uniform Params {
-    uint resolution;                      // the vertex shader's
-    uint reflection_method, refraction_method;  // SCENE_LOOKUP_*
-    uint reflection_steps, refraction_steps;
-    float scene_size;                     // m: how far a screen-space march looks when no floor bounds it
-    float shallow_blend;                  // m: see below; 0 off
-    uint fresnel_model;                   // SURFACE_FRESNEL_* (effects.water.fresnel)
-    float fresnel_power;                  // q of Optical Phenomena c. 2008's power term
-    uint depth_blend;                     // 1: Optical Phenomena c. 2008's depth colour along refracted rays
-    float blend_k;                        // its k, 1/m
-    vec4 water_colour;                    // rgb: its C_w (radiance)
-} params;
 
 const uint SURFACE_FRESNEL_EXACT = 0u;
 const uint SURFACE_FRESNEL_SCHLICK = 1u;
@@ -87,6 +76,7 @@ bool object_along(bool reflected, vec3 p, vec3 d, float limit, float weight, out
 
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
+layout(location = 2) in vec2 in_parameter;
 layout(location = 0) out vec4 out_radiance;
 #ifdef VKWATER_CAUSTIC_LAYER
 layout(location = 1) out vec4 out_caustic;
@@ -126,9 +116,11 @@ vec3 radiance_in_water(vec3 p, vec3 d, bool reflected, float weight, out float l
 }
 
 void main() {
-    vec3 p = in_position;
-    vec3 normal = normalize(in_normal);  // toward the air
     vec3 eye = frame.camera_position.xyz;
+    // The exact surface where the view ray crosses it; the mesh's point and normal where
+    // Newton's method does not converge (water/surface_refinement.glsl).
+    vec3 p, normal;  // normal: toward the air
+    water_surface_of_pixel(eye, in_position, in_normal, in_parameter, p, normal);
     vec3 v = normalize(p - eye);
     float n = frame.water.y;
 

@@ -90,7 +90,7 @@ const std::vector<BadScene> kBadScenes = {
     {"water_ior_nan_string.json", {"water.ior: string \"NaN\" is not a finite number (accepted: 1 <= value <= 2)"}},
     {"water_unknown_field_typo.json",
      {"water.iro: unknown field (did you mean 'ior'?)",
-      "(accepted: level, ior, half_extent, grid_resolution, time, depth, seed, waves)"}},
+      "(accepted: level, ior, half_extent, grid_resolution, mesh_resolution, time, depth, seed, waves)"}},
     {"water_wrong_type.json", {"water: expected an object, got boolean true"}},
     {"water_grid_resolution_zero.json",
      {"water.grid_resolution: 0 is out of range", "(accepted: an integer, 2 <= value <= 4096 cells per side)"}},

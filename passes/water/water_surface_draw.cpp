@@ -1,0 +1,47 @@
+// The water mesh's draw: reads, bindings and push constants (water_surface_draw.hpp).
+#include "passes/water/water_surface_draw.hpp"
+
+namespace vkw::passes {
+
+WaterSurfacePush water_surface_push(const WaterSurfaceBuffers& surface, uint32_t refine_steps) {
+    WaterSurfacePush push;
+    push.mesh_resolution = surface.mesh_resolution;
+    push.level = surface.model.level;
+    push.half_extent = surface.model.half_extent;
+    push.surface_model = surface.model.ocean ? 1u : 0u;
+    push.wave_count = surface.model.wave_count;
+    push.ocean_n = surface.model.ocean_n;
+    push.nodes_per_metre = surface.model.nodes_per_metre;
+    // Flat water's mesh is its surface (every vertex exact, the triangles in its plane).
+    const bool flat = !surface.model.ocean && surface.model.wave_count == 0;
+    push.refine_steps = flat ? 0 : refine_steps;
+    push.mesh_sag = surface.model.mesh_sag;
+    return push;
+}
+
+void WaterSurfaceReads::declare(fg::PassBuilder& builder, const WaterSurfaceBuffers& surface) {
+    constexpr VkPipelineStageFlags2 fragment = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+    mesh = builder.read_storage(surface.mesh, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | fragment);
+    waves = builder.uniform_buffer(surface.waves, fragment);
+    if (surface.ocean_fields) ocean_fields = builder.read_storage(*surface.ocean_fields, fragment);
+    mesh_resolution = surface.mesh_resolution;
+}
+
+void WaterSurfaceReads::add_layout(std::vector<VkDescriptorSetLayoutBinding>& layout) const {
+    layout.push_back({2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr});
+    layout.push_back({11, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+    layout.push_back({12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+}
+
+void WaterSurfaceReads::add_bindings(const fg::PassContext& context,
+                                     std::vector<fg::DescriptorBinding>& bindings) const {
+    bindings.push_back(context.storage_buffer(2, mesh));
+    bindings.push_back(context.uniform_buffer(11, waves));
+    bindings.push_back(context.storage_buffer(12, ocean_fields.value_or(mesh)));
+}
+
+void WaterSurfaceReads::draw(fg::PassContext& context) const {
+    vkCmdDraw(context.cmd(), 6 * mesh_resolution * mesh_resolution, 1, 0, 0);
+}
+
+}  // namespace vkw::passes

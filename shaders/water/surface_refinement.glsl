@@ -1,0 +1,90 @@
+// The water surface recovered per pixel from the mesh it is drawn with: the first crossing of
+// the view ray with the displaced surface P(x) of the scene's wave model, found by Newton's
+// method from the rasterised mesh point (docs/water_surface.md). The mesh
+// then only has to be fine enough for Newton to start near the right crossing; the shading sees
+// the exact surface and its analytic normal wherever the iteration converges.
+//
+// Needs the push constants of water/water_surface_params.glsl, the wave table at binding 11
+// and the ocean's fields at binding 12 (only the scene's model is read).
+#ifndef VKWATER_SURFACE_REFINEMENT_GLSL
+#define VKWATER_SURFACE_REFINEMENT_GLSL
+
+#define WATER_WAVES_BINDING 11
+#define OCEAN_FIELDS_BINDING 12
+#include "water/ocean_point.glsl"
+#include "water/water_surface_params.glsl"
+#include "water/water_vertex.glsl"
+#include "water/wave_sum_point.glsl"
+
+const uint WATER_SURFACE_SUM = 0u;  // sines and Gerstner waves; flat water is a sum of none
+const uint WATER_SURFACE_OCEAN = 1u;
+
+// A converged crossing misses the surface by at most this times (1 + t) metres: about ten fp32
+// ulps of the positions involved (P and eye + t d are sums of terms of magnitude t and |eye|).
+const float REFINEMENT_RELATIVE_TOLERANCE = 1e-5;
+
+void water_surface_at(vec2 x, out vec3 position, out vec3 dP_du, out vec3 dP_dv) {
+    if (params.surface_model == WATER_SURFACE_OCEAN) {
+        ocean_point(x, params.level, params.ocean_n, params.nodes_per_metre, position, dP_du, dP_dv);
+    } else {
+        wave_sum_point(x, params.level, params.wave_count, position, dP_du, dP_dv);
+    }
+}
+
+// Solves eye + t d = P(x) for the ray parameter t and the grid parameter x, Newton's method on
+// all three unknowns at once (the Jacobian's columns d, -dP/dx0, -dP/dz0), which needs no
+// inversion of the horizontal displacement of its own: heightfields, Gerstner waves and the
+// choppy ocean alike. t and x start at the mesh point's and end at the crossing's. False, and
+// nothing written, where the iteration does not meet the surface within the tolerance, meets
+// it behind the eye or outside the water's square, or the ray runs parallel to the surface:
+// the caller keeps the mesh point there.
+bool refine_water_hit(vec3 eye, vec3 d, inout float t, inout vec2 x, out vec3 position, out vec3 normal) {
+    vec3 p, dP_du, dP_dv;
+    water_surface_at(x, p, dP_du, dP_dv);
+    for (uint i = 0u; i < params.refine_steps; ++i) {
+        const vec3 miss = eye + t * d - p;
+        if (length(miss) <= REFINEMENT_RELATIVE_TOLERANCE * (1.0 + t)) break;  // converged: no step left to take
+        const mat3 jacobian = mat3(d, -dP_du, -dP_dv);
+        if (!(abs(determinant(jacobian)) > 1e-12)) return false;
+        const vec3 step = inverse(jacobian) * miss;
+        t -= step.x;
+        x -= step.yz;
+        water_surface_at(x, p, dP_du, dP_dv);
+    }
+    const bool inside = all(lessThanEqual(abs(x), vec2(params.half_extent)));
+    if (!(t > 0.0) || !inside || !(distance(eye + t * d, p) <= REFINEMENT_RELATIVE_TOLERANCE * (1.0 + t))) {
+        return false;
+    }
+    position = p;
+    normal = water_normal(dP_du, dP_dv);
+    return true;
+}
+
+// The surface point a pixel of the drawn mesh shows: the refined crossing of the view ray from
+// the eye through the mesh's point, or the mesh's own point and normal where refine_water_hit
+// fails. Returns whether it refined.
+bool water_surface_of_pixel(vec3 eye, vec3 mesh_position, vec3 mesh_normal, vec2 mesh_parameter, out vec3 position,
+                            out vec3 normal) {
+    if (params.refine_steps == 0u) {  // flat water: the mesh is the surface
+        position = mesh_position;
+        normal = normalize(mesh_normal);
+        return false;
+    }
+    float t = distance(mesh_position, eye);
+    const vec3 d = (mesh_position - eye) / t;
+    vec2 parameter = mesh_parameter;
+    // A cell's chord lies under a crest (seen from above; over a trough from below): the view ray
+    // meets the surface up to sag / |cos| before the mesh. Newton starts there, in front of the
+    // crossing, so that it converges to the first one rather than to the next crest's.
+    const float back = min(params.mesh_sag / max(abs(dot(d, normalize(mesh_normal))), 0.05), 0.5 * t);
+    float t_before = t - back;
+    vec2 parameter_before = parameter - back * d.xz;
+    if (refine_water_hit(eye, d, t_before, parameter_before, position, normal)) return true;
+    // Too far in front for Newton to converge in the steps given: from the mesh point itself.
+    if (back > 0.0 && refine_water_hit(eye, d, t, parameter, position, normal)) return true;
+    position = mesh_position;
+    normal = normalize(mesh_normal);
+    return false;
+}
+
+#endif
