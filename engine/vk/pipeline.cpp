@@ -66,9 +66,21 @@ Pipeline::Pipeline(const Context& context, const GraphicsPipelineDesc& desc, con
     stage.module = vertex.handle();
     stage.pName = "main";
     stages.push_back(stage);
+    std::vector<VkSpecializationMapEntry> constant_entries;
+    VkSpecializationInfo specialization{};
     if (fragment) {
         stage.stage = VK_SHADER_STAGE_FRAGMENT_BIT;
         stage.module = fragment->handle();
+        if (!desc.fragment_constants.empty()) {
+            for (uint32_t id = 0; id < desc.fragment_constants.size(); ++id) {
+                constant_entries.push_back({id, id * uint32_t(sizeof(uint32_t)), sizeof(uint32_t)});
+            }
+            specialization.mapEntryCount = static_cast<uint32_t>(constant_entries.size());
+            specialization.pMapEntries = constant_entries.data();
+            specialization.dataSize = desc.fragment_constants.size() * sizeof(uint32_t);
+            specialization.pData = desc.fragment_constants.data();
+            stage.pSpecializationInfo = &specialization;
+        }
         stages.push_back(stage);
     }
 

@@ -36,15 +36,15 @@ double FftOceanSpectrum::amplitude_bound() const {
     return 2.0 * sum;
 }
 
-double FftOceanSpectrum::curvature_bound() const {
+double FftOceanSpectrum::curvature_rms() const {
     double sum = 0.0;
     for (uint32_t b = 0; b < n; ++b) {
         for (uint32_t a = 0; a < n; ++a) {
             const glm::dvec2 k = wave_vector(a, b);
-            sum += std::abs(h0[std::size_t(b) * n + a]) * glm::dot(k, k);
+            sum += std::norm(h0[std::size_t(b) * n + a]) * glm::dot(k, k) * glm::dot(k, k);
         }
     }
-    return 2.0 * sum;
+    return std::sqrt(2.0 * sum);
 }
 
 FftOceanSpectrum make_ocean_spectrum(const FftOceanSettings& ocean, uint64_t seed) {

@@ -51,9 +51,11 @@ struct FftOceanSpectrum {
     std::size_t opposite(std::size_t index) const;         // the index of -k
     // 2 sum |h0|: bounds |h| at every time and place (each h~ is bounded by |h0(k)| + |h0(-k)|).
     double amplitude_bound() const;
-    // 2 sum |h0| |k|^2: bounds every second derivative of h, and of the displacements over the
-    // choppiness, at every time and place (1/m).
-    double curvature_bound() const;
+    // sqrt(2 sum |h0|^2 |k|^4): the RMS, over the surface, of every second derivative of h (and
+    // of the displacements over the choppiness), at every time (1/m). The surface is a Gaussian
+    // random field, so it exceeds 4 times this on about 6e-5 of its area; the bound that holds
+    // everywhere, 2 sum |h0| |k|^2, is tens of times larger on real spectra.
+    double curvature_rms() const;
 };
 
 // Throws vkw::UserError (validate_ocean) for bad settings.

@@ -81,7 +81,16 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
             d.lighting.add_layout(desc.layout.bindings);
             desc.depth_test = true;
             desc.depth_write = true;
-            const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
+            // water_surface.frag's constants 1-4: the Fresnel form, the depth colour, the lookups.
+            std::string key = d.surface.specialise(desc, desc.fragment_shader);
+            const uint32_t reflection = lookup_code(d.reflection_view, lookups.reflection_method);
+            const uint32_t refraction = lookup_code(d.refraction_view, lookups.refraction_method);
+            const uint32_t fresnel = static_cast<uint32_t>(shading.fresnel), depth_blend = shading.depth_blend;
+            desc.fragment_constants.insert(desc.fragment_constants.end(),
+                                           {fresnel, depth_blend, reflection, refraction});
+            key += "/fresnel " + std::to_string(fresnel) + "/blend " + std::to_string(depth_blend) + "/lookups " +
+                   std::to_string(reflection) + std::to_string(refraction);
+            const Pipeline& pipeline = context.pipeline(key, desc);
             std::vector<fg::DescriptorBinding> bindings;
             d.surface.add_bindings(context, bindings);
             d.lighting.add_bindings(context, bindings);
@@ -98,15 +107,11 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
             }
             context.bind(pipeline, bindings);
             WaterSurfacePush push = base;
-            push.reflection_method = lookup_code(d.reflection_view, lookups.reflection_method);
-            push.refraction_method = lookup_code(d.refraction_view, lookups.refraction_method);
             push.reflection_steps = static_cast<uint32_t>(lookups.reflection_steps);
             push.refraction_steps = static_cast<uint32_t>(lookups.refraction_steps);
             push.scene_size = lookups.scene_size;
             push.shallow_blend = lookups.shallow_blend;
-            push.fresnel = static_cast<uint32_t>(shading.fresnel);
             push.fresnel_power = shading.fresnel_power;
-            push.depth_blend = shading.depth_blend ? 1u : 0u;
             push.blend_k = shading.blend_k;
             push.water_colour[0] = shading.water_colour.r;
             push.water_colour[1] = shading.water_colour.g;

@@ -8,13 +8,10 @@ WaterSurfacePush water_surface_push(const WaterSurfaceBuffers& surface, uint32_t
     push.mesh_resolution = surface.mesh_resolution;
     push.level = surface.model.level;
     push.half_extent = surface.model.half_extent;
-    push.surface_model = surface.model.ocean ? 1u : 0u;
     push.wave_count = surface.model.wave_count;
     push.ocean_n = surface.model.ocean_n;
     push.nodes_per_metre = surface.model.nodes_per_metre;
-    // Flat water's mesh is its surface (every vertex exact, the triangles in its plane).
-    const bool flat = !surface.model.ocean && surface.model.wave_count == 0;
-    push.refine_steps = flat ? 0 : refine_steps;
+    push.refine_steps = refine_steps;
     push.mesh_sag = surface.model.mesh_sag;
     return push;
 }
@@ -25,6 +22,15 @@ void WaterSurfaceReads::declare(fg::PassBuilder& builder, const WaterSurfaceBuff
     waves = builder.uniform_buffer(surface.waves, fragment);
     if (surface.ocean_fields) ocean_fields = builder.read_storage(*surface.ocean_fields, fragment);
     mesh_resolution = surface.mesh_resolution;
+    // Flat water's mesh is its surface (every vertex exact, the triangles in its plane).
+    surface_model = surface.model.ocean ? 2u : surface.model.wave_count > 0 ? 1u : 0u;
+}
+
+std::string WaterSurfaceReads::specialise(GraphicsPipelineDesc& desc, const std::string& key) const {
+    desc.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
+    desc.fragment_constants = {surface_model};
+    static constexpr const char* kModelNames[] = {"/flat", "/sum", "/ocean"};
+    return key + kModelNames[surface_model];
 }
 
 void WaterSurfaceReads::add_layout(std::vector<VkDescriptorSetLayoutBinding>& layout) const {
@@ -41,7 +47,7 @@ void WaterSurfaceReads::add_bindings(const fg::PassContext& context,
 }
 
 void WaterSurfaceReads::draw(fg::PassContext& context) const {
-    vkCmdDraw(context.cmd(), 6 * mesh_resolution * mesh_resolution, 1, 0, 0);
+    vkCmdDraw(context.cmd(), 2 * (mesh_resolution + 1), mesh_resolution, 0, 0);
 }
 
 }  // namespace vkw::passes

@@ -13,7 +13,7 @@ OceanSpectrumBuffer::OceanSpectrumBuffer(const Context& context, std::shared_ptr
     if (!spectrum_ || spectrum_->h0.empty() || spectrum_->h0.size() != std::size_t(spectrum_->n) * spectrum_->n) {
         throw InternalError("OceanSpectrumBuffer: the spectrum must hold n * n modes");
     }
-    curvature_bound_ = spectrum_->curvature_bound();
+    curvature_rms_ = spectrum_->curvature_rms();
     const VkDeviceSize bytes = spectrum_->h0.size() * 2 * sizeof(float);
     buffer_ = Buffer(context, {bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, /*host_visible=*/true}, "ocean h0");
     float* out = static_cast<float*>(buffer_.mapped());

@@ -24,7 +24,7 @@ public:
 
     const FftOceanSpectrum& spectrum() const { return *spectrum_; }
     VkBuffer buffer() const { return buffer_.handle(); }
-    double curvature_bound() const { return curvature_bound_; }  // the spectrum's, computed once
+    double curvature_rms() const { return curvature_rms_; }  // the spectrum's, computed once
 
     // Imports the buffer into `graph` for reading by the ocean's spectrum kernel. Its initial
     // state is a host write (the constructor's memcpy): the graph derives the host-to-compute
@@ -37,7 +37,7 @@ public:
 private:
     std::shared_ptr<const FftOceanSpectrum> spectrum_;
     Buffer buffer_;
-    double curvature_bound_ = 0.0;
+    double curvature_rms_ = 0.0;
 };
 
 }  // namespace vkw::passes

@@ -16,15 +16,19 @@
 #include "water/water_vertex.glsl"
 #include "water/wave_sum_point.glsl"
 
-const uint WATER_SURFACE_SUM = 0u;  // sines and Gerstner waves; flat water is a sum of none
-const uint WATER_SURFACE_OCEAN = 1u;
+// The scene's model, a specialization constant (passes/water/water_surface_draw.hpp): the other
+// models' code is compiled out of the pipeline.
+const uint WATER_SURFACE_FLAT = 0u;  // the mesh is the surface: nothing to refine
+const uint WATER_SURFACE_SUM = 1u;   // sines and Gerstner waves
+const uint WATER_SURFACE_OCEAN = 2u;
+layout(constant_id = 0) const uint WATER_SURFACE_MODEL = WATER_SURFACE_SUM;
 
 // A converged crossing misses the surface by at most this times (1 + t) metres: about ten fp32
 // ulps of the positions involved (P and eye + t d are sums of terms of magnitude t and |eye|).
 const float REFINEMENT_RELATIVE_TOLERANCE = 1e-5;
 
 void water_surface_at(vec2 x, out vec3 position, out vec3 dP_du, out vec3 dP_dv) {
-    if (params.surface_model == WATER_SURFACE_OCEAN) {
+    if (WATER_SURFACE_MODEL == WATER_SURFACE_OCEAN) {
         ocean_point(x, params.level, params.ocean_n, params.nodes_per_metre, position, dP_du, dP_dv);
     } else {
         wave_sum_point(x, params.level, params.wave_count, position, dP_du, dP_dv);
@@ -36,9 +40,10 @@ void water_surface_at(vec2 x, out vec3 position, out vec3 dP_du, out vec3 dP_dv)
 // inversion of the horizontal displacement of its own: heightfields, Gerstner waves and the
 // choppy ocean alike. t and x start at the mesh point's and end at the crossing's. False, and
 // nothing written, where the iteration does not meet the surface within the tolerance, meets
-// it behind the eye or outside the water's square, or the ray runs parallel to the surface:
-// the caller keeps the mesh point there.
-bool refine_water_hit(vec3 eye, vec3 d, inout float t, inout vec2 x, out vec3 position, out vec3 normal) {
+// it outside [t_min, t_max] or outside the water's square, or the ray runs parallel to the
+// surface: the caller keeps the mesh point there.
+bool refine_water_hit(vec3 eye, vec3 d, float t_min, float t_max, inout float t, inout vec2 x, out vec3 position,
+                      out vec3 normal) {
     vec3 p, dP_du, dP_dv;
     water_surface_at(x, p, dP_du, dP_dv);
     for (uint i = 0u; i < params.refine_steps; ++i) {
@@ -52,7 +57,8 @@ bool refine_water_hit(vec3 eye, vec3 d, inout float t, inout vec2 x, out vec3 po
         water_surface_at(x, p, dP_du, dP_dv);
     }
     const bool inside = all(lessThanEqual(abs(x), vec2(params.half_extent)));
-    if (!(t > 0.0) || !inside || !(distance(eye + t * d, p) <= REFINEMENT_RELATIVE_TOLERANCE * (1.0 + t))) {
+    if (!(t >= t_min && t <= t_max) || !inside ||
+        !(distance(eye + t * d, p) <= REFINEMENT_RELATIVE_TOLERANCE * (1.0 + t))) {
         return false;
     }
     position = p;
@@ -65,7 +71,7 @@ bool refine_water_hit(vec3 eye, vec3 d, inout float t, inout vec2 x, out vec3 po
 // fails. Returns whether it refined.
 bool water_surface_of_pixel(vec3 eye, vec3 mesh_position, vec3 mesh_normal, vec2 mesh_parameter, out vec3 position,
                             out vec3 normal) {
-    if (params.refine_steps == 0u) {  // flat water: the mesh is the surface
+    if (WATER_SURFACE_MODEL == WATER_SURFACE_FLAT || params.refine_steps == 0u) {
         position = mesh_position;
         normal = normalize(mesh_normal);
         return false;
@@ -73,15 +79,18 @@ bool water_surface_of_pixel(vec3 eye, vec3 mesh_position, vec3 mesh_normal, vec2
     float t = distance(mesh_position, eye);
     const vec3 d = (mesh_position - eye) / t;
     vec2 parameter = mesh_parameter;
-    // A cell's chord lies under a crest (seen from above; over a trough from below): the view ray
-    // meets the surface up to sag / |cos| before the mesh. Newton starts there, in front of the
-    // crossing, so that it converges to the first one rather than to the next crest's.
+    // A cell's chord lies under a crest (seen from above; over a trough from below), within the
+    // sag of the surface: the first crossing lies within sag / |cos| of the mesh point along the
+    // ray. Newton starts that far in front, so that it converges to the first crossing rather
+    // than to the next crest's, and a solution outside that window is another crossing.
     const float back = min(params.mesh_sag / max(abs(dot(d, normalize(mesh_normal))), 0.05), 0.5 * t);
+    const float slack = REFINEMENT_RELATIVE_TOLERANCE * (1.0 + t);
+    const float t_min = t - back - slack, t_max = t + back + slack;
     float t_before = t - back;
     vec2 parameter_before = parameter - back * d.xz;
-    if (refine_water_hit(eye, d, t_before, parameter_before, position, normal)) return true;
+    if (refine_water_hit(eye, d, t_min, t_max, t_before, parameter_before, position, normal)) return true;
     // Too far in front for Newton to converge in the steps given: from the mesh point itself.
-    if (back > 0.0 && refine_water_hit(eye, d, t, parameter, position, normal)) return true;
+    if (back > 0.0 && refine_water_hit(eye, d, t_min, t_max, t, parameter, position, normal)) return true;
     position = mesh_position;
     normal = normalize(mesh_normal);
     return false;

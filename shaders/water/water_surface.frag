@@ -28,6 +28,13 @@ layout(set = 0, binding = 1, std430) readonly buffer Optics { SceneOptics optics
 const uint SURFACE_FRESNEL_EXACT = 0u;
 const uint SURFACE_FRESNEL_SCHLICK = 1u;
 const uint SURFACE_FRESNEL_POWER = 2u;
+// Specialization constants (passes/water/water_shading.cpp); constant 0 is the wave model's
+// (water/surface_refinement.glsl). As constants, the paths a scene does not take are compiled
+// out instead of run masked.
+layout(constant_id = 1) const uint FRESNEL_MODEL = SURFACE_FRESNEL_EXACT;  // effects.water.fresnel
+layout(constant_id = 2) const uint DEPTH_BLEND = 0u;        // 1: Optical Phenomena c. 2008's depth colour
+layout(constant_id = 3) const uint REFLECTION_METHOD = 0u;  // SCENE_LOOKUP_*: 0 off, 1 projective, 2 screen-space
+layout(constant_id = 4) const uint REFRACTION_METHOD = 0u;
 
 // The surface's Fresnel split as the scene chooses it (effects.water.fresnel): the exact equations
 // (the model, docs/model.md section 2); Schlick's approximation; or Optical Phenomena c. 2008's power term
@@ -35,8 +42,8 @@ const uint SURFACE_FRESNEL_POWER = 2u;
 // reflection, so the exact form's is kept (R = 1 outside Snell's window from below).
 Fresnel surface_fresnel(float cos_i, float n_i, float n_t) {
     Fresnel exact = fresnel_exact(cos_i, n_i, n_t);
-    if (params.fresnel_model == SURFACE_FRESNEL_SCHLICK) return fresnel_schlick(cos_i, n_i, n_t);
-    if (params.fresnel_model == SURFACE_FRESNEL_POWER && !exact.total_internal_reflection) {
+    if (FRESNEL_MODEL == SURFACE_FRESNEL_SCHLICK) return fresnel_schlick(cos_i, n_i, n_t);
+    if (FRESNEL_MODEL == SURFACE_FRESNEL_POWER && !exact.total_internal_reflection) {
         float r = pow(1.0 - clamp(cos_i, 0.0, 1.0), params.fresnel_power);
         return Fresnel(r, 1.0 - r, exact.cos_t, false);
     }
@@ -61,7 +68,7 @@ bool object_along(bool reflected, vec3 p, vec3 d, float limit, float weight, out
     // the other side (the camera crossing the surface) keep the exact lookups alone.
     if (camera_in_water() != (frame.camera_medium.x > 0.5)) return false;
     SceneHit hit;
-    uint method = reflected ? params.reflection_method : params.refraction_method;
+    uint method = reflected ? REFLECTION_METHOD : REFRACTION_METHOD;
     if (method == SCENE_LOOKUP_SCREEN_SPACE && weight < SCREEN_SPACE_FRESNEL_SKIP) return false;
     int steps = int(reflected ? params.reflection_steps : params.refraction_steps);
     if (scene_lookup(method, reflected, p, d, limit, steps, hit) && hit.distance < limit) {
@@ -103,7 +110,7 @@ vec3 radiance_in_water(vec3 p, vec3 d, bool reflected, float weight, out float l
                                          ivec2(object_uv * vec2(textureSize(refraction_view_caustic, 0))), 0).rgb;
 #endif
     }
-    if (params.depth_blend != 0u && !reflected) {
+    if (DEPTH_BLEND != 0u && !reflected) {
         // Optical Phenomena c. 2008's depth colour in place of the medium along the refracted ray: what the ray
         // meets fades to the water's colour C_w by exp(-k d), d its length in the water (a ray
         // that meets nothing sees C_w).
@@ -146,7 +153,7 @@ void main() {
             // Ojeda & Susín 2013: in very shallow water the screen-space refraction fades to what lies
             // straight behind the surface, by the water's depth along the view ray (a chosen
             // approximation: it hides the march's misses where the water thins out; off by default).
-            if (params.refraction_method == SCENE_LOOKUP_SCREEN_SPACE && params.shallow_blend > 0.0) {
+            if (REFRACTION_METHOD == SCENE_LOOKUP_SCREEN_SPACE && params.shallow_blend > 0.0) {
                 float direct_length;
                 vec3 direct_caustic;
                 vec3 direct = radiance_in_water(p, v, false, f.T, direct_length, direct_caustic) / (n * n);

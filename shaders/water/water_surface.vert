@@ -1,7 +1,8 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // The water surface drawn from its mesh's vertices (passes/water/water_surface.hpp), pulled from
-// the storage buffer by index: M x M cells, two triangles (six vertices) each. The grid
+// the storage buffer by index: M x M cells, one triangle strip of 2 (M + 1) vertices per row
+// (a third of the vertices a list of two triangles per cell takes). The grid
 // parameter goes along for the fragment shader's per-pixel refinement to start from.
 #include "common/frame_constants.glsl"
 #include "water/water_surface_params.glsl"
@@ -14,10 +15,9 @@ layout(location = 1) out vec3 out_normal;
 layout(location = 2) out vec2 out_parameter;
 
 void main() {
-    const uvec2 corners[6] = uvec2[](uvec2(0, 0), uvec2(1, 0), uvec2(1, 1), uvec2(0, 0), uvec2(1, 1), uvec2(0, 1));
+    // Row j of cells is instance j, one triangle strip zig-zagging between vertex rows j and j + 1.
     const uint m = params.mesh_resolution;
-    uint cell = uint(gl_VertexIndex) / 6u;
-    uvec2 ij = uvec2(cell % m, cell / m) + corners[uint(gl_VertexIndex) % 6u];
+    uvec2 ij = uvec2(uint(gl_VertexIndex) / 2u, uint(gl_InstanceIndex) + (uint(gl_VertexIndex) & 1u));
     WaterVertex vertex = surface.vertices[ij.y * (m + 1u) + ij.x];
     out_position = vertex.position.xyz;
     out_normal = vertex.normal.xyz;

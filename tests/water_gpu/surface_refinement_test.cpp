@@ -82,7 +82,8 @@ std::vector<glm::vec4> probe_pixels(Context& context, const FrameConstants& cons
                 desc.layout.push_constant_bytes = sizeof(push);
                 desc.depth_test = true;
                 desc.depth_write = true;
-                const Pipeline& pipeline = context.pipeline("refinement probe", desc);
+                const std::string key = d.surface.specialise(desc, "refinement probe");
+                const Pipeline& pipeline = context.pipeline(key, desc);
                 std::vector<fg::DescriptorBinding> bindings{context.uniform_buffer(0, d.constants)};
                 d.surface.add_bindings(context, bindings);
                 context.bind(pipeline, bindings);
@@ -232,7 +233,10 @@ void expect_refined_surface(Context& context, const passes::WaterSurfaceInputs& 
             // The rest: crossings the mesh could not resolve. From the true first crossing to
             // the point shown, the ray may dip into the other medium only as deep as the mesh's
             // chords can lie from the surface (a crest thinner than the sag, or the mesh's own
-            // point kept), and the point shown lies within the sag of the surface.
+            // point kept), and the point shown lies within the sag of the surface. Depths are
+            // distances to the surface: the height difference times the normal's y (the
+            // surface is locally a plane; a choppy wave's steep side is close in distance long
+            // before it is in height).
             const double t_shown = glm::length(glm::dvec3(gpu) - c.eye);
             const double side = c.eye.y > c.level ? 1.0 : -1.0;
             double deepest = 0.0;
@@ -241,12 +245,16 @@ void expect_refined_surface(Context& context, const passes::WaterSurfaceInputs& 
             for (double t = std::min(t_shown, cpu->t); t <= t_end; t += c.shortest_wavelength / 256.0) {
                 const glm::dvec3 q = c.eye + t * d;
                 u = parameter_below(surface, q.x, q.z, u);
-                deepest = std::max(deepest, -side * (q.y - surface(u.x, u.y).first.position.y));
+                const SurfacePoint below = surface(u.x, u.y).first;
+                deepest = std::max(deepest, -side * (q.y - below.position.y) * below.normal.y);
             }
             const glm::dvec3 shown(gpu);
             u = parameter_below(surface, shown.x, shown.z, u);
-            const double off_surface = std::abs(shown.y - surface(u.x, u.y).first.position.y);
-            EXPECT_LE(deepest, sag + bound) << "pixel (" << index % kWidth << ", " << index / kWidth << ")";
+            const SurfacePoint under_shown = surface(u.x, u.y).first;
+            const double off_surface = std::abs(shown.y - under_shown.position.y) * under_shown.normal.y;
+            EXPECT_LE(deepest, sag + bound)
+                << "pixel (" << index % kWidth << ", " << index / kWidth << "), refined " << (gpu.w == 1.0f)
+                << ", first crossing at t = " << cpu->t << " m, shown at " << t_shown << " m";
             EXPECT_LE(off_surface, sag + bound) << "pixel (" << index % kWidth << ", " << index / kWidth << ")";
         }
     }
@@ -338,20 +346,34 @@ void expect_ocean_refined(Context& context, const glm::dvec3& eye, const glm::dv
     inputs.ocean = &buffer;
     const OceanReference reference = ocean_reference(*spectrum, ocean.choppiness, inputs.time);
     const CpuSurface surface = [&](double x0, double z0) { return ocean_sample(reference, x0, z0, inputs.level); };
-    // The bilinear fields' second derivative: the largest change of a slope or displacement
-    // derivative between neighbouring nodes, per node spacing.
+    // The mesh's vertices lie on the FFT's nodes (M = n over one patch), and between them the
+    // GPU's surface is the fields' bilinear patch. Either triangle of a cell misses its patch by
+    // at most a quarter of the twist |P00 - P10 - P01 + P11| (at the cell's centre): that is the
+    // sag, passed to expect_refined_surface as a second derivative that reproduces it.
     const FftOceanGrid& grid = reference.grid;
-    double second = 0.0;
+    auto point = [&](uint32_t x, uint32_t z) {
+        const OceanFieldValues& f = grid.values(x % grid.n, z % grid.n);
+        return glm::dvec3(f[kOceanDispX], f[kOceanHeight], f[kOceanDispZ]);
+    };
+    double twist = 0.0;
     for (uint32_t z = 0; z < grid.n; ++z) {
         for (uint32_t x = 0; x < grid.n; ++x) {
-            for (const uint32_t f : {kOceanSlopeX, kOceanSlopeZ, kOceanDispXdX, kOceanDispXdZ, kOceanDispZdZ}) {
-                const double here = grid.values(x, z)[f];
-                second = std::max({second, std::abs(grid.values((x + 1) % grid.n, z)[f] - here),
-                                   std::abs(grid.values(x, (z + 1) % grid.n)[f] - here)});
-            }
+            twist = std::max(twist, glm::length(point(x, z) - point(x + 1, z) - point(x, z + 1) + point(x + 1, z + 1)));
         }
     }
-    second /= grid.spacing();
+    // The CPU's crossing follows the height above (x, z), one value only where the surface does
+    // not fold: the horizontal map's Jacobian stays positive at every node.
+    double least_jacobian = 1e9;
+    for (uint32_t z = 0; z < grid.n; ++z) {
+        for (uint32_t x = 0; x < grid.n; ++x) {
+            const OceanFieldValues& f = grid.values(x, z);
+            least_jacobian = std::min(least_jacobian, (1.0 + f[kOceanDispXdX]) * (1.0 + f[kOceanDispZdZ]) -
+                                                          f[kOceanDispXdZ] * f[kOceanDispXdZ]);
+        }
+    }
+    ASSERT_GT(least_jacobian, 0.0);
+    const double cell = 2.0 * inputs.half_extent / inputs.grid_resolution;
+    const double second = (twist / 4.0) / (2.0 * cell * cell / 8.0);
     const double amplitude = grid.max_abs_height();
     expect_refined_surface(context, inputs, surface,
                            {eye, target, inputs.level, inputs.half_extent, amplitude, 2.0 * grid.spacing(), second,
