@@ -36,15 +36,19 @@ FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t
         const Water& water = *scene.water;
         constants.water = glm::vec4(static_cast<float>(water.level), static_cast<float>(water.ior),
                                     static_cast<float>(water.half_extent), 1.0f);
-        // Height exactly at the level counts as above the water. This per-frame test is the
-        // fallback for frames whose stencil split is culled (passes/water/water_volume_stencil.hpp
+        // The fallback for frames whose stencil split is culled (passes/water/water_volume_stencil.hpp
         // classifies every pixel otherwise).
-        const glm::dvec3 eye = scene.camera.position;
-        const bool inside = eye.y < water.level && eye.y >= water_bottom(scene) &&
-                            std::abs(eye.x) <= water.half_extent && std::abs(eye.z) <= water.half_extent;
-        constants.camera_medium = glm::vec4(inside ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+        constants.camera_medium = glm::vec4(camera_eye_in_water(scene) ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
     }
     return constants;
+}
+
+bool camera_eye_in_water(const Scene& scene) {
+    if (!scene.water) return false;
+    const Water& water = *scene.water;
+    const glm::dvec3 eye = scene.camera.position;
+    return eye.y < water.level && eye.y >= water_bottom(scene) && std::abs(eye.x) <= water.half_extent &&
+           std::abs(eye.z) <= water.half_extent;
 }
 
 }  // namespace vkw

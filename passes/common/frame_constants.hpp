@@ -42,4 +42,9 @@ static_assert(sizeof(FrameConstants) % 16 == 0, "std140 blocks are a multiple of
 
 FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t height);
 
+// Whether the camera's eye is in the water, the per-frame camera medium (height exactly at the
+// level counts as above). The stencil split refines it per pixel where the near plane crosses
+// the surface.
+bool camera_eye_in_water(const Scene& scene);
+
 }  // namespace vkw

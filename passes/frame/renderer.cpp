@@ -184,7 +184,7 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
     if (receivers && !receivers->empty()) passes::add_receivers_pass(graph, *receivers);
     if (surface) {
         passes::add_water_shading_pass(graph, *water_buffers, scene_lookups(graph, scene, receivers, caustic_layer),
-                                       passes::water_surface_shading(scene.effects.water));
+                                       passes::water_surface_shading(scene));
     }
     // Godrays only with a decision, as the frame constants' analytic in-scatter switch has it.
     const fg::EffectDecision* godrays = graph.needs().find(Effect::VolumeCaustics);

@@ -3,6 +3,7 @@
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/scene/effects.hpp"
 #include "passes/caustics/caustic_layer.hpp"
+#include "passes/common/frame_constants.hpp"
 #include "passes/common/frame_keys.hpp"
 #include "passes/receivers/lighting_inputs.hpp"
 #include "passes/scene_views/scene_view.hpp"
@@ -18,8 +19,10 @@ uint32_t lookup_code(const std::optional<fg::ImageHandle>& view, SceneLookup met
 }
 }  // namespace
 
-WaterSurfaceShading water_surface_shading(const WaterShadingSettings& settings) {
+WaterSurfaceShading water_surface_shading(const Scene& scene) {
+    const WaterShadingSettings& settings = scene.effects.water;
     WaterSurfaceShading shading;
+    shading.eye_in_water = camera_eye_in_water(scene);
     shading.fresnel = settings.fresnel;
     shading.fresnel_power = static_cast<float>(settings.fresnel_power);
     if (settings.depth_blend) {
@@ -86,10 +89,12 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
             const uint32_t reflection = lookup_code(d.reflection_view, lookups.reflection_method);
             const uint32_t refraction = lookup_code(d.refraction_view, lookups.refraction_method);
             const uint32_t fresnel = static_cast<uint32_t>(shading.fresnel), depth_blend = shading.depth_blend;
+            // Constant 5, the camera's side: 0 the air, 1 the water, 2 per pixel (the mask).
+            const uint32_t side = d.lighting.camera_medium ? 2u : shading.eye_in_water ? 1u : 0u;
             desc.fragment_constants.insert(desc.fragment_constants.end(),
-                                           {fresnel, depth_blend, reflection, refraction});
+                                           {fresnel, depth_blend, reflection, refraction, side});
             key += "/fresnel " + std::to_string(fresnel) + "/blend " + std::to_string(depth_blend) + "/lookups " +
-                   std::to_string(reflection) + std::to_string(refraction);
+                   std::to_string(reflection) + std::to_string(refraction) + "/side " + std::to_string(side);
             const Pipeline& pipeline = context.pipeline(key, desc);
             std::vector<fg::DescriptorBinding> bindings;
             d.surface.add_bindings(context, bindings);

@@ -34,8 +34,12 @@ struct WaterSurfaceShading {
     float blend_k = 0.5f;
     // Newton steps per pixel from the mesh to the exact surface; 0 shades the mesh as drawn.
     uint32_t refine_steps = 4;
+    // The per-frame camera medium (camera_eye_in_water): without the stencil split's per-pixel
+    // mask every pixel shares it, and the shader is specialised for that side alone.
+    bool eye_in_water = false;
 };
-WaterSurfaceShading water_surface_shading(const WaterShadingSettings& settings);
+// The scene's effects.water, and its per-frame camera medium.
+WaterSurfaceShading water_surface_shading(const Scene& scene);
 
 void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& surface,
                             const WaterSceneLookups& lookups = {}, const WaterSurfaceShading& shading = {});

@@ -35,6 +35,10 @@ layout(constant_id = 1) const uint FRESNEL_MODEL = SURFACE_FRESNEL_EXACT;  // ef
 layout(constant_id = 2) const uint DEPTH_BLEND = 0u;        // 1: Optical Phenomena c. 2008's depth colour
 layout(constant_id = 3) const uint REFLECTION_METHOD = 0u;  // SCENE_LOOKUP_*: 0 off, 1 projective, 2 screen-space
 layout(constant_id = 4) const uint REFRACTION_METHOD = 0u;
+// The camera's side of the surface when every pixel shares it (0 the air, 1 the water), or 2:
+// per pixel, camera_in_water() (the stencil split's mask, or the frame constants).
+layout(constant_id = 5) const uint CAMERA_SIDE = 2u;
+bool eye_in_water() { return CAMERA_SIDE == 2u ? camera_in_water() : CAMERA_SIDE == 1u; }
 
 // The surface's Fresnel split as the scene chooses it (effects.water.fresnel): the exact equations
 // (the model, docs/model.md section 2); Schlick's approximation; or Optical Phenomena c. 2008's power term
@@ -131,7 +135,7 @@ void main() {
     vec3 v = normalize(p - eye);
     float n = frame.water.y;
 
-    if (!camera_in_water()) {
+    if (!eye_in_water()) {
         // From the air. A wave's back face seen from above keeps a grazing cosine of 0.
         Fresnel f = surface_fresnel(max(0.0, -dot(v, normal)), 1.0, n);
         vec3 reflected_direction = reflect(v, normal);
