@@ -11,7 +11,7 @@ namespace vkw {
 
 enum class Effect : uint8_t {
     Water,            // the water surface and its shading
-    UnderwaterView,   // stencil split and the from-below path
+    UnderwaterView,   // camera-medium split and the from-below path
     Reflection,       // the scene reflected in the water
     Refraction,       // the scene seen through the water
     SurfaceCaustics,  // photon grid and splats on receivers

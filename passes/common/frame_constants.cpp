@@ -36,7 +36,7 @@ FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t
         const Water& water = *scene.water;
         constants.water = glm::vec4(static_cast<float>(water.level), static_cast<float>(water.ior),
                                     static_cast<float>(water.half_extent), 1.0f);
-        // The fallback for frames whose stencil split is culled (passes/water/water_volume_stencil.hpp
+        // The fallback for frames whose camera-medium split is culled (passes/water/camera_medium.hpp
         // classifies every pixel otherwise).
         constants.camera_medium = glm::vec4(camera_eye_in_water(scene) ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
     }

@@ -34,8 +34,8 @@ struct alignas(16) FrameConstants {
     glm::vec4 water;     // x: level, y: ior, z: half extent, w: has water
     glm::vec4 medium_sigma_t;
     glm::vec4 medium_sigma_s;  // w: g
-    glm::vec4 camera_medium;   // x: camera in the water (per frame; the stencil split refines it per pixel)
-    glm::vec4 camera_near;     // x: near-plane distance, m (the stencil split's clip depth)
+    glm::vec4 camera_medium;   // x: camera in the water (per frame; the camera-medium split refines it per pixel)
+    glm::vec4 camera_near;     // x: near-plane distance, m
     glm::vec4 medium_options;  // x: 1 when the shading adds the analytic in-scatter, 0 when the godrays supply it
 };
 static_assert(sizeof(FrameConstants) % 16 == 0, "std140 blocks are a multiple of 16 bytes");
@@ -43,7 +43,7 @@ static_assert(sizeof(FrameConstants) % 16 == 0, "std140 blocks are a multiple of
 FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t height);
 
 // Whether the camera's eye is in the water, the per-frame camera medium (height exactly at the
-// level counts as above). The stencil split refines it per pixel where the near plane crosses
+// level counts as above). The camera-medium split refines it per pixel where the near plane crosses
 // the surface.
 bool camera_eye_in_water(const Scene& scene);
 

@@ -21,11 +21,11 @@
 #include "passes/receivers/sun_shadow.hpp"
 #include "passes/scene_views/scene_view.hpp"
 #include "passes/sky/sky.hpp"
+#include "passes/water/camera_medium.hpp"
 #include "passes/water/scene_optics.hpp"
 #include "passes/water/water_shading.hpp"
 #include "passes/water/water_surface.hpp"
 #include "passes/water/water_surface_spectrum.hpp"
-#include "passes/water/water_volume_stencil.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -122,7 +122,7 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
         sun_shadow = passes::add_sun_shadow_pass(graph, *receivers, shadow);
         graph.blackboard().put(keys::kSunShadow, *sun_shadow);
     }
-    // The surface grid comes first: the stencil split, which the floor reads, draws it.
+    // The surface first: the camera-medium split, which the floor reads, evaluates it.
     std::optional<passes::WaterSurfaceBuffers> water_buffers;
     std::optional<fg::BufferHandle> surface;  // the grid
     if (scene.water && graph.needs().needs(Effect::Water)) {
@@ -134,7 +134,8 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
         // Without it (culled: no ray can start in the water) the shading falls back to the
         // per-frame camera medium of the frame constants.
         if (graph.needs().needs(Effect::UnderwaterView)) {
-            passes::add_water_volume_stencil_passes(graph, *surface, water.grid_resolution, water_bottom(scene));
+            passes::add_camera_medium_pass(graph, *water_buffers, water_bottom(scene),
+                                           water_bounds(scene).hi.y - water.level);
         }
         if (graph.needs().needs(Effect::SurfaceCaustics)) {
             // The sun under the water becomes the caustic map; the flat stand-in goes.
@@ -178,7 +179,7 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
             }
         }
     }
-    // The sky after the stencil split: a ray from the water that meets nothing sees nothing.
+    // The sky after the camera-medium split: a ray from the water that meets nothing sees nothing.
     passes::add_sky_pass(graph);
     passes::add_floor_pass(graph, caustic_layer);
     if (receivers && !receivers->empty()) passes::add_receivers_pass(graph, *receivers);

@@ -4,7 +4,7 @@
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/scene/effects.hpp"
 #include "passes/common/frame_keys.hpp"
-#include "passes/water/water_volume_stencil.hpp"
+#include "passes/water/camera_medium.hpp"
 
 #include <optional>
 #include <vector>

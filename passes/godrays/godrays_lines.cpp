@@ -5,7 +5,7 @@
 #include "engine/scene/effects.hpp"
 #include "passes/common/frame_keys.hpp"
 #include "passes/common/zeroed_buffer.hpp"
-#include "passes/water/water_volume_stencil.hpp"
+#include "passes/water/camera_medium.hpp"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
 // The floor plane as a Lambertian receiver, drawn over the sky with a depth buffer
 // (reversed-Z), lit above or below the water (shaders/receivers/receiver.frag). Reads the
 // scene optics; reads and republishes keys::kHdrColor; publishes keys::kSceneDepth. Reads
-// keys::kCameraMedium, the stencil split's per-pixel medium, when it was published before.
+// keys::kCameraMedium, the camera-medium split's per-pixel medium, when it was published before.
 #pragma once
 
 #include "engine/framegraph/frame_graph.hpp"

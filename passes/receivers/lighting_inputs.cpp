@@ -4,8 +4,8 @@
 #include "passes/caustics/caustics_resolve.hpp"
 #include "passes/common/frame_keys.hpp"
 #include "passes/receivers/sun_shadow.hpp"
+#include "passes/water/camera_medium.hpp"
 #include "passes/water/scene_optics.hpp"
-#include "passes/water/water_volume_stencil.hpp"
 
 namespace vkw::passes {
 

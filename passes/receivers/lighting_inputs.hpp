@@ -1,5 +1,5 @@
 // What every pass that lights receivers reads besides the frame constants and the
-// scene optics: the stencil split's per-pixel camera medium, the caustic map and the sun
+// scene optics: the camera-medium split's per-pixel camera medium, the caustic map and the sun
 // shadow map, each only while its passes run. One place declares them, names the shader
 // variant that matches (shaders/CMakeLists.txt) and binds them (bindings 3 to 7).
 #pragma once
@@ -18,7 +18,7 @@ namespace vkw::passes {
 struct LightingInputs {
     fg::BufferHandle constants;                     // binding 0: the frame constants (vertex and fragment)
     fg::BufferHandle optics;                        // binding 1: the scene optics
-    std::optional<fg::ImageHandle> camera_medium;   // binding 3: the stencil split's mask
+    std::optional<fg::ImageHandle> camera_medium;   // binding 3: the camera-medium split's mask
     std::optional<fg::BufferHandle> caustic_frame;  // binding 4: the caustic map's light space
     std::optional<fg::ImageHandle> caustic_map;     // binding 5: the caustic irradiance map
     // Or the camera-space splats: binding 4 their receivers' view, binding 5 their irradiance.

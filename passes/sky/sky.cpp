@@ -2,7 +2,7 @@
 
 #include "engine/framegraph/pass_context.hpp"
 #include "passes/common/frame_keys.hpp"
-#include "passes/water/water_volume_stencil.hpp"
+#include "passes/water/camera_medium.hpp"
 
 #include <optional>
 #include <vector>
@@ -13,7 +13,7 @@ void add_sky_pass(fg::FrameGraph& graph) {
     struct Data {
         fg::BufferHandle constants;
         fg::ImageHandle hdr;
-        std::optional<fg::ImageHandle> camera_medium;  // the stencil split's, when it runs
+        std::optional<fg::ImageHandle> camera_medium;  // the camera-medium split's, when it runs
     };
     const auto& data = graph.add_pass<Data>(
         "sky", fg::PassKind::Graphics,

@@ -84,6 +84,7 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
             d.lighting.add_layout(desc.layout.bindings);
             desc.depth_test = true;
             desc.depth_write = true;
+            desc.topology = passes::WaterSurfaceReads::kTopology;
             // water_surface.frag's constants 1-4: the Fresnel form, the depth colour, the lookups.
             std::string key = d.surface.specialise(desc, desc.fragment_shader);
             const uint32_t reflection = lookup_code(d.reflection_view, lookups.reflection_method);

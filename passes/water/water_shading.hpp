@@ -4,7 +4,7 @@
 // below; with scene views (passes/scene_views/scene_view.hpp), reflected and refracted rays also meet
 // the receiver meshes. Draws the mesh of passes/water/water_surface.hpp and recovers the exact
 // surface per pixel from the wave table or the ocean's fields (water/surface_refinement.glsl);
-// reads, when the stencil split published it before, keys::kCameraMedium (per-pixel camera
+// reads, when the camera-medium split published it before, keys::kCameraMedium (per-pixel camera
 // medium); serves Effect::Water.
 #pragma once
 
@@ -34,7 +34,7 @@ struct WaterSurfaceShading {
     float blend_k = 0.5f;
     // Newton steps per pixel from the mesh to the exact surface; 0 shades the mesh as drawn.
     uint32_t refine_steps = 4;
-    // The per-frame camera medium (camera_eye_in_water): without the stencil split's per-pixel
+    // The per-frame camera medium (camera_eye_in_water): without the camera-medium split's per-pixel
     // mask every pixel shares it, and the shader is specialised for that side alone.
     bool eye_in_water = false;
 };

@@ -27,7 +27,6 @@ void WaterSurfaceReads::declare(fg::PassBuilder& builder, const WaterSurfaceBuff
 }
 
 std::string WaterSurfaceReads::specialise(GraphicsPipelineDesc& desc, const std::string& key) const {
-    desc.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
     desc.fragment_constants = {surface_model};
     static constexpr const char* kModelNames[] = {"/flat", "/sum", "/ocean"};
     return key + kModelNames[surface_model];
@@ -35,6 +34,10 @@ std::string WaterSurfaceReads::specialise(GraphicsPipelineDesc& desc, const std:
 
 void WaterSurfaceReads::add_layout(std::vector<VkDescriptorSetLayoutBinding>& layout) const {
     layout.push_back({2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr});
+    add_fragment_layout(layout);
+}
+
+void WaterSurfaceReads::add_fragment_layout(std::vector<VkDescriptorSetLayoutBinding>& layout) const {
     layout.push_back({11, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
     layout.push_back({12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
 }
@@ -42,6 +45,11 @@ void WaterSurfaceReads::add_layout(std::vector<VkDescriptorSetLayoutBinding>& la
 void WaterSurfaceReads::add_bindings(const fg::PassContext& context,
                                      std::vector<fg::DescriptorBinding>& bindings) const {
     bindings.push_back(context.storage_buffer(2, mesh));
+    add_fragment_bindings(context, bindings);
+}
+
+void WaterSurfaceReads::add_fragment_bindings(const fg::PassContext& context,
+                                              std::vector<fg::DescriptorBinding>& bindings) const {
     bindings.push_back(context.uniform_buffer(11, waves));
     bindings.push_back(context.storage_buffer(12, ocean_fields.value_or(mesh)));
 }

@@ -31,8 +31,9 @@ struct WaterSurfacePush {
     uint32_t wave_count = 0, ocean_n = 0;
     float nodes_per_metre = 0.0f;
     float mesh_sag = 0.0f;
+    float bottom_y = 0.0f, amplitude = 0.0f;  // the camera-medium pass's
 };
-static_assert(sizeof(WaterSurfacePush) == 72);
+static_assert(sizeof(WaterSurfacePush) == 80);
 
 // The mesh's and the surface's part, with `refine_steps` Newton steps per pixel.
 WaterSurfacePush water_surface_push(const WaterSurfaceBuffers& surface, uint32_t refine_steps);
@@ -49,8 +50,14 @@ struct WaterSurfaceReads {
 
     void declare(fg::PassBuilder& builder, const WaterSurfaceBuffers& surface);
     void add_layout(std::vector<VkDescriptorSetLayoutBinding>& layout) const;
-    // Sets the topology and the fragment stage's constant 0 (the caller may append more), and
-    // returns `key` with the model's name appended (one pipeline per model).
+    // The fragment stage's bindings alone (11 and 12), for passes that evaluate the surface
+    // without drawing the mesh.
+    void add_fragment_layout(std::vector<VkDescriptorSetLayoutBinding>& layout) const;
+    void add_fragment_bindings(const fg::PassContext& context, std::vector<fg::DescriptorBinding>& bindings) const;
+    // The mesh's topology, for the pipelines that draw it: one strip per row of cells.
+    static constexpr VkPrimitiveTopology kTopology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
+    // Sets the fragment stage's constant 0 (the caller may append more) and returns `key` with
+    // the model's name appended (one pipeline per model).
     std::string specialise(GraphicsPipelineDesc& desc, const std::string& key) const;
     void add_bindings(const fg::PassContext& context, std::vector<fg::DescriptorBinding>& bindings) const;
     // Draws the mesh's 2 M^2 triangles (one strip per row of cells, an instance each), the

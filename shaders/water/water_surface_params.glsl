@@ -1,4 +1,5 @@
-// The push constants of the water surface's draw (water_surface.vert and .frag), mirrored by
+// The push constants of the water surface's draw (water_surface.vert and .frag) and of the
+// camera-medium pass (camera_medium_mask.frag), mirrored by
 // WaterSurfacePush in passes/water/water_surface_draw.hpp. The choices that change which code
 // runs (the wave model, the Fresnel form, the lookups) are specialization constants instead.
 #ifndef VKWATER_WATER_SURFACE_PARAMS_GLSL
@@ -20,6 +21,8 @@ layout(push_constant) uniform Params {
     uint ocean_n;           // the ocean's nodes per side
     float nodes_per_metre;  // n / patch_size
     float mesh_sag;         // m: how far the mesh may lie from the surface (a cell's chord)
+    float bottom_y;         // the camera-medium pass: the water volume's bottom,
+    float amplitude;        // and a bound on |surface height - level|
 } params;
 
 #endif

@@ -23,7 +23,7 @@ class extreme_camera_height : public GpuTest, public ::testing::WithParamInterfa
 
 TEST_P(extreme_camera_height, OnAndNextToTheWaterPlaneStable) {
     // No closed form: the real-time renderer takes each pixel's medium at its ray's near-plane
-    // point (the stencil split), the reference at the eye, so within a near-plane distance (5 cm)
+    // point (the camera-medium split), the reference at the eye, so within a near-plane distance (5 cm)
     // of the surface they differ by design.
     const double y = GetParam();
     Renderer renderer(context());

@@ -100,7 +100,7 @@ void build_water_frame(FrameGraph& graph) {
     });
 }
 
-// From below the water: stencil split, godrays on, blur off by rule, reflection forced
+// From below the water: camera-medium split, godrays on, blur off by rule, reflection forced
 // off. Composite writes an imported swapchain image handed back for presenting.
 void build_underwater_frame(FrameGraph& graph) {
     const ImageHandle swapchain =

@@ -1,4 +1,4 @@
-// The stencil split (passes/water/water_volume_stencil.hpp) against a CPU classification of the
+// The camera-medium split (passes/water/camera_medium.hpp) against a CPU classification of the
 // same pixels, and the underwater_view rule's culled image against its forced-on image.
 //
 // CPU rule: the near-plane point P of pixel (x, y)'s ray (through the pixel centre, as
@@ -14,7 +14,7 @@
 #include "passes/frame/frame_needs.hpp"
 #include "passes/frame/renderer.hpp"
 #include "passes/present/readback.hpp"
-#include "passes/water/water_volume_stencil.hpp"
+#include "passes/water/camera_medium.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/reference/reference_renderer.hpp"
 
@@ -145,17 +145,17 @@ INSTANTIATE_TEST_SUITE_P(
 using UnderwaterViewRule = GpuTest;
 
 TEST_F(UnderwaterViewRule, CulledImageEqualsForcedOnImage) {
-    // Camera 3 m above flat water: no ray starts in the water, the rule culls the split and
+    // Camera 3 m above flat water: no ray starts in the water, the rule culls the camera-medium split and
     // the shading takes the per-frame medium; forced on, the all-air mask must give the
     // same image exactly.
     Renderer renderer(context());
     const RenderOptions options{kWidth, kHeight, true, fg::TimingMode::None};
     const RenderResult culled = renderer.render(builtin("calm.json"), options);
     const size_t pipelines_culled = renderer.pipelines().size();
-    ASSERT_FALSE(renderer.pipelines().contains("water volume stencil/water volume stencil/dynamic"));
+    ASSERT_FALSE(renderer.pipelines().contains("camera medium/camera medium/flat/dynamic"));
     const RenderResult forced_on = renderer.render(builtin("calm.json", {"effects.underwater_view.mode=on"}), options);
     EXPECT_GT(renderer.pipelines().size(), pipelines_culled);
-    EXPECT_TRUE(renderer.pipelines().contains("water volume stencil/water volume stencil/dynamic"));
+    EXPECT_TRUE(renderer.pipelines().contains("camera medium/camera medium/flat/dynamic"));
     EXPECT_EQ(culled.image.rgba, forced_on.image.rgba);
 }
 

@@ -110,9 +110,9 @@ TEST_F(ViewWindow, ScriptedRunResizesCrossesTheSurfaceAndTogglesCausticsWithoutV
     EXPECT_EQ(run.output.find("validation warning"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("(with validation)"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("frames: 120;"), std::string::npos) << run.output;
-    // Under the water the stencil split ran; with the caustics off for a while, their passes
+    // Under the water the camera-medium split ran; with the caustics off for a while, their passes
     // ran in fewer timing frames than the others.
-    EXPECT_NE(summary_line(run.output, "water volume stencil"), "") << run.output;
+    EXPECT_NE(summary_line(run.output, "camera medium"), "") << run.output;
     EXPECT_NE(summary_line(run.output, "caustic photons").find("(ran in"), std::string::npos) << run.output;
     EXPECT_EQ(summary_line(run.output, "sky").find("(ran in"), std::string::npos) << run.output;
     // Each screenshot has the window's size of its frame.

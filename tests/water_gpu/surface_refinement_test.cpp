@@ -82,6 +82,7 @@ std::vector<glm::vec4> probe_pixels(Context& context, const FrameConstants& cons
                 desc.layout.push_constant_bytes = sizeof(push);
                 desc.depth_test = true;
                 desc.depth_write = true;
+                desc.topology = passes::WaterSurfaceReads::kTopology;
                 const std::string key = d.surface.specialise(desc, "refinement probe");
                 const Pipeline& pipeline = context.pipeline(key, desc);
                 std::vector<fg::DescriptorBinding> bindings{context.uniform_buffer(0, d.constants)};
