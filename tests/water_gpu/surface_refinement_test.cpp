@@ -47,10 +47,10 @@ using CpuSurface = std::function<std::pair<SurfacePoint, VertexTolerance>(double
 
 // Draws the water's mesh with tests/water_refinement_probe.frag and reads back, per pixel, the
 // point it shows (w = 1 refined, 0.5 the mesh's point, 0 no water).
-std::vector<glm::vec4> probe_pixels(Context& context, const FrameConstants& constants,
+std::vector<glm::vec4> probe_pixels(Context& gpu, const FrameConstants& constants,
                                     const passes::WaterSurfaceInputs& inputs, uint32_t mesh_resolution) {
     const VkDeviceSize bytes = VkDeviceSize{kWidth} * kHeight * sizeof(glm::vec4);
-    Buffer readback(context, {bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "refinement probe readback");
+    Buffer readback(gpu, {bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "refinement probe readback");
     {
         fg::PipelineStore pipelines;
         fg::FrameGraph graph;
@@ -93,7 +93,7 @@ std::vector<glm::vec4> probe_pixels(Context& context, const FrameConstants& cons
             });
         passes::add_readback_pass(graph, data.points, readback.handle(), bytes);
         graph.compile(kWidth, kHeight);
-        fg::FrameExecutor executor(context, graph, pipelines, {.check_finite = true, .timing = fg::TimingMode::None});
+        fg::FrameExecutor executor(gpu, graph, pipelines, {.check_finite = true, .timing = fg::TimingMode::None});
         executor.execute();
     }
     std::vector<glm::vec4> pixels(kWidth * kHeight);
