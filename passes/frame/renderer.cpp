@@ -64,9 +64,7 @@ glm::dvec3 refracted_sun(const Scene& scene) {
 
 // The views' clip planes (the scene views, the camera-space caustics' receivers): the waves'
 // amplitude and a millimetre beyond the mean level.
-float scene_view_clip_margin(const Scene& scene) {
-    return static_cast<float>(water_bounds(scene).hi.y - scene.water->level + 1e-3);
-}
+float scene_view_clip_margin(double amplitude) { return static_cast<float>(amplitude + 1e-3); }
 
 bool casts_sun_shadows(const Scene& scene, const passes::ReceiverMeshes* receivers) {
     return receivers && !receivers->empty() && scene.sun.direction.y < 0.0;
@@ -74,12 +72,12 @@ bool casts_sun_shadows(const Scene& scene, const passes::ReceiverMeshes* receive
 // The scene views the water's reflected and refracted rays look the receiver meshes up in
 // (passes/scene_views/scene_view.hpp), as the frame's needs and the scene's methods ask.
 passes::WaterSceneLookups scene_lookups(fg::FrameGraph& graph, const Scene& scene,
-                                        const passes::ReceiverMeshes* receivers, bool caustic_layer) {
+                                        const passes::ReceiverMeshes* receivers, bool caustic_layer, double amplitude) {
     passes::WaterSceneLookups lookups;
     if (!receivers || receivers->empty()) return lookups;
     const EffectSettings& reflection = scene.effects[Effect::Reflection];
     const EffectSettings& refraction = scene.effects[Effect::Refraction];
-    const float clip_margin = scene_view_clip_margin(scene);
+    const float clip_margin = scene_view_clip_margin(amplitude);
     if (graph.needs().needs(Effect::Reflection)) {
         const bool mirrored = reflection.method == SceneLookup::Projective;
         lookups.reflection_view = passes::add_scene_view_pass(
@@ -106,6 +104,8 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
                        uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
                        const passes::ReceiverMeshes* receivers, const FrameOutput* output, VkBuffer caustic_readback) {
     const bool caustic_layer = caustic_readback != VK_NULL_HANDLE && !output;
+    // The waves' amplitude bound, once: for the FFT ocean it builds the CPU surface.
+    const double amplitude = scene.water ? water_bounds(scene).hi.y - scene.water->level : 0.0;
     passes::add_frame_constants_upload(graph, constants);
     passes::add_scene_optics_pass(graph);
     // The sun shadow map first: the caustic photons are traced against it.
@@ -134,8 +134,7 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
         // Without it (culled: no ray can start in the water) the shading falls back to the
         // per-frame camera medium of the frame constants.
         if (graph.needs().needs(Effect::UnderwaterView)) {
-            passes::add_camera_medium_pass(graph, *water_buffers, water_bottom(scene),
-                                           water_bounds(scene).hi.y - water.level);
+            passes::add_camera_medium_pass(graph, *water_buffers, water_bottom(scene), amplitude);
         }
         if (graph.needs().needs(Effect::SurfaceCaustics)) {
             // The sun under the water becomes the caustic map; the flat stand-in goes.
@@ -144,7 +143,7 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
             caustics.grid_resolution = water.grid_resolution;
             caustics.water_level = water.level;
             caustics.half_extent = water.half_extent;
-            caustics.max_amplitude = water_bounds(scene).hi.y - water.level;
+            caustics.max_amplitude = amplitude;
             caustics.sun_direction = scene.sun.direction;
             caustics.sun_irradiance = scene.sun.irradiance;
             caustics.ior = water.ior;
@@ -160,7 +159,7 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
                 // are left out: nothing reads them).
                 const passes::CameraCausticExtent extent = passes::camera_caustic_extent(width, height);
                 const fg::ImageHandle view =
-                    passes::add_caustic_receivers_pass(graph, receivers, extent, scene_view_clip_margin(scene));
+                    passes::add_caustic_receivers_pass(graph, receivers, extent, scene_view_clip_margin(amplitude));
                 graph.blackboard().put(keys::kCameraCaustics,
                                        passes::add_caustic_camera_splat_passes(graph, caustics, view, extent,
                                                                                sun_shadow ? &*sun_shadow : nullptr));
@@ -184,15 +183,15 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
     passes::add_floor_pass(graph, caustic_layer);
     if (receivers && !receivers->empty()) passes::add_receivers_pass(graph, *receivers);
     if (surface) {
-        passes::add_water_shading_pass(graph, *water_buffers, scene_lookups(graph, scene, receivers, caustic_layer),
+        passes::add_water_shading_pass(graph, *water_buffers,
+                                       scene_lookups(graph, scene, receivers, caustic_layer, amplitude),
                                        passes::water_surface_shading(scene));
     }
     // Godrays only with a decision, as the frame constants' analytic in-scatter switch has it.
     const fg::EffectDecision* godrays = graph.needs().find(Effect::VolumeCaustics);
     if (surface && godrays && godrays->needed) {
         passes::add_godray_passes(
-            graph, {*surface, scene.water->grid_resolution, water_bounds(scene).hi.y - scene.water->level,
-                    scene.effects.godrays, width, height});
+            graph, {*surface, scene.water->grid_resolution, amplitude, scene.effects.godrays, width, height});
     }
     if (output) {
         output->add_passes(graph, graph.blackboard().get(keys::kHdrColor));
