@@ -250,6 +250,7 @@ void Context::create_device(bool swapchain) {
     VkPhysicalDeviceVulkan12Features enable12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
     enable12.pNext = &enable13;
     enable12.shaderBufferInt64Atomics = supported12.shaderBufferInt64Atomics;
+    enable12.shaderSharedInt64Atomics = supported12.shaderSharedInt64Atomics;
     enable12.hostQueryReset = supported12.hostQueryReset;
     VkPhysicalDeviceFeatures2 enable{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     enable.pNext = &enable12;
@@ -262,6 +263,7 @@ void Context::create_device(bool swapchain) {
     features_.shader_float64 = supported.features.shaderFloat64;
     features_.shader_int64 = supported.features.shaderInt64;
     features_.buffer_int64_atomics = supported12.shaderBufferInt64Atomics;
+    features_.shared_int64_atomics = supported12.shaderSharedInt64Atomics;
     features_.wide_lines = supported.features.wideLines;
     features_.fill_mode_non_solid = supported.features.fillModeNonSolid;
 

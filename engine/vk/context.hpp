@@ -30,6 +30,7 @@ struct DeviceFeatures {
     bool shader_float64 = false;
     bool shader_int64 = false;
     bool buffer_int64_atomics = false;
+    bool shared_int64_atomics = false;  // the caustic photons' workgroup tile (caustics_photons.hpp)
     bool wide_lines = false;
     bool fill_mode_non_solid = false;
 };

@@ -13,8 +13,9 @@
 namespace vkwbench {
 
 enum class ScatterKind {
-    FixedPoint64,  // uint64 atomicAdd into a buffer laid out as the caustic flux (caustics_bands.hpp)
-    FloatCas32,    // float adds by an atomicCompSwap loop on uint32 bits, three floats per texel
+    FixedPoint64,      // uint64 atomicAdd into a buffer laid out as the caustic flux (caustics_bands.hpp)
+    FixedPoint64Tile,  // the same, through a workgroup tile in shared memory (needs shaderSharedInt64Atomics)
+    FloatCas32,        // float adds by an atomicCompSwap loop on uint32 bits, three floats per texel
 };
 
 // Mirrors the push constants of shaders/caustics/bench/caustic_scatter.glsl.
@@ -31,9 +32,13 @@ ScatterPush scatter_push(uint32_t resolution, const vkw::passes::CausticMapFrame
 
 std::string scatter_pass_name(ScatterKind kind);
 
+// The bytes of a kind's target for a map of frame.width x frame.height texels.
+VkDeviceSize scatter_target_bytes(ScatterKind kind, const vkw::passes::CausticMapFrame& frame);
+
 // Adds the zeroing of the target (its own pass) and the scatter pass for `resolution`^2 photons
 // into a map of frame.width x frame.height texels (the photon pass's map for the same inputs);
-// returns the target. Throws vkw::InternalError when the target exceeds one storage-buffer binding.
+// returns the target. Throws vkw::InternalError when the target exceeds one storage-buffer binding,
+// or for the tile kind on a device without shared-memory int64 atomics.
 vkw::fg::BufferHandle add_caustic_scatter_pass(vkw::fg::FrameGraph& graph, ScatterKind kind, uint32_t resolution,
                                                const vkw::passes::CausticMapFrame& frame);
 

@@ -6,9 +6,11 @@
 //     llvmpipe's shader variants); photons per second;
 //  2. scatter-only kernels with the photon pass's 12 atomics per photon into a target of the same
 //     size, timed the same way in the same frames: int64 fixed point (the photon pass's
-//     accumulation) and 32-bit float by a compare-and-swap loop; the ratio scatter / (trace +
-//     splat) (the goal: at least 0.5, so that
-//     tracing costs no more than the deposit it feeds);
+//     accumulation), the same through a workgroup tile in shared memory (where the device has
+//     shaderSharedInt64Atomics; its map read back and compared with the global kernel's, which it
+//     must equal bit for bit), and 32-bit float by a compare-and-swap loop; the ratio scatter /
+//     (trace + splat) (the goal: at least 0.5, so that tracing costs no more than the deposit it
+//     feeds);
 //  3. a 2-thread C++ scatter of the same photons (private maps + reduction; shared map with
 //     atomic fetch_add), median of --runs;
 //  4. where the device has shaderBufferFloat32AtomicAdd (vkw::Context does not enable it): the
@@ -16,14 +18,17 @@
 //     (native_scatter_device.hpp), timed the same way.
 // Scene: a sine of slope 0.3 (lambda 2 m, 20 degrees from x) on water 8 m square, the floor 2 m
 // down, the sun (0.5, -1, 0.2) normalised, sigma_t (0.3, 0.1, 0.05) /m.
-// Prints Markdown tables; nothing is asserted (speed is measured, not tested). With --validate
-// the Vulkan validation layer runs too and any message makes the exit status 1 (the smoke test).
+// Prints Markdown tables; no time is asserted (speed is measured, not tested). The exit status is
+// 1 when the tile kernel's map differs from the global one's, and with --validate (the smoke test,
+// with the validation layer) for any validation message.
 #include "engine/core/errors.hpp"
 #include "engine/framegraph/executor.hpp"
 #include "engine/vk/context.hpp"
+#include "engine/vk/resources.hpp"
 #include "engine/vk/validation_log.hpp"
 #include "passes/caustics/caustics_photons.hpp"
 #include "passes/caustics/caustics_resolve.hpp"
+#include "passes/present/readback.hpp"
 #include "passes/water/water_surface.hpp"
 #include "tools/benchmarks/caustic_scatter_passes.hpp"
 #include "tools/benchmarks/cpu_scatter.hpp"
@@ -32,6 +37,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -141,6 +147,8 @@ struct GridFigures {
     std::map<std::string, double> pass_ms;  // median per pass
     double cpu_private_ms = 0.0, cpu_atomic_ms = 0.0;
     vkwbench::NativeScatterTimes native;  // zero when the device has no native float atomics
+    bool tile_measured = false;           // the device has shared-memory int64 atomics
+    bool tile_identical = false;          // and the tile kernel's map equals the global kernel's
 };
 
 GridFigures measure(Context& context, uint32_t grid, int runs, bool native_float, CausticKernel kernel) {
@@ -154,8 +162,20 @@ GridFigures measure(Context& context, uint32_t grid, int runs, bool native_float
     const passes::CausticMap map =
         passes::add_caustic_resolve_pass(graph, passes::add_caustic_photon_pass(graph, in), in);
     graph.request_output(map.irradiance);
-    vkwbench::add_caustic_scatter_pass(graph, vkwbench::ScatterKind::FixedPoint64, grid, frame);
+    const fg::BufferHandle global_target =
+        vkwbench::add_caustic_scatter_pass(graph, vkwbench::ScatterKind::FixedPoint64, grid, frame);
     vkwbench::add_caustic_scatter_pass(graph, vkwbench::ScatterKind::FloatCas32, grid, frame);
+    // The tile kernel and the global one, read back after the last frame to compare.
+    const bool tile = context.features().shared_int64_atomics;
+    const VkDeviceSize target_bytes = vkwbench::scatter_target_bytes(vkwbench::ScatterKind::FixedPoint64, frame);
+    Buffer global_host(context, {target_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "global scatter readback");
+    Buffer tile_host(context, {target_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "tile scatter readback");
+    passes::add_readback_pass(graph, global_target, global_host.handle(), target_bytes, "global scatter readback");
+    if (tile) {
+        const fg::BufferHandle tile_target =
+            vkwbench::add_caustic_scatter_pass(graph, vkwbench::ScatterKind::FixedPoint64Tile, grid, frame);
+        passes::add_readback_pass(graph, tile_target, tile_host.handle(), target_bytes, "tile scatter readback");
+    }
     graph.compile(1, 1);
     fg::FrameExecutor executor(context, graph, pipelines, {.check_finite = false, .timing = fg::TimingMode::Fences});
 
@@ -168,6 +188,8 @@ GridFigures measure(Context& context, uint32_t grid, int runs, bool native_float
     GridFigures figures;
     figures.grid = grid;
     for (const auto& [pass, ms] : times) figures.pass_ms[pass] = median(ms);
+    figures.tile_measured = tile;
+    figures.tile_identical = tile && std::memcmp(global_host.mapped(), tile_host.mapped(), target_bytes) == 0;
 
     const vkwbench::ScatterPush push = vkwbench::scatter_push(grid, frame);
     std::vector<double> private_ms, atomic_ms;
@@ -186,6 +208,7 @@ GridFigures measure(Context& context, uint32_t grid, int runs, bool native_float
 void print_tables(const std::vector<GridFigures>& all, const std::string& native_missing) {
     const std::string fixed = vkwbench::scatter_pass_name(vkwbench::ScatterKind::FixedPoint64);
     const std::string cas = vkwbench::scatter_pass_name(vkwbench::ScatterKind::FloatCas32);
+    const std::string tile = vkwbench::scatter_pass_name(vkwbench::ScatterKind::FixedPoint64Tile);
     std::printf(
         "\nCaustic passes (ms, median):\n\n"
         "| grid | photons | flux clear | photons (trace + splat) | resolve | photons/s |\n"
@@ -207,6 +230,19 @@ void print_tables(const std::vector<GridFigures>& all, const std::string& native
         std::printf("| %u^2 | %.2f | %.2f | %.2f | %.0f M/s | %.2f | %.0f M/s | %.2f (%.0f M/s) | %.2f (%.0f M/s) |\n",
                     f.grid, trace, int64, int64 / trace, adds / int64 / 1e3, f32, adds / f32 / 1e3, f.cpu_private_ms,
                     adds / f.cpu_private_ms / 1e3, f.cpu_atomic_ms, adds / f.cpu_atomic_ms / 1e3);
+    }
+    std::printf(
+        "\nThe int64 scatter through a workgroup tile in shared memory (the same map, bit for bit; ms, median):\n\n"
+        "| grid | int64 scatter | int64 tile scatter | tile / global time | maps equal |\n"
+        "| --- | --- | --- | --- | --- |\n");
+    for (const GridFigures& f : all) {
+        if (!f.tile_measured) {
+            std::printf("| %u^2 | %.2f | not measured (no shaderSharedInt64Atomics) | - | - |\n", f.grid,
+                        f.pass_ms.at(fixed));
+            continue;
+        }
+        std::printf("| %u^2 | %.2f | %.2f | %.2f | %s |\n", f.grid, f.pass_ms.at(fixed), f.pass_ms.at(tile),
+                    f.pass_ms.at(tile) / f.pass_ms.at(fixed), f.tile_identical ? "yes" : "NO");
     }
     if (!native_missing.empty()) {
         std::printf("\nNative float atomics: not measured (%s).\n", native_missing.c_str());
@@ -251,6 +287,13 @@ int main(int argc, char** argv) {
             }
         }
         print_tables(all, native_missing);
+        for (const GridFigures& f : all) {
+            if (f.tile_measured && !f.tile_identical) {
+                std::fprintf(stderr, "caustics_bench: grid %u: the tile kernel's map differs from the global one's\n",
+                             f.grid);
+                return 1;
+            }
+        }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "caustics_bench: %s\n", e.what());
         return 1;
