@@ -12,6 +12,14 @@ void CausticLayerTarget::load(fg::PassBuilder& builder, const fg::Blackboard& bl
     }
 }
 
+void CausticLayerTarget::create_or_load(fg::PassBuilder& builder, const fg::Blackboard& blackboard, bool wanted) {
+    if (blackboard.has(keys::kCausticLayer)) {
+        load(builder, blackboard);
+    } else if (wanted) {
+        create(builder, "caustic layer", {VK_FORMAT_R32G32B32A32_SFLOAT});
+    }
+}
+
 void CausticLayerTarget::publish(fg::Blackboard& blackboard) const {
     if (image) blackboard.put(keys::kCausticLayer, *image);
 }

@@ -4,9 +4,9 @@
 // so that the caustics can be compared alone. Only when asked for (RenderOptions::caustic_layer).
 // The passes that draw a pixel's receiver then write it as a second colour attachment, after
 // their HDR colour, with their shaders' "_layer" variants (VKWATER_CAUSTIC_LAYER):
-// - the floor creates it, cleared to 0 (the sky, receivers in the air and the surface seen from
-//   below keep 0, as in the reference);
-// - the receiver meshes and the water write their pixels over it;
+// - the first of the water and the floor creates it, cleared to 0 (the sky, receivers in the air
+//   and the surface seen from below keep 0, as in the reference);
+// - the other, and the receiver meshes, write their pixels over it;
 // - the refraction scene view keeps a layer of its own (keys::kRefractionViewCaustic), which the
 //   water reads at the texel where a refracted ray meets a mesh.
 #pragma once
@@ -27,6 +27,8 @@ struct CausticLayerTarget {
     // Declares the frame's layer (keys::kCausticLayer), if it has one, as this pass's next
     // colour attachment, loading what the passes before wrote.
     void load(fg::PassBuilder& builder, const fg::Blackboard& blackboard);
+    // Loads the frame's layer if a pass before created it, else creates it when `wanted`.
+    void create_or_load(fg::PassBuilder& builder, const fg::Blackboard& blackboard, bool wanted);
     // Publishes the written version under keys::kCausticLayer.
     void publish(fg::Blackboard& blackboard) const;
     // The shader variant's suffix: "_layer" while the layer is written, else "".

@@ -180,13 +180,16 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
     }
     // The sky after the camera-medium split: a ray from the water that meets nothing sees nothing.
     passes::add_sky_pass(graph);
-    passes::add_floor_pass(graph, caustic_layer);
-    if (receivers && !receivers->empty()) passes::add_receivers_pass(graph, *receivers);
+    // The water before the floor and the receiver meshes: none of them blends, so the depth test
+    // alone decides each pixel, and the floor's pixels behind the surface (all of pool's) fail it
+    // before their fragments are shaded.
     if (surface) {
         passes::add_water_shading_pass(graph, *water_buffers,
                                        scene_lookups(graph, scene, receivers, caustic_layer, amplitude),
-                                       passes::water_surface_shading(scene));
+                                       passes::water_surface_shading(scene), caustic_layer);
     }
+    passes::add_floor_pass(graph, caustic_layer);
+    if (receivers && !receivers->empty()) passes::add_receivers_pass(graph, *receivers);
     // Godrays only with a decision, as the frame constants' analytic in-scatter switch has it.
     const fg::EffectDecision* godrays = graph.needs().find(Effect::VolumeCaustics);
     if (surface && godrays && godrays->needed) {

@@ -3,6 +3,7 @@
 #include "engine/framegraph/pass_context.hpp"
 #include "passes/caustics/caustic_layer.hpp"
 #include "passes/common/frame_keys.hpp"
+#include "passes/common/scene_depth.hpp"
 #include "passes/receivers/lighting_inputs.hpp"
 #include "passes/receivers/receiver_draws.hpp"
 
@@ -19,9 +20,8 @@ void add_floor_pass(fg::FrameGraph& graph, bool caustic_layer) {
         "floor", fg::PassKind::Graphics,
         [&](fg::PassBuilder& builder, Data& d) {
             d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
-            if (caustic_layer) d.layer.create(builder, "caustic layer", {VK_FORMAT_R32G32B32A32_SFLOAT});
-            d.depth = builder.create_image("scene depth", {VK_FORMAT_D32_SFLOAT});
-            d.depth = builder.depth_stencil_attachment(d.depth, fg::LoadOp::Clear, {.depth = 0.0f});
+            d.layer.create_or_load(builder, graph.blackboard(), caustic_layer);
+            d.depth = scene_depth_attachment(builder, graph.blackboard());
             d.lighting.declare(builder, graph.blackboard());
         },
         [](const Data& d, fg::PassContext& context) {

@@ -5,6 +5,7 @@
 #include "passes/caustics/caustic_layer.hpp"
 #include "passes/common/frame_constants.hpp"
 #include "passes/common/frame_keys.hpp"
+#include "passes/common/scene_depth.hpp"
 #include "passes/receivers/lighting_inputs.hpp"
 #include "passes/scene_views/scene_view.hpp"
 #include "passes/water/water_surface_draw.hpp"
@@ -34,7 +35,7 @@ WaterSurfaceShading water_surface_shading(const Scene& scene) {
 }
 
 void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& surface, const WaterSceneLookups& lookups,
-                            const WaterSurfaceShading& shading) {
+                            const WaterSurfaceShading& shading, bool caustic_layer) {
     struct Data {
         WaterSurfaceReads surface;
         fg::ImageHandle hdr, depth;
@@ -51,8 +52,8 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
             d.surface.declare(builder, surface);
             constexpr VkPipelineStageFlags2 fragment = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
             d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
-            d.depth = builder.depth_stencil_attachment(graph.blackboard().get(keys::kSceneDepth), fg::LoadOp::Load);
-            d.layer.load(builder, graph.blackboard());
+            d.depth = scene_depth_attachment(builder, graph.blackboard());
+            d.layer.create_or_load(builder, graph.blackboard(), caustic_layer);
             d.lighting.declare(builder, graph.blackboard());
             if (lookups.reflection_view) d.reflection_view = builder.sample(*lookups.reflection_view, fragment);
             if (lookups.refraction_view) d.refraction_view = builder.sample(*lookups.refraction_view, fragment);

@@ -41,7 +41,11 @@ struct WaterSurfaceShading {
 // The scene's effects.water, and its per-frame camera medium.
 WaterSurfaceShading water_surface_shading(const Scene& scene);
 
+// caustic_layer: write the caustic layer (passes/caustics/caustic_layer.hpp), creating it when no
+// pass before did. The scene depth too is created here when the water draws first
+// (passes/common/scene_depth.hpp).
 void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& surface,
-                            const WaterSceneLookups& lookups = {}, const WaterSurfaceShading& shading = {});
+                            const WaterSceneLookups& lookups = {}, const WaterSurfaceShading& shading = {},
+                            bool caustic_layer = false);
 
 }  // namespace vkw::passes
