@@ -8,6 +8,7 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStdIO.h>
 #include <OpenEXR/ImfTestFile.h>
 
 #include <algorithm>
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "engine/core/errors.hpp"
+#include "engine/image/checked_write.hpp"
 #include "engine/image/file_paths.hpp"
 
 namespace vkw {
@@ -121,13 +123,20 @@ ExrWriteReport write_exr(const std::filesystem::path& path, const ImageRGBA32F& 
         add_interleaved_slices(frame_buffer, plane.prefix, plane.channels, type, base, window, 0.0);
     }
 
+    // Encoded in memory, then written whole (checked_write.hpp): no partial file under the name.
+    std::string bytes;
     try {
-        Imf::OutputFile file(path.c_str(), header);
-        file.setFrameBuffer(frame_buffer);
-        file.writePixels(image.height);
+        Imf::StdOSStream stream;
+        {
+            Imf::OutputFile file(stream, header);
+            file.setFrameBuffer(frame_buffer);
+            file.writePixels(image.height);
+        }  // the file's destructor writes the line offset table
+        bytes = stream.str();
     } catch (const std::exception& e) {  // Iex::BaseExc derives from std::exception
         throw UserError("cannot write " + quoted_path(path) + ": " + one_line(e.what()));
     }
+    write_file_checked(path, bytes);
     return report;
 }
 

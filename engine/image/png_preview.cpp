@@ -5,14 +5,13 @@
 #include <stb_image_write.h>
 
 #include <array>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <string>
 #include <vector>
 
 #include "engine/core/errors.hpp"
+#include "engine/image/checked_write.hpp"
 #include "engine/image/file_paths.hpp"
 #include "engine/image/tone_curve.hpp"
 
@@ -47,11 +46,15 @@ std::size_t write_png_preview(const std::filesystem::path& path, const ImageRGBA
 
     // Row 0 is the top row in both ImageRGBA32F and PNG, so no flip.
     const int row_bytes = image.width * 3;
-    errno = 0;  // stb reports only success/failure; errno from its fopen/fwrite says why
-    if (stbi_write_png(path.c_str(), image.width, image.height, 3, rgb8.data(), row_bytes) == 0) {
-        const std::string why = errno != 0 ? std::strerror(errno) : "stbi_write_png failed";
-        throw UserError("cannot write " + quoted_path(path) + ": " + why);
+    // Encoded in memory, then written whole (checked_write.hpp): no partial file under the name.
+    std::string bytes;
+    auto append = [](void* context, void* data, int size) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
+    };
+    if (stbi_write_png_to_func(append, &bytes, image.width, image.height, 3, rgb8.data(), row_bytes) == 0) {
+        throw UserError("cannot write " + quoted_path(path) + ": stbi_write_png_to_func failed to encode");
     }
+    write_file_checked(path, bytes);
     return nonfinite_pixels;
 }
 

@@ -5,6 +5,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -114,6 +115,28 @@ TEST(cli, MalformedJsonNamesLineAndColumn) {
 TEST(cli, UnwritableOutputPath) {
     expect_clean_failure(run_vkwater("render " + kPool + " --out /nonexistent-dir/out.exr"), 1,
                          "/nonexistent-dir/out.exr");
+}
+
+// A write that fails at its end (a full disk: /dev/full fails every write with ENOSPC) is a user
+// error naming the path, not a success.
+TEST(cli, AFailedWriteIsAUserError) {
+    expect_clean_failure(run_vkwater("render " + kPool + " --out /dev/full --width 64 --height 48"), 1, "/dev/full");
+}
+
+// An interrupted or failed render never leaves a partial file under the output's name: the
+// image is written to a temporary file in the same folder and renamed, so the folder holds the
+// image alone.
+TEST(cli, RenderLeavesOnlyTheFinishedImage) {
+    const fs::path folder = scratch("whole_file_only");
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    const CommandRun run =
+        run_vkwater("render " + kPool + " --out " + (folder / "x.exr").string() + " --width 64 --height 48 --png");
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    std::vector<std::string> names;
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder)) names.push_back(entry.path().filename());
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(names, (std::vector<std::string>{"x.exr", "x.png"}));
 }
 
 TEST(cli, UnknownFlag) {

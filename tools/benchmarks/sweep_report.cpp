@@ -1,10 +1,10 @@
 #include "tools/benchmarks/sweep_report.hpp"
 
 #include "engine/core/errors.hpp"
+#include "engine/image/checked_write.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <sstream>
 
@@ -23,8 +23,7 @@ std::vector<size_t> pareto_front(const std::vector<SweepRow>& rows) {
 }
 
 void write_csv(const std::filesystem::path& file, const std::vector<SweepRow>& rows, int downsample_factor) {
-    std::ofstream out(file);
-    if (!out) throw UserError("cannot write '" + file.string() + "'");
+    std::ostringstream out;
     const std::string factor = std::to_string(downsample_factor) + "x";
     out << "setting,median_ms,spread_ms,rel_mse,flip,bias,rel_mse_" << factor << ",flip_" << factor
         << ",caustic_rel_mse,memory_bytes\n";
@@ -39,6 +38,7 @@ void write_csv(const std::filesystem::path& file, const std::vector<SweepRow>& r
         }
         out << ',' << row.memory_bytes << '\n';
     }
+    write_file_checked(file, out.str());
 }
 
 namespace {
@@ -138,9 +138,7 @@ void write_svg(const std::filesystem::path& file, const std::string& title, cons
             << (on_front ? "#d33" : "#000") << "'>" << i + 1 << ". " << xml_text(rows[i].setting) << "</text>\n";
     }
     svg << "</svg>\n";
-    std::ofstream out(file);
-    if (!out) throw UserError("cannot write '" + file.string() + "'");
-    out << svg.str();
+    write_file_checked(file, svg.str());
 }
 
 }  // namespace vkw::bench

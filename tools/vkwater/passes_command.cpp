@@ -3,6 +3,7 @@
 // writes, the culled passes and why, and transient memory before/after aliasing.
 #include "engine/core/errors.hpp"
 #include "engine/framegraph/frame_graph.hpp"
+#include "engine/image/checked_write.hpp"
 #include "engine/image/file_paths.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
@@ -14,7 +15,6 @@
 #include "tools/vkwater/commands.hpp"
 
 #include <cstdio>
-#include <fstream>
 #include <memory>
 
 namespace vkw::cli {
@@ -55,7 +55,7 @@ int run_passes(const PassesArgs& args) {
     if (args.barriers) std::printf("barriers:\n%s", graph.dump_barriers().c_str());
     if (!args.dot.empty()) {
         require_writable_file_path(args.dot);
-        std::ofstream(args.dot) << graph.to_dot();
+        write_file_checked(args.dot, graph.to_dot());
         std::printf("wrote %s\n", args.dot.c_str());
     }
     return kExitOk;

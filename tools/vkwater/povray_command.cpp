@@ -2,13 +2,13 @@
 // irradiance on a window of the floor (tools/povray/povray_scene.hpp), for checking the
 // reference renderer's floor caustics against an independent photon tracer (tests/povray).
 #include "engine/core/errors.hpp"
+#include "engine/image/checked_write.hpp"
 #include "engine/image/file_paths.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tools/povray/povray_scene.hpp"
 #include "tools/vkwater/commands.hpp"
 
 #include <cstdio>
-#include <fstream>
 #include <memory>
 
 namespace vkw::cli {
@@ -31,10 +31,7 @@ int run_povray(const PovrayArgs& args) {
                          ? pov::lit_floor_window(scene, args.side)
                          : pov::FloorWindow{args.window[0], args.window[1], args.window[2], args.window[3]};
     const std::string text = pov::povray_floor_scene(scene, options);
-    std::ofstream file(args.out, std::ios::binary);
-    file << text;
-    file.close();
-    if (!file) throw UserError("cannot write " + quoted_path(args.out) + ": the write failed");
+    write_file_checked(args.out, text);
     const pov::FloorWindow& w = options.window;
     std::printf("wrote %s: the floor's sun irradiance over x %g..%g m, z %g..%g m (W m^-2 per pixel)\n",
                 args.out.c_str(), w.x0, w.x1, w.z0, w.z1);

@@ -1,6 +1,7 @@
 // vkwater reference SCENE --out ref.exr: the CPU reference renderer of the model
 // (docs/model.md section 1), for measuring the real-time renderer's error.
 #include "engine/core/errors.hpp"
+#include "engine/image/checked_write.hpp"
 #include "engine/image/exr_io.hpp"
 #include "engine/image/file_paths.hpp"
 #include "engine/scene/scene_loader.hpp"
@@ -68,7 +69,7 @@ void record_in_manifest(const ReferenceArgs& args, double seconds, const ref::Re
         entry["surface_slope_error_bound"] = report.surface_slope_error_bound;
     }
     manifest[scene.filename().string()] = std::move(entry);
-    std::ofstream(args.manifest) << manifest.dump(2) << "\n";
+    write_file_checked(args.manifest, manifest.dump(2) + "\n");
 }
 
 int run_reference(const ReferenceArgs& args) {
