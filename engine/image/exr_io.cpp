@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "engine/core/errors.hpp"
+#include "engine/core/message_text.hpp"
 #include "engine/image/checked_write.hpp"
 #include "engine/image/file_paths.hpp"
 
@@ -35,12 +36,6 @@ constexpr std::array<const char*, 3> kRgb = {"R", "G", "B"};
 
 // Largest finite half; anything bigger would become infinity when converted.
 constexpr float kHalfMax = 65504.0f;
-
-// OpenEXR messages can span lines; our errors are one line each.
-std::string one_line(std::string text) {
-    std::replace(text.begin(), text.end(), '\n', ' ');
-    return text;
-}
 
 std::size_t bytes_per_value(Imf::PixelType type) { return type == Imf::HALF ? sizeof(half) : sizeof(float); }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "engine/core/errors.hpp"
+#include "engine/core/message_text.hpp"
 
 namespace vkw {
 namespace {
@@ -14,13 +15,6 @@ bool paths_overlap(std::string_view a, std::string_view b) {
     if (a.size() > b.size()) std::swap(a, b);
     if (!b.starts_with(a)) return false;
     return a.size() == b.size() || b[a.size()] == '.' || b[a.size()] == '[';
-}
-
-// A message must stay on one line: the CLI prints it as is and tests match it by substring.
-std::string one_line(std::string text) {
-    std::replace_if(
-        text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
-    return text;
 }
 
 }  // namespace
@@ -39,7 +33,7 @@ void ErrorContext::fail(std::string_view where, std::string_view what, std::stri
     const auto note = std::find_if(overrides_.rbegin(), overrides_.rend(), [&](const OverrideNote& n) {
         return !where.empty() && paths_overlap(n.path, where);
     });
-    if (note != overrides_.rend()) message += " [from override '" + note->text + "']";
+    if (note != overrides_.rend()) message += " [from override '" + shortened_input(note->text, 80) + "']";
     throw UserError(one_line(std::move(message)));
 }
 

@@ -17,6 +17,10 @@ using json = nlohmann::json;
 // Long values are cut so that a message stays a readable single line.
 constexpr std::size_t kMaxShownChars = 40;
 
+// A value as JSON text for a message: a string that is not UTF-8 (a --set value can hold any
+// bytes) shows U+FFFD where its bad bytes were, instead of making dump() throw.
+std::string dumped(const json& value) { return value.dump(-1, ' ', false, json::error_handler_t::replace); }
+
 std::string shortened(std::string text) {
     if (text.size() > kMaxShownChars) text = text.substr(0, kMaxShownChars) + "...";
     return text;
@@ -58,10 +62,10 @@ std::string one_of(const std::vector<std::string_view>& names) {
 std::string describe_value(const json& value) {
     if (value.is_array()) {
         const char* noun = value.size() == 1 ? " element " : " elements ";
-        return "array of " + std::to_string(value.size()) + noun + shortened(value.dump());
+        return "array of " + std::to_string(value.size()) + noun + shortened(dumped(value));
     }
     if (value.is_null()) return "null";
-    return std::string(value.type_name()) + " " + shortened(value.dump());
+    return std::string(value.type_name()) + " " + shortened(dumped(value));
 }
 
 FieldReader::FieldReader(const json& object, std::string path, const ErrorContext& errors)

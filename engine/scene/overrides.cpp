@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "engine/core/message_text.hpp"
 #include "engine/scene/field_reader.hpp"
 
 namespace vkw {
@@ -67,7 +68,7 @@ std::string step_path(const std::string& parent, const Step& step) {
 }
 
 void apply_one(json& root, const std::string& text, ErrorContext& errors) {
-    const std::string where = "override '" + text + "'";
+    const std::string where = "override '" + shortened_input(text, 80) + "'";
     const std::size_t equals = text.find('=');
     if (equals == std::string::npos) errors.fail(where, "no '=' in the override", kSyntax);
     const auto steps = split_key(trimmed(std::string_view(text).substr(0, equals)));
