@@ -1,6 +1,8 @@
 // JSON text to nlohmann::json with positioned, path-named errors (see json_text.hpp).
 #include "engine/scene/json_text.hpp"
 
+#include <algorithm>
+
 #include <string>
 #include <vector>
 
@@ -11,10 +13,6 @@ using json = nlohmann::json;
 
 // nlohmann's "number overflow" exception id: a number literal beyond the double range.
 constexpr int kNumberOverflowId = 406;
-
-// Far deeper than any scene needs; nlohmann's dump() and comparisons recurse, so a hostile
-// "[[[[...]]]]" must be refused here rather than overflow the stack later.
-constexpr std::size_t kMaxNesting = 64;
 
 std::string describe_position(std::string_view text, std::size_t offset) {
     const TextPosition at = text_position(text, offset);
@@ -109,9 +107,9 @@ private:
     }
 
     bool open(json container) {
-        if (frames_.size() >= kMaxNesting) {
+        if (frames_.size() >= kMaxJsonNesting) {
             errors_.fail(path_through(frames_.size()), "nested too deeply",
-                         "at most " + std::to_string(kMaxNesting) + " levels of objects and arrays");
+                         "at most " + std::to_string(kMaxJsonNesting) + " levels of objects and arrays");
         }
         json* node = slot();
         *node = std::move(container);
@@ -161,6 +159,31 @@ TextPosition text_position(std::string_view text, std::size_t offset) {
         }
     }
     return at;
+}
+
+std::size_t json_nesting_depth(std::string_view text) {
+    std::size_t depth = 0, deepest = 0;
+    bool in_string = false, escaped = false;
+    for (const char c : text) {
+        if (in_string) {
+            if (escaped) {
+                escaped = false;
+            } else if (c == '\\') {
+                escaped = true;
+            } else if (c == '"') {
+                in_string = false;
+            }
+            continue;
+        }
+        if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            deepest = std::max(deepest, ++depth);
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            --depth;
+        }
+    }
+    return deepest;
 }
 
 nlohmann::json parse_json_text(std::string_view text, const ErrorContext& errors) {

@@ -21,6 +21,14 @@ struct TextPosition {
 };
 TextPosition text_position(std::string_view text, std::size_t offset);
 
+// The deepest nesting of objects and arrays that a scene or an override value may have: enough
+// for any scene, and far from what overflows the stack of nlohmann::json's recursive printing.
+inline constexpr std::size_t kMaxJsonNesting = 64;
+
+// The deepest nesting of objects and arrays in `text`, brackets inside strings not counted; one
+// pass, no recursion (for text that has not been parsed yet).
+std::size_t json_nesting_depth(std::string_view text);
+
 // Parses `text` as one JSON value. Throws UserError through `errors` on any problem.
 nlohmann::json parse_json_text(std::string_view text, const ErrorContext& errors);
 

@@ -8,6 +8,7 @@
 
 #include "engine/core/message_text.hpp"
 #include "engine/scene/field_reader.hpp"
+#include "engine/scene/json_text.hpp"
 
 namespace vkw {
 namespace {
@@ -56,7 +57,13 @@ std::optional<std::vector<Step>> split_key(std::string_view key) {
     }
 }
 
-json parse_value(std::string_view text) {
+json parse_value(std::string_view text, const std::string& where, const ErrorContext& errors) {
+    // Bounded as scene files are: 10^5 nested arrays would overflow the stack of the code that
+    // later prints the value.
+    if (json_nesting_depth(text) > kMaxJsonNesting) {
+        errors.fail(where, "the value is nested too deeply",
+                    "at most " + std::to_string(kMaxJsonNesting) + " levels of objects and arrays");
+    }
     // accept() also refuses 1e999, which then reaches validation as the string "1e999"
     // and is reported there as not a finite number.
     if (json::accept(text)) return json::parse(text);
@@ -73,7 +80,7 @@ void apply_one(json& root, const std::string& text, ErrorContext& errors) {
     if (equals == std::string::npos) errors.fail(where, "no '=' in the override", kSyntax);
     const auto steps = split_key(trimmed(std::string_view(text).substr(0, equals)));
     if (!steps) errors.fail(where, "empty field name or malformed [index] in the key path", kSyntax);
-    json value = parse_value(trimmed(std::string_view(text).substr(equals + 1)));
+    json value = parse_value(trimmed(std::string_view(text).substr(equals + 1)), where, errors);
 
     json* node = &root;
     std::string path;

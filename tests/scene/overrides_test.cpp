@@ -53,6 +53,31 @@ TEST(scene_overrides, OutOfRangeValueNamesTheOverride) {
               "[from override 'camera.fov_y_deg=0']");
 }
 
+// A --set value may hold any bytes: bytes that are not UTF-8 are still a user error (quoted with
+// U+FFFD in their place), not an exception from the JSON library.
+TEST(scene_overrides, ValuesThatAreNotUtf8AreAUserError) {
+    const std::string message = error_with({"water.level=\"\xff\xfe\""});
+    EXPECT_NE(message.find("water.level: expected a number, got string"), std::string::npos) << message;
+    EXPECT_NE(message.find("\xef\xbf\xbd"), std::string::npos) << message;  // U+FFFD in UTF-8
+}
+
+// A value nested 10^5 deep is refused by the parse (it would overflow the stack of the code that
+// prints it), and the override is quoted cut, with its length, so the message stays one line.
+TEST(scene_overrides, ADeeplyNestedValueIsRefusedAndQuotedShortened) {
+    const std::string message = error_with({"water.level=" + std::string(100000, '[') + std::string(100000, ']')});
+    EXPECT_LT(message.size(), 400u) << message.substr(0, 400);
+    EXPECT_NE(message.find("nested too deeply (accepted: at most 64 levels of objects and arrays)"), std::string::npos)
+        << message.substr(0, 400);
+    EXPECT_NE(message.find("... (200012 characters)"), std::string::npos) << message.substr(0, 400);
+}
+
+// Brackets inside a string are text, not nesting.
+TEST(scene_overrides, BracketsInsideAStringAreNotNesting) {
+    const std::string message = error_with({"water.level=\"" + std::string(100, '[') + "\\\"\""});
+    EXPECT_EQ(message.find("nested too deeply"), std::string::npos) << message;
+    EXPECT_NE(message.find("expected a number, got string"), std::string::npos) << message;
+}
+
 TEST(scene_overrides, NonFiniteValuesAreRefused) {
     for (const char* value : {"nan", "NaN", "inf", "-inf", "1e999", "-1e999"}) {
         const std::string message = error_with({std::string("camera.near=") + value});
