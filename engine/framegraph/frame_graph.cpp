@@ -176,6 +176,8 @@ BufferHandle PassBuilder::copy_destination(BufferHandle h) { return use(h, Use::
 
 void PassBuilder::side_effect() { graph_.passes_[pass_].side_effect = true; }
 void PassBuilder::serves(EffectTag effect) { graph_.passes_[pass_].serves = effect; }
+
+void PassBuilder::note(std::string text) { graph_.passes_[pass_].note = std::move(text); }
 void PassBuilder::record_with(RecordingKind kind) { graph_.passes_[pass_].recording = kind; }
 
 // ---------------------------------------------------------------- compile

@@ -102,6 +102,7 @@ struct PassDecl {
     bool side_effect = false;
     std::optional<EffectTag> serves;
     std::optional<RecordingKind> recording;  // overrides the graph's default
+    std::string note;                        // what the pass decided, for describe()
     std::function<void(PassContext&)> execute;
 };
 
@@ -140,6 +141,9 @@ public:
     // The pass exists for this effect; it is culled when the frame does not need it.
     void serves(EffectTag effect);
     void record_with(RecordingKind kind);
+    // One line on what the pass decided for this frame (e.g. what it leaves out, and why), printed
+    // under the pass by FrameGraph::describe().
+    void note(std::string text);
 
 private:
     friend class FrameGraph;

@@ -92,6 +92,7 @@ std::string FrameGraph::describe() const {
         if (!writes.empty()) text += "       writes: " + writes + "\n";
         if (created_count > 1) created += " (" + byte_size(created_bytes) + " in all)";
         if (!created.empty()) text += "       creates: " + created + "\n";
+        if (!pass.note.empty()) text += "       note:   " + pass.note + "\n";
     }
     text += "culled passes:\n";
     if (compiled.culled.empty()) text += "  (none)\n";

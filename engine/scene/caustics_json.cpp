@@ -35,6 +35,7 @@ CausticSettings read_caustic_settings(FieldReader& fields) {
     caustics.sub_photons = static_cast<uint32_t>(
         fields.integer("sub_photons", Range::closed(1.0, 8.0, "photons per cell side"), defaults.sub_photons));
     caustics.jitter = fields.boolean("jitter", defaults.jitter);
+    caustics.cull = fields.boolean("cull", defaults.cull);
     caustics.kernel = fields.choice("kernel", kKernels, defaults.kernel);
     caustics.splat = fields.choice("splat", kSplats, defaults.splat);
     caustics.map_scale =

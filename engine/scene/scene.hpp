@@ -167,6 +167,9 @@ struct CausticSettings {
     bool analytic_flat = true;
     uint32_t sub_photons = 1;  // S: S x S photons per cell of the water grid, in [1, 8]
     bool jitter = false;       // each photon at a hashed point of its sub-cell instead of its centre
+    // Photons whose kernel reaches no texel the frame can read are left out (the image is the
+    // same bit for bit); false keeps every photon.
+    bool cull = true;
     CausticKernel kernel = CausticKernel::Adaptive;  // the light-space map's splat
     CausticSplat splat = CausticSplat::LightSpace;
     // The light-space map's texels per water cell along each side, in [0.25, 4]: 1 puts one photon

@@ -13,6 +13,7 @@ public:
     SurfacePoint at_parameter(double x0, double z0) const override;
     bool is_heightfield() const override { return true; }
     double max_amplitude() const override { return 0.0; }
+    double max_slope() const override { return 0.0; }
 
 private:
     double level_;

@@ -3,6 +3,7 @@
 #include "engine/water/surface.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace vkw {
 
@@ -85,6 +86,8 @@ glm::dvec2 WaterSurface::parameter_at(double x, double z) const {
     }
     return parameter;
 }
+
+double WaterSurface::max_slope() const { return std::numeric_limits<double>::infinity(); }
 
 double WaterSurface::height_at(double x, double z) const {
     const glm::dvec2 parameter = parameter_at(x, z);

@@ -60,6 +60,10 @@ public:
     // A conservative bound on |h| (the deviation from the mean level), for the frame's
     // needs and the water volume. Each model documents how tight it is.
     virtual double max_amplitude() const = 0;
+
+    // A conservative bound on the slope |grad h| (the tangent of the normal's tilt from +y), for
+    // bounding where refracted rays and photons can go; +infinity when the model has none.
+    virtual double max_slope() const;
 };
 
 // The surface described by `settings` at `level` (the mean water level, m) and `time` (s).

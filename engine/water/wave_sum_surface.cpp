@@ -1,7 +1,10 @@
 // Sum of sine and Gerstner waves: positions and analytic tangents (wave_sum_surface.hpp).
 #include "engine/water/wave_sum_surface.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 
 #include "engine/water/validate_waves.hpp"
 
@@ -12,11 +15,27 @@ WaveSumSurface::WaveSumSurface(const WaveSettings& settings, double level, doubl
     as_sum.model = WaveModel::Sum;
     validate_waves(as_sum);
     waves_.reserve(settings.components.size());
+    double steepness = 0.0;
     for (const WaveComponent& c : settings.components) {
         waves_.push_back(wave_terms(c, time));
         amplitude_sum_ += c.amplitude;
+        steepness += c.steepness;
         heightfield_ = heightfield_ && c.steepness == 0.0;
     }
+    // G from directions u every 2 pi / K: between two of them sum A k |d . u| changes by at most
+    // (pi / K) sum A k, which is added.
+    constexpr int kDirections = 720;
+    double terms = 0.0, height_gradient = 0.0;
+    for (const WaveTerms& w : waves_) terms += w.amplitude * glm::length(w.k_vector);
+    for (int i = 0; i < kDirections; ++i) {
+        const double angle = 2.0 * std::numbers::pi * i / kDirections;
+        const glm::dvec2 u(std::cos(angle), std::sin(angle));
+        double along = 0.0;
+        for (const WaveTerms& w : waves_) along += w.amplitude * std::abs(glm::dot(w.k_vector, u));
+        height_gradient = std::max(height_gradient, along);
+    }
+    height_gradient = std::min(terms, height_gradient + std::numbers::pi / kDirections * terms);
+    slope_bound_ = steepness < 1.0 ? height_gradient / (1.0 - steepness) : std::numeric_limits<double>::infinity();
 }
 
 SurfacePoint WaveSumSurface::at_parameter(double x0, double z0) const {

@@ -28,11 +28,18 @@ public:
     bool is_heightfield() const override { return heightfield_; }
     // sum of A_i: a true bound (reached where all crests coincide).
     double max_amplitude() const override { return amplitude_sum_; }
+    // G / (1 - sum s_i): the height's gradient in the parameters, sum A k d cos(theta), is at most
+    // G = max over unit u of sum A k |d . u| (the largest point of the zonotope the terms span;
+    // for perpendicular equal waves sqrt(2) A k, not 2 A k), and the horizontal map (x0, z0) ->
+    // (x, z) shrinks no length by more than 1 - sum s (each Gerstner term subtracts
+    // s sin(theta) d d^T); +infinity when sum s >= 1 (folding allowed).
+    double max_slope() const override { return slope_bound_; }
 
 private:
     std::vector<WaveTerms> waves_;
     double level_;
     double amplitude_sum_ = 0.0;
+    double slope_bound_ = 0.0;
     bool heightfield_ = true;
 };
 

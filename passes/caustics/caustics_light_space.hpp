@@ -35,6 +35,9 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace vkw::passes {
 
@@ -42,6 +45,21 @@ namespace vkw::passes {
 // the footprint splat's largest extent per axis (kMaxFootprintTexels of caustic_footprint.glsl).
 constexpr uint32_t kMaxSplatHalfWidth = 4;
 constexpr uint32_t kMaxFootprintTexels = 8;
+
+// A rectangle of map texels, [x0, x1) x [y0, y1).
+struct CausticTexelRect {
+    uint32_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+// The texels [x0, x1) of one map row.
+struct CausticTexelSpan {
+    uint32_t x0 = 0, x1 = 0;
+};
+// The texels a frame reads: their bounding rectangle and, per map row, their span.
+struct CausticReadTexels {
+    CausticTexelRect bounds;
+    std::vector<CausticTexelSpan> rows;  // one per map row
+    double photon_spread = 0.0;          // m: how far a photon can land from its cell's own place
+};
 
 struct CausticInputs {
     fg::BufferHandle surface;                        // the vertex grid of add_water_surface_pass
@@ -59,6 +77,10 @@ struct CausticInputs {
     double floor_height = -2.0;                      // the receiver: the plane y = floor_height
     double fit_margin = 0.0;                         // m added around the fitted map on each side
     uint32_t map_width = 512, map_height = 512;      // W x H texels, 3..16384 each
+    // The texels the frame can read (caustics_read_region.hpp): a photon whose kernel reaches none
+    // of them is left out. Empty: every photon is kept. read_note says which, and why.
+    std::optional<CausticReadTexels> read_texels;
+    std::string read_note;
 };
 
 // Mirrors struct CausticLightSpace of shaders/caustics/caustic_light_space.glsl.

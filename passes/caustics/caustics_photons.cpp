@@ -1,13 +1,17 @@
 // add_caustic_photon_pass (caustics_photons.hpp).
 #include "passes/caustics/caustics_photons.hpp"
 
+#include "engine/core/errors.hpp"
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/vk/context.hpp"
 #include "passes/caustics/caustics_bands.hpp"
 #include "passes/common/zeroed_buffer.hpp"
 #include "passes/water/water_surface.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <numeric>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,9 +25,34 @@ constexpr uint32_t kMaxGroups = 65535;
 // Mirrors the push constants of shaders/caustics/caustic_photons.comp.
 struct CausticPhotonPush {
     CausticPhotonSourcePush source;
-    uint32_t resolution, sub, first_row, rows, band_first, band_rows, jitter, pad;
+    uint32_t resolution;
+    uint32_t sub_and_flags;  // bits 0-7: S; bit 8: jitter; bit 9: cull outside read_x, read_y
+    uint32_t first_row, rows, band_first, band_rows;
+    uint32_t read_x, read_y;  // the read texels' columns and rows, [first, end): first | end << 16
 };
+constexpr uint32_t kJitterFlag = 1u << 8, kCullFlag = 1u << 9;
 static_assert(sizeof(CausticPhotonPush) == 128, "the push-constant size every device supports");
+
+// Uploads the per-row read spans (vkCmdUpdateBuffer writes at most 65536 bytes a call).
+fg::BufferHandle add_read_rows_upload(fg::FrameGraph& graph, const std::vector<uint32_t>& rows) {
+    struct Data {
+        fg::BufferHandle rows;
+    };
+    const VkDeviceSize bytes = rows.size() * sizeof(uint32_t);
+    const auto& upload = graph.add_pass<Data>(
+        "upload caustic read rows", fg::PassKind::Transfer,
+        [&](fg::PassBuilder& builder, Data& d) {
+            d.rows = builder.copy_destination(builder.create_buffer("caustic read rows", {bytes}));
+        },
+        [rows, bytes](const Data& d, fg::PassContext& context) {
+            constexpr VkDeviceSize kMaxUpdate = 65536;
+            for (VkDeviceSize offset = 0; offset < bytes; offset += kMaxUpdate) {
+                vkCmdUpdateBuffer(context.cmd(), context.buffer(d.rows), offset, std::min(kMaxUpdate, bytes - offset),
+                                  reinterpret_cast<const char*>(rows.data()) + offset);
+            }
+        });
+    return upload.rows;
+}
 
 }  // namespace
 
@@ -45,6 +74,28 @@ std::vector<RowBand> caustic_photon_chunks(const fg::PassContext& context, uint3
                      limits.minStorageBufferOffsetAlignment, kMaxGroups * kGroupSide / sub);
 }
 
+namespace {
+
+// The chunks' part within cell rows [first, end).
+std::vector<RowBand> clip_cell_rows(const std::vector<RowBand>& chunks, uint32_t first, uint32_t end,
+                                    const fg::PassContext& context, uint32_t resolution) {
+    const VkDeviceSize row_bytes = VkDeviceSize{resolution + 1} * kWaterVertexBytes;
+    const VkDeviceSize align =
+        std::max<VkDeviceSize>(context.context().properties().limits.minStorageBufferOffsetAlignment, 1);
+    // Chunks start at multiples of `step` rows (row_bands), so a start rounded down to one stays
+    // aligned; the few rows before `first` that this keeps are culled in the shader.
+    const uint32_t step = static_cast<uint32_t>(align / std::gcd(row_bytes, align));
+    std::vector<RowBand> clipped;
+    for (const RowBand& chunk : chunks) {
+        const uint32_t from = std::max(chunk.first, first / step * step), to = std::min(chunk.first + chunk.rows, end);
+        if (from >= to) continue;
+        clipped.push_back({from, to - from, from * row_bytes, (to - from + 1) * row_bytes});
+    }
+    return clipped;
+}
+
+}  // namespace
+
 uint32_t caustic_photon_groups(uint64_t invocations) {
     return static_cast<uint32_t>((invocations + kGroupSide - 1) / kGroupSide);
 }
@@ -54,15 +105,62 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
     CausticPhotonPush push{};
     push.source = caustic_photon_source(inputs);  // checks the inputs
     push.resolution = inputs.grid_resolution;
-    push.sub = inputs.sub_photons;
-    push.jitter = inputs.jitter ? 1u : 0u;
+    push.sub_and_flags = inputs.sub_photons | (inputs.jitter ? kJitterFlag : 0u);
     const CausticMapFrame frame = fit_caustic_map(inputs);  // its size includes the margin for the waves
+    // Per map row, the read texels [x0, x1) as x0 | x1 << 16, then the same widened by the tent's
+    // reach (kMaxSplatHalfWidth texels along both axes: the rows within it merged), so that a
+    // photon's centre alone says whether its tent can reach a read texel (binding 3; one unread
+    // entry when every photon is kept).
+    std::vector<uint32_t> read_rows(1, 0u);
+    if (inputs.read_texels) {
+        const CausticTexelRect& r = inputs.read_texels->bounds;
+        // 16 bits per bound: a map has at most 16384 texels and its margins per side.
+        if (r.x1 > 0xffffu || r.y1 > 0xffffu || r.x0 > r.x1 || r.y0 > r.y1) {
+            throw InternalError("caustic photons: read texels out of range");
+        }
+        push.sub_and_flags |= kCullFlag;
+        push.read_x = r.x0 | r.x1 << 16;
+        push.read_y = r.y0 | r.y1 << 16;
+        if (inputs.read_texels->rows.size() != frame.height) {
+            throw InternalError("caustic photons: the read texels' rows are not the map's");
+        }
+        read_rows.clear();
+        const std::vector<CausticTexelSpan>& spans = inputs.read_texels->rows;
+        for (const CausticTexelSpan& span : spans) read_rows.push_back(span.x0 | span.x1 << 16);
+        const int reach = static_cast<int>(kMaxSplatHalfWidth), rows = static_cast<int>(spans.size());
+        for (int row = 0; row < rows; ++row) {
+            uint32_t x0 = 0xffffu, x1 = 0;
+            for (int near = std::max(0, row - reach); near <= std::min(rows - 1, row + reach); ++near) {
+                if (spans[near].x1 <= spans[near].x0) continue;
+                x0 = std::min(x0, spans[near].x0 - std::min<uint32_t>(spans[near].x0, kMaxSplatHalfWidth));
+                x1 = std::max(x1, spans[near].x1 + kMaxSplatHalfWidth);
+            }
+            read_rows.push_back(x1 > x0 ? x0 | std::min<uint32_t>(x1, 0xffffu) << 16 : 0u);
+        }
+    }
+    const fg::BufferHandle rows = add_read_rows_upload(graph, read_rows);
+    // The cell rows whose photons can land on a read row: a cell's photons land within
+    // photon_spread of the cell's own place (caustics_read_region.hpp), and their tents reach
+    // kMaxSplatHalfWidth texels further (the footprint kernel kMaxFootprintTexels).
+    uint32_t first_cell_row = 0, end_cell_row = inputs.grid_resolution;
+    if (inputs.read_texels && std::isfinite(inputs.read_texels->photon_spread)) {
+        const CausticTexelRect& r = inputs.read_texels->bounds;
+        const double cell = 2.0 * inputs.half_extent / inputs.grid_resolution;
+        const double reach = inputs.read_texels->photon_spread / frame.texel.y + kMaxFootprintTexels + 1.0;
+        // Map row of world z: (z - corner.y) / texel.y; cell row j spans z = -E + [j, j + 1] cell.
+        auto cell_row = [&](double map_row) {
+            return (map_row * frame.texel.y + frame.corner.y + inputs.half_extent) / cell;
+        };
+        const double lo = std::floor(cell_row(r.y0 - reach)), hi = std::ceil(cell_row(r.y1 + reach));
+        first_cell_row = static_cast<uint32_t>(std::clamp(lo, 0.0, double(inputs.grid_resolution)));
+        end_cell_row = static_cast<uint32_t>(std::clamp(hi, double(first_cell_row), double(inputs.grid_resolution)));
+    }
     const VkDeviceSize bytes = caustic_flux_bytes(frame.width, frame.height);
 
     const fg::BufferHandle cleared = add_zeroed_buffer_pass(graph, "caustic flux clear", "caustic flux", bytes);
 
     struct Data {
-        fg::BufferHandle surface, flux;
+        fg::BufferHandle surface, flux, read_rows;
         SunShadowReads shadow;
     };
     const auto& data = graph.add_pass<Data>(
@@ -71,9 +169,11 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
             const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
             d.surface = builder.read_storage(inputs.surface, stage);
             d.flux = builder.read_write_storage(cleared, stage);
+            d.read_rows = builder.read_storage(rows, stage);
             d.shadow.declare(builder, shadow, stage);
+            if (!inputs.read_note.empty()) builder.note(inputs.read_note);
         },
-        [push, kernel_variant = inputs.kernel](const Data& d, fg::PassContext& context) {
+        [push, kernel_variant = inputs.kernel, first_cell_row, end_cell_row](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
             // The variant: the kernel, then with the sun shadow map or without (shaders/CMakeLists.txt).
             const char* kernel = kernel_variant == CausticKernel::Bilinear   ? "bilinear"
@@ -82,13 +182,15 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
             desc.shader = std::string("caustics/caustic_photons.comp.") + kernel + (d.shadow ? "_shadow" : "");
             desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
                                     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
+                                    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
+                                    {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
             d.shadow.add_layout(desc.layout.bindings, VK_SHADER_STAGE_COMPUTE_BIT);
             desc.layout.push_constant_bytes = sizeof(CausticPhotonPush);
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
             const VkPhysicalDeviceLimits& limits = context.context().properties().limits;
-            const uint32_t r = push.resolution, s = push.sub;
-            const auto chunks = caustic_photon_chunks(context, r, s);
+            const uint32_t r = push.resolution, s = push.sub_and_flags & 0xffu;
+            const auto chunks =
+                clip_cell_rows(caustic_photon_chunks(context, r, s), first_cell_row, end_cell_row, context, r);
             const uint32_t width = static_cast<uint32_t>(push.source.space.u_axis[3]);
             const uint32_t height = static_cast<uint32_t>(push.source.space.v_axis[3]);
             const auto bands = row_bands(height, VkDeviceSize{width} * kCausticTexelBytes, kCausticFluxHeaderBytes, 0,
@@ -109,7 +211,8 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
                     p.rows = chunk.rows;
                     p.band_first = band.first;
                     p.band_rows = band.rows;
-                    std::vector<fg::DescriptorBinding> bindings{surface, flux, lost};
+                    std::vector<fg::DescriptorBinding> bindings{surface, flux, lost,
+                                                                context.storage_buffer(3, d.read_rows)};
                     d.shadow.add_bindings(context, bindings);
                     context.bind(pipeline, bindings);
                     context.push_constants(pipeline, p);

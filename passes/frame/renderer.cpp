@@ -2,12 +2,14 @@
 
 #include "engine/core/errors.hpp"
 #include "engine/vk/context.hpp"
+#include "engine/water/surface.hpp"
 #include "passes/caustics/caustic_layer.hpp"
 #include "passes/caustics/caustics_blur.hpp"
 #include "passes/caustics/caustics_camera_receivers.hpp"
 #include "passes/caustics/caustics_camera_splats.hpp"
 #include "passes/caustics/caustics_photons.hpp"
 #include "passes/caustics/caustics_procedural.hpp"
+#include "passes/caustics/caustics_read_region.hpp"
 #include "passes/caustics/caustics_resolve.hpp"
 #include "passes/common/calibration.hpp"
 #include "passes/common/frame_constants_upload.hpp"
@@ -31,6 +33,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <optional>
 
 namespace vkw {
@@ -100,6 +103,28 @@ passes::WaterSceneLookups scene_lookups(fg::FrameGraph& graph, const Scene& scen
 
 }  // namespace
 
+passes::CausticReadInputs caustic_read_inputs(const Scene& scene, double aspect, const fg::FrameNeeds& needs,
+                                              double amplitude, double lowest_receiver) {
+    const Water& water = *scene.water;
+    passes::CausticReadInputs in;
+    in.view_proj = projection_matrix(scene.camera, aspect) * view_matrix(scene.camera);
+    in.level = water.level;
+    in.half_extent = water.half_extent;
+    in.amplitude = amplitude;
+    // The FFT ocean's fields have no slope bound (a CPU surface would cost its FFTs to build).
+    in.max_slope = water.waves.model == WaveModel::FftOcean
+                       ? std::numeric_limits<double>::infinity()
+                       : make_surface(water.waves, water.level, water.time)->max_slope();
+    in.ior = water.ior;
+    in.lowest_receiver = lowest_receiver;
+    in.camera_may_be_in_water = needs.needs(Effect::UnderwaterView);
+    in.camera_space_splats = scene.effects.caustics.splat == CausticSplat::CameraSpace;
+    // A read samples its texel and a neighbour (bilinear); the blur spreads each texel over a
+    // tent of at most 1 + 4 texels (passes/caustics/caustics_blur.hpp).
+    in.read_margin = needs.needs(Effect::CausticBlur) ? 6 : 1;
+    return in;
+}
+
 void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
                        uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
                        const passes::ReceiverMeshes* receivers, const FrameOutput* output, VkBuffer caustic_readback) {
@@ -164,6 +189,21 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
                                        passes::add_caustic_camera_splat_passes(graph, caustics, view, extent,
                                                                                sun_shadow ? &*sun_shadow : nullptr));
             } else {
+                if (scene.effects.caustics.cull) {
+                    const double lowest = receivers && !receivers->empty()
+                                              ? std::min(scene.floor.height, receivers->bounds_lo().y)
+                                              : scene.floor.height;
+                    const passes::CausticReadRegion region = passes::caustic_read_region(
+                        passes::fit_caustic_map(caustics),
+                        caustic_read_inputs(scene, double(width) / double(height), graph.needs(), amplitude, lowest));
+                    if (region.bounded) {
+                        caustics.read_texels = passes::CausticReadTexels{
+                            {region.x0, region.y0, region.x1, region.y1}, region.rows, region.photon_spread};
+                    }
+                    caustics.read_note = region.note;
+                } else {
+                    caustics.read_note = "every photon kept: effects.caustics.cull is false";
+                }
                 passes::CausticMap map =
                     scene.effects.caustics.method == CausticMethod::Procedural
                         ? passes::add_caustic_procedural_pass(graph, caustics)

@@ -10,6 +10,7 @@
 #include "engine/image/image.hpp"
 #include "engine/scene/scene.hpp"
 #include "engine/vk/resources.hpp"
+#include "passes/caustics/caustics_read_region.hpp"
 #include "passes/common/frame_constants.hpp"
 
 #include <cstdint>
@@ -56,6 +57,12 @@ struct FrameOutput {
 // `output`, when given, ends the frame instead of the readback (which is then unused);
 // `caustic_readback`, when given (and no `output`), receives the caustic layer
 // (passes/caustics/caustic_layer.hpp), which the frame then renders.
+// What the photon pass's culling needs to know of the frame (passes/caustics/caustics_read_region.hpp):
+// the camera at `aspect`, the waves' bounds (`amplitude`, the slope from the wave model), the
+// lowest receiver, and from `needs` whether a ray can start in the water and whether the blur runs.
+passes::CausticReadInputs caustic_read_inputs(const Scene& scene, double aspect, const fg::FrameNeeds& needs,
+                                              double amplitude, double lowest_receiver);
+
 void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
                        uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
                        const passes::ReceiverMeshes* receivers, const FrameOutput* output = nullptr,

@@ -32,18 +32,22 @@ layout(set = 0, binding = 0, std430) readonly buffer Surface { WaterVertex verti
 layout(set = 0, binding = 1, std430) buffer Flux { uint64_t flux[]; };
 // Flux whose kernel tap fell outside the map, per channel (added by the band-0 dispatches only).
 layout(set = 0, binding = 2, std430) buffer Lost { uint64_t lost[]; };
+// With culling, per map row the texels [x0, x1) that the frame reads, as x0 | x1 << 16 (rows
+// 0 .. H - 1), then the same widened by kMaxSplatHalfWidth along both axes (rows H .. 2H - 1).
+layout(set = 0, binding = 3, std430) readonly buffer ReadRows { uint read_rows[]; };
 
 // Mirrors CausticPhotonPush in passes/caustics/caustics_photons.cpp (128 bytes, the guaranteed minimum).
 layout(push_constant) uniform Push {
     CausticPhotonSource source;
     uint resolution;     // R cells per side
-    uint sub;            // S: S x S photons per cell
+    uint sub_and_flags;  // bits 0-7: S (S x S photons per cell); bit 8: jitter (each photon leaves from a
+                         // hashed point of its sub-cell); bit 9: cull outside the read texels
     uint first_row;      // first cell row of this chunk
     uint rows;           // cell rows in this chunk
     uint band_first;     // first map row of this band
     uint band_rows;      // map rows in this band
-    uint jitter;         // 1: each photon leaves from a hashed point of its sub-cell
-    uint pad;
+    uint read_x;         // the texel columns the frame reads, [first, end): first | end << 16
+    uint read_y;         // and rows
 } pc;
 
 void deposit(ivec2 texel, uint channel, uint64_t q) {
@@ -85,9 +89,8 @@ void deposit_bilinear(vec2 coord, vec3 q) {
     }
 }
 
-// A tent of the given half-widths (at least one texel), split over its taps.
-void deposit_tent(vec2 coord, vec2 half_width, vec3 q) {
-    const SplatAxis x_axis = splat_axis(coord.x, half_width.x), y_axis = splat_axis(coord.y, half_width.y);
+// A tent (caustic_splat.glsl's axes), split over its taps.
+void deposit_tent(SplatAxis x_axis, SplatAxis y_axis, vec3 q) {
     const float x_total = splat_total(x_axis), y_total = splat_total(y_axis);
     for (uint ch = 0u; ch < 3u; ++ch) {
         const uint64_t total = uint64_t(q[ch] + 0.5);
@@ -106,16 +109,10 @@ void deposit_tent(vec2 coord, vec2 half_width, vec3 q) {
 }
 
 #ifdef VKWATER_SPLAT_FOOTPRINT
-// The footprint kernel: the photon's flux spread over its sub-cell's footprint by area, each
-// channel split by cumulative rounding over the footprint's texels in row order; false (nothing
-// deposited) where the footprint cannot be used.
-bool deposit_footprint(CausticCell c, vec2 uv0, vec2 uv1, CausticPhoton photon, vec3 q) {
-    vec2 corner[4];
-    if (!footprint_corners(c, uv0, uv1, photon, pc.source.space, corner)) return false;
-    ivec2 first, size;
-    float weight[64];
-    float total;
-    if (!footprint_weights(corner, first, size, weight, total)) return false;
+// The footprint kernel: the photon's flux spread over its sub-cell's footprint by area
+// (footprint_weights' texel box and weights), each channel split by cumulative rounding over the
+// footprint's texels in row order.
+void deposit_footprint(ivec2 first, ivec2 size, float weight[64], float total, vec3 q) {
     for (uint ch = 0u; ch < 3u; ++ch) {
         const uint64_t amount = uint64_t(q[ch] + 0.5);
         float partial = 0.0;
@@ -130,26 +127,100 @@ bool deposit_footprint(CausticCell c, vec2 uv0, vec2 uv1, CausticPhoton photon, 
             }
         }
     }
-    return true;
 }
 #endif
 
+// True when the texel box lo .. hi (inclusive) misses the texels the frame reads: their bounding
+// rectangle first, then the spans of the rows the box covers.
+bool misses_read_texels(ivec2 lo, ivec2 hi) {
+    const ivec2 first = ivec2(pc.read_x & 0xffffu, pc.read_y & 0xffffu), end = ivec2(pc.read_x >> 16, pc.read_y >> 16);
+    if (any(lessThan(hi, first)) || any(greaterThanEqual(lo, end))) return true;
+    for (int row = max(lo.y, first.y); row <= min(hi.y, end.y - 1); ++row) {
+        const uint span = read_rows[row];
+        if (lo.x < int(span >> 16) && hi.x >= int(span & 0xffffu)) return false;
+    }
+    return true;
+}
+
+// Traces the photon, finds the box of its kernel's taps, and deposits unless the box misses the
+// texels the frame reads.
 void main() {
     GridPhoton p;
-    const CausticPhotonChunk chunk = CausticPhotonChunk(pc.resolution, pc.sub, pc.first_row, pc.rows, pc.jitter != 0u);
-    if (!trace_grid_photon(gl_GlobalInvocationID.xy, chunk, pc.source, p)) return;
-    const vec2 coord = caustic_texel_coord(p.photon.hit, pc.source.space) - 0.5;
+    const uint sub = pc.sub_and_flags & 0xffu;
+    const CausticPhotonChunk chunk =
+        CausticPhotonChunk(pc.resolution, sub, pc.first_row, pc.rows, (pc.sub_and_flags & 0x100u) != 0u);
+    const bool cull = (pc.sub_and_flags & 0x200u) != 0u;
+    const bool traced = trace_grid_photon(gl_GlobalInvocationID.xy, chunk, pc.source, p);
+    const vec2 coord = traced ? caustic_texel_coord(p.photon.hit, pc.source.space) - 0.5 : vec2(0.0);
     // Far off the map (or not a number): every tap is outside, and int() of it is undefined.
-    if (!all(lessThan(abs(coord), vec2(1e7)))) {
+    const bool far = traced && !all(lessThan(abs(coord), vec2(1e7)));
+    if (far) {
         for (uint ch = 0u; ch < 3u; ++ch) deposit(ivec2(-2), ch, uint64_t(p.q[ch] + 0.5));
-        return;
     }
+    const bool splat = traced && !far;
+    bool kept = splat;
+#if !defined(VKWATER_SPLAT_FOOTPRINT)
+    // The tent's taps lie within kMaxSplatHalfWidth texels of its centre's texel (the bilinear
+    // kernel's within one): a photon farther than that from every read texel is left out before
+    // its neighbours are traced to size its kernel.
+    // One look-up in the widened rows.
+    if (cull && kept) {
+        const ivec2 centre = ivec2(floor(coord));
+        const int height = int(pc.source.space.v_axis.w);
+        if (centre.y < 0 || centre.y >= height) {
+            kept = centre.y + int(kMaxSplatHalfWidth) >= 0 && centre.y - int(kMaxSplatHalfWidth) < height &&
+                   !misses_read_texels(centre - int(kMaxSplatHalfWidth), centre + int(kMaxSplatHalfWidth));
+        } else {
+            const uint span = read_rows[height + centre.y];
+            kept = centre.x >= int(span & 0xffffu) && centre.x < int(span >> 16);
+        }
+    }
+#endif
+    // The kernel's sizing (the adaptive one traces two neighbours) and the deposit, for a kept
+    // photon only.
+    if (kept) {
+        ivec2 lo = ivec2(1), hi = ivec2(0);  // the taps' box; empty without taps
 #if defined(VKWATER_SPLAT_BILINEAR)
-    deposit_bilinear(coord, p.q);
+        if (splat) {
+            lo = ivec2(floor(coord));
+            hi = lo + 1;
+        }
+#else
+        SplatAxis x_axis = SplatAxis(0, 0, 0.0, 1.0), y_axis = x_axis;
+        bool tent = splat;
+#if defined(VKWATER_SPLAT_FOOTPRINT)
+        ivec2 first = ivec2(0), size = ivec2(0);
+        float weight[64];
+        float total = 0.0;
+        vec2 corner[4];
+        const bool footprint = splat && footprint_corners(p.cell, p.uv0, p.uv1, p.photon, pc.source.space, corner) &&
+                               footprint_weights(corner, first, size, weight, total);
+        if (footprint) {
+            lo = first;
+            hi = first + size - 1;
+            tent = false;
+        }
+#endif
+        if (tent) {
+            const vec2 half_width = splat_half_width(p.cell, p.at, 1.0 / float(sub), p.photon, pc.source.space);
+            x_axis = splat_axis(coord.x, half_width.x);
+            y_axis = splat_axis(coord.y, half_width.y);
+            lo = ivec2(x_axis.first, y_axis.first);
+            hi = lo + ivec2(x_axis.count, y_axis.count) - 1;
+        }
+#endif
+#if defined(VKWATER_SPLAT_FOOTPRINT)
+        // Left out: a photon whose taps all fall outside the texels the frame can read
+        // (caustics_read_region.hpp). What every read texel receives is unchanged.
+        if (cull && misses_read_texels(lo, hi)) return;
+#endif
+#if defined(VKWATER_SPLAT_BILINEAR)
+        if (splat) deposit_bilinear(coord, p.q);
 #else
 #if defined(VKWATER_SPLAT_FOOTPRINT)
-    if (deposit_footprint(p.cell, p.uv0, p.uv1, p.photon, p.q)) return;
+        if (footprint) deposit_footprint(first, size, weight, total, p.q);
 #endif
-    deposit_tent(coord, splat_half_width(p.cell, p.at, 1.0 / float(pc.sub), p.photon, pc.source.space), p.q);
+        if (tent) deposit_tent(x_axis, y_axis, p.q);
 #endif
+    }
 }
