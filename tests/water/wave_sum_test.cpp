@@ -1,5 +1,6 @@
 // Sum of sine and Gerstner waves: analytic derivatives against central differences, the
 // phase and dispersion conventions, Newton's height_at, and the steepness check.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -106,6 +107,32 @@ TEST(water_wave_sum, GivenSpeedOverridesTheDispersion) {
 TEST(water_wave_sum, MaxAmplitudeOfOneSineIsItsAmplitude) {
     EXPECT_EQ(WaveSumSurface(sum_of({{0.07, 1.0}}), 0.0, 0.0).max_amplitude(), 0.07);
     EXPECT_NEAR(WaveSumSurface(sum_of(kGerstnerWaves), 0.0, 0.0).max_amplitude(), 0.122, 1e-15);
+}
+
+// The slope bound (WaveSumSurface::max_slope): never below the slope |grad h| = tan(tilt) found
+// over a dense sample of the surface, and for perpendicular equal sines (pool's pair) the exact
+// sqrt(2) A k to within the bound's direction sampling (pi / 720 of sum A k), not 2 A k.
+double sampled_max_slope(const WaveSumSurface& surface) {
+    double steepest = 0.0;
+    for (int j = 0; j < 400; ++j) {
+        for (int i = 0; i < 400; ++i) {
+            const SurfacePoint p = surface.at_parameter(-3.0 + 6.0 * i / 400.0, -3.0 + 6.0 * j / 400.0);
+            steepest = std::max(steepest, std::sqrt(1.0 - p.normal.y * p.normal.y) / p.normal.y);
+        }
+    }
+    return steepest;
+}
+
+TEST(water_wave_sum, SlopeBoundHoldsAndIsTightForPerpendicularSines) {
+    const double a = 0.017, k = 2.0 * kPi / 0.5;
+    const WaveSumSurface pool(sum_of({{a, 0.5, 0.0, 0.0}, {a, 0.5, 90.0, 90.0}}), 0.0, 0.0);
+    EXPECT_GE(pool.max_slope(), sampled_max_slope(pool));
+    const double exact = std::sqrt(2.0) * a * k, margin = kPi / 720.0 * 2.0 * a * k;
+    EXPECT_GE(pool.max_slope(), exact);
+    EXPECT_LE(pool.max_slope(), exact + margin * (1.0 + 1e-12));
+    const WaveSumSurface gerstner(sum_of(kGerstnerWaves), 0.0, 0.0);
+    EXPECT_GE(gerstner.max_slope(), sampled_max_slope(gerstner));
+    EXPECT_TRUE(std::isfinite(gerstner.max_slope()));
 }
 
 TEST(water_wave_sum, HeightfieldOnlyWithoutSteepness) {
