@@ -139,6 +139,30 @@ TEST(cli, RenderLeavesOnlyTheFinishedImage) {
     EXPECT_EQ(names, (std::vector<std::string>{"x.exr", "x.png"}));
 }
 
+// The output is named by its extension: .png writes the preview alone, an unknown or missing
+// extension is refused naming the accepted ones, and without --out the scene's name with .exr is
+// written into the current folder.
+TEST(cli, TheOutputIsNamedByItsExtension) {
+    const fs::path folder = scratch("by_extension");
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    const std::string small = " --width 32 --height 24";
+    ASSERT_EQ(run_vkwater("render " + kPool + small + " --out " + (folder / "p.png").string()).exit_code, 0);
+    std::ifstream png(folder / "p.png", std::ios::binary);
+    std::string magic(8, '\0');
+    png.read(magic.data(), 8);
+    EXPECT_EQ(magic, "\x89PNG\r\n\x1a\n");
+    for (const char* bad : {"x.tif", "x"}) {
+        const CommandRun run = run_vkwater("render " + kPool + small + " --out " + (folder / bad).string());
+        expect_clean_failure(run, 1, "(accepted: .exr for the linear HDR image, .png for a tone-mapped preview alone)");
+        EXPECT_FALSE(fs::exists(folder / bad));
+    }
+    const CommandRun defaulted = run_vkwater("render " + kPool + small, "cd '" + folder.string() + "' &&");
+    ASSERT_EQ(defaulted.exit_code, 0) << defaulted.output;
+    EXPECT_TRUE(fs::exists(folder / "pool.exr"));
+    EXPECT_NE(defaulted.output.find("wrote pool.exr"), std::string::npos) << defaulted.output;
+}
+
 TEST(cli, UnknownFlag) {
     const CommandRun run = run_vkwater("render " + kPool + " --out x.exr --no-such-flag");
     EXPECT_EQ(run.exit_code, 1) << run.output;

@@ -11,6 +11,8 @@
 #include "tools/metrics/reference_errors.hpp"
 #include "tools/vkwater/commands.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -35,14 +37,44 @@ struct RenderArgs {
     DeviceOptions device;
 };
 
+// What --out names, by its extension: the linear HDR OpenEXR (.exr), or the tone-mapped preview
+// alone (.png). A device or a pipe (/dev/stdout, a FIFO) has no extension to go by and gets the EXR.
+enum class OutputKind { Exr, Png };
+
+OutputKind output_kind(const std::filesystem::path& out) {
+    std::error_code error;
+    const std::filesystem::file_status status = std::filesystem::status(out, error);
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
+        !std::filesystem::is_directory(status)) {
+        return OutputKind::Exr;
+    }
+    std::string extension = out.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension == ".exr") return OutputKind::Exr;
+    if (extension == ".png") return OutputKind::Png;
+    throw UserError("--out " + quoted_path(out) + ": " +
+                    (extension.empty() ? std::string("no extension") : "unknown extension '" + extension + "'") +
+                    " (accepted: .exr for the linear HDR image, .png for a tone-mapped preview alone)");
+}
+
 int run_render(const RenderArgs& args) {
     const auto start = std::chrono::steady_clock::now();
     const Scene scene = load_scene(args.scene, args.overrides);
-    // Fail on an unwritable output before spending time on the render.
-    const std::filesystem::path out = args.out;
+    // Fail on an unwritable output before spending time on the render. Without --out, the scene's
+    // name with .exr, in the current folder.
+    const std::filesystem::path out = args.out.empty()
+                                          ? std::filesystem::path(args.scene).filename().replace_extension(".exr")
+                                          : std::filesystem::path(args.out);
+    const OutputKind kind = output_kind(out);
+    if (kind == OutputKind::Png && args.half) {
+        throw UserError("--half: --out " + quoted_path(out) + " is a PNG preview; --half applies to an .exr output");
+    }
     require_writable_file_path(out);
-    const std::filesystem::path png_path = std::filesystem::path(out).replace_extension(".png");
-    if (args.png) require_writable_file_path(png_path);
+    const std::filesystem::path png_path =
+        kind == OutputKind::Png ? out : std::filesystem::path(out).replace_extension(".png");
+    const bool write_png = args.png || kind == OutputKind::Png;
+    if (write_png) require_writable_file_path(png_path);
     if (!args.reference.empty()) require_readable_file_path(args.reference);
 
     ContextOptions context_options;
@@ -93,13 +125,16 @@ int run_render(const RenderArgs& args) {
     std::printf("  %-24s %8.3f ms (CPU)\n", "declare + compile graph", declare_ms);
 
     context.reset();  // tear the device down now: teardown can report validation messages too
-    const ExrWriteReport report = write_exr(out, result.image, args.half ? ExrPixelType::Half : ExrPixelType::Float);
-    std::printf("wrote %s (%dx%d, %s)\n", out.c_str(), result.image.width, result.image.height,
-                args.half ? "half float" : "32-bit float");
-    if (args.half && report.clamped_values > 0) {
-        std::printf("clamped %zu values to the half-float maximum 65504\n", report.clamped_values);
+    if (kind == OutputKind::Exr) {
+        const ExrWriteReport report =
+            write_exr(out, result.image, args.half ? ExrPixelType::Half : ExrPixelType::Float);
+        std::printf("wrote %s (%dx%d, %s)\n", out.c_str(), result.image.width, result.image.height,
+                    args.half ? "half float" : "32-bit float");
+        if (args.half && report.clamped_values > 0) {
+            std::printf("clamped %zu values to the half-float maximum 65504\n", report.clamped_values);
+        }
     }
-    if (args.png) {
+    if (write_png) {
         write_png_preview(png_path, result.image, static_cast<float>(scene.camera.exposure));
         std::printf("wrote %s (preview: ACES filmic, sRGB)\n", png_path.c_str());
     }
@@ -129,11 +164,14 @@ Run add_render_command(CLI::App& app) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App* command = app.add_subcommand("render", "Render a scene offscreen to a linear HDR OpenEXR file");
     command->add_option("scene", args->scene, "Scene file (JSON, see scenes/README.md)")->required();
-    command->add_option("--out,-o", args->out, "Output OpenEXR file")->required();
+    command->add_option("--out,-o", args->out,
+                        "Output file, by its extension: .exr the linear HDR image (32-bit float), .png a tone-mapped "
+                        "preview alone (default: the scene's name with .exr, in the current folder; an existing file "
+                        "is replaced)");
     command->add_option("--width", args->width, "Image width in pixels")->capture_default_str();
     command->add_option("--height", args->height, "Image height in pixels")->capture_default_str();
     command->add_flag("--half", args->half, "Write half floats (values beyond 65504 are clamped and counted)");
-    command->add_flag("--png", args->png, "Also write a tone-mapped PNG preview next to the EXR");
+    command->add_flag("--png", args->png, "Also write a tone-mapped PNG preview next to the EXR (its name with .png)");
     command
         ->add_option("--repeat", args->repeat,
                      "Render this many frames and report the last: the first frame includes llvmpipe's "
