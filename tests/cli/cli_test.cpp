@@ -99,6 +99,19 @@ TEST(cli, HelpExitsZero) {
     EXPECT_EQ(run_vkwater("render --help").exit_code, 0);
 }
 
+TEST(cli, VersionAndHelpCommand) {
+    const CommandRun version = run_vkwater("--version");
+    EXPECT_EQ(version.exit_code, 0);
+    EXPECT_EQ(version.output.rfind("vkwater ", 0), 0u) << version.output;
+    const CommandRun help = run_vkwater("help");
+    EXPECT_EQ(help.exit_code, 0);
+    EXPECT_NE(help.output.find("SUBCOMMAND"), std::string::npos) << help.output;
+    const CommandRun render = run_vkwater("help render");
+    EXPECT_EQ(render.exit_code, 0);
+    EXPECT_NE(render.output.find("--out"), std::string::npos) << render.output;
+    expect_clean_failure(run_vkwater("help nosuch"), 1, "no command 'nosuch'");
+}
+
 TEST(cli, MissingSceneFile) {
     expect_clean_failure(run_vkwater("render /nonexistent/scene.json --out " + scratch("x.exr").string()), 1,
                          "/nonexistent/scene.json");

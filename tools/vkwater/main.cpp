@@ -4,9 +4,11 @@
 
 #include <cstdio>
 #include <map>
+#include <string>
 
 int main(int argc, char** argv) {
     CLI::App app{"vkwater: a Vulkan renderer for water with compute-shader caustics"};
+    app.set_version_flag("--version", "vkwater " VKWATER_VERSION);
     app.require_subcommand(1);
     std::map<CLI::App*, vkw::cli::Run> commands;
     auto add = [&](vkw::cli::Run (*register_command)(CLI::App&)) {
@@ -21,6 +23,10 @@ int main(int argc, char** argv) {
     add(vkw::cli::add_bench_command);
     add(vkw::cli::add_povray_command);
     add(vkw::cli::add_view_command);
+    // vkwater help [COMMAND]: the same text as --help, for the habit of git and cargo.
+    std::string help_topic;
+    CLI::App* help = app.add_subcommand("help", "Print this help, or a command's: vkwater help COMMAND");
+    help->add_option("command", help_topic, "A command's name");
 
     try {
         app.parse(argc, argv);
@@ -28,6 +34,24 @@ int main(int argc, char** argv) {
         // --help exits 0; every other parse error is the user's (exit 1).
         const int code = app.exit(error);
         return code == 0 ? vkw::kExitOk : vkw::kExitUserError;
+    }
+    if (help->parsed()) {
+        if (help_topic.empty()) {
+            // app.help() would print the parsed subcommand's (help's own): format the app itself.
+            std::printf("%s", app.get_formatter()->make_help(&app, argv[0], CLI::AppFormatMode::Normal).c_str());
+            return vkw::kExitOk;
+        }
+        for (CLI::App* command : app.get_subcommands({})) {
+            if (command->get_name() == help_topic && command != help) {
+                std::printf("%s", command->help().c_str());
+                return vkw::kExitOk;
+            }
+        }
+        std::fprintf(stderr,
+                     "vkwater: help: no command '%s' (accepted: render, passes, reference, compare, bench, "
+                     "povray, view)\n",
+                     help_topic.c_str());
+        return vkw::kExitUserError;
     }
     try {
         for (auto& [command, run] : commands) {
