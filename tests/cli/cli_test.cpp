@@ -176,6 +176,29 @@ TEST(cli, TheOutputIsNamedByItsExtension) {
     EXPECT_NE(defaulted.output.find("wrote pool.exr"), std::string::npos) << defaulted.output;
 }
 
+// Inputs the reliability trial found accepted or crashing: each is now exit 1 with one line naming
+// the option, or (threads) clamped to the hardware with a note.
+TEST(cli, OutOfRangeOptionsAreUserErrors) {
+    const std::string calm = std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json";
+    const std::string tiny = " --width 8 --height 6 --out " + scratch("tiny.exr").string();
+    expect_clean_failure(run_vkwater("passes " + calm + " --width 0"), 1, "--width: Value 0 not in range 1 to 16384");
+    expect_clean_failure(run_vkwater("reference " + calm + tiny + " --cells-per-wavelength nan"), 1,
+                         "--cells-per-wavelength: 'nan' is not a finite number");
+    const fs::path folder = scratch("manifest_folder");
+    fs::create_directories(folder);
+    expect_clean_failure(run_vkwater("reference " + calm + tiny + " --manifest " + folder.string()), 1,
+                         "it is a directory");
+    // This run also writes tiny.exr, the reference the bench case below reads.
+    const CommandRun threads = run_vkwater("reference " + calm + tiny + " --threads 100000");
+    EXPECT_EQ(threads.exit_code, 0) << threads.output;
+    EXPECT_NE(threads.output.find("note: --threads 100000: using "), std::string::npos) << threads.output;
+    const fs::path file = scratch("a_file");
+    std::ofstream(file) << "x";
+    expect_clean_failure(run_vkwater("bench " + calm + " --reference " + scratch("tiny.exr").string() +
+                                     " --frames 1 --grids 16 --out-dir " + file.string()),
+                         1, "cannot make it a folder");
+}
+
 TEST(cli, UnknownFlag) {
     const CommandRun run = run_vkwater("render " + kPool + " --out x.exr --no-such-flag");
     EXPECT_EQ(run.exit_code, 1) << run.output;

@@ -12,6 +12,7 @@
 // `water.time` (the renderer keeps no clock), so the timed frames and the measured one agree.
 #include "engine/core/errors.hpp"
 #include "engine/image/exr_io.hpp"
+#include "engine/image/file_paths.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
 #include "passes/frame/renderer.hpp"
@@ -135,7 +136,12 @@ int run_bench(const BenchArgs& args) {
     const uint32_t height = static_cast<uint32_t>(reference.reference().height);
     const std::filesystem::path out_dir =
         args.out_dir.empty() ? "bench-" + std::filesystem::path(args.scene).stem().string() : args.out_dir;
-    std::filesystem::create_directories(out_dir);
+    std::error_code folder_error;
+    std::filesystem::create_directories(out_dir, folder_error);
+    if (folder_error || !std::filesystem::is_directory(out_dir)) {
+        throw UserError("--out-dir " + quoted_path(out_dir) + ": cannot make it a folder (" +
+                        (folder_error ? folder_error.message() : std::string("it is a file")) + ")");
+    }
 
     ContextOptions context_options;
     context_options.validation = args.device.validation;

@@ -5,6 +5,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <string>
 #include <vector>
@@ -19,6 +21,18 @@ struct DeviceOptions {
     bool validation = false;
 };
 void add_device_options(CLI::App& command, DeviceOptions& options);
+
+// A check for number options that refuses NaN and infinities: CLI::Range lets NaN through, since
+// every comparison with it is false.
+inline CLI::Validator finite_number() {
+    return CLI::Validator(
+        [](std::string& text) {
+            char* end = nullptr;
+            const double value = std::strtod(text.c_str(), &end);
+            return std::isfinite(value) ? std::string() : "'" + text + "' is not a finite number";
+        },
+        "FINITE");
+}
 
 Run add_render_command(CLI::App& app);
 Run add_passes_command(CLI::App& app);

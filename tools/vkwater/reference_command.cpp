@@ -12,11 +12,13 @@
 #include <unistd.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <thread>
 
 namespace vkw::cli {
 namespace {
@@ -75,10 +77,18 @@ void record_in_manifest(const ReferenceArgs& args, double seconds, const ref::Re
 int run_reference(const ReferenceArgs& args) {
     const Scene scene = load_scene(args.scene, args.overrides);
     require_writable_file_path(args.out);
+    if (!args.manifest.empty()) require_writable_file_path(args.manifest);
     ref::ReferenceOptions options;
     options.width = args.width;
     options.height = args.height;
+    // More threads than the hardware runs only cost memory and start-up (100000 made the thread
+    // creation fail).
+    const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
     options.threads = args.threads;
+    if (args.threads > hardware) {
+        std::printf("note: --threads %u: using %u, the hardware threads of this machine\n", args.threads, hardware);
+        options.threads = hardware;
+    }
     options.quality.caustic_in_scatter = true;  // the model's godrays under waves
     options.quality.cells_per_wavelength = args.cells_per_wavelength;
     // A progress bar only on a terminal: logs and CI output stay clean.
@@ -118,14 +128,18 @@ Run add_reference_command(CLI::App& app) {
     command->add_option("--height", args->height, "Image height in pixels")
         ->check(CLI::Range(1u, 16384u))
         ->capture_default_str();
-    command->add_option("--threads", args->threads, "Worker threads (0: every hardware thread)")->capture_default_str();
+    command
+        ->add_option("--threads", args->threads,
+                     "Worker threads (0: every hardware thread; more than the hardware has are clamped to it, with a "
+                     "note)")
+        ->capture_default_str();
     command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
     command
         ->add_option("--cells-per-wavelength", args->cells_per_wavelength,
                      "Wavy water: surface cells per shortest wavelength of the beam-mapped caustics (the "
                      "estimate compares against half as many); more lowers the reference's error and costs "
                      "about its square in time")
-        ->check(CLI::Range(4.0, 256.0))
+        ->check(finite_number() & CLI::Range(4.0, 256.0))
         ->capture_default_str();
     command->add_option("--manifest", args->manifest,
                         "Record this reference (scene hash, settings, estimated error, time) in a JSON manifest");
