@@ -39,4 +39,12 @@ private:
 // in-memory image is a bug in the caller, not something the user can fix, hence not UserError.
 void require_consistent_image(const ImageRGBA32F& image);
 
+// The NaN and infinite values in the image's RGBA and its layers.
+std::size_t count_nonfinite_values(const ImageRGBA32F& image);
+
+// Throws UserError naming `what` (the image's origin) when the image holds a NaN or an infinity:
+// a command never writes one and exits 0. Scene values beyond what 32-bit floats hold (radiance,
+// irradiance, amplitudes, sizes) are the usual cause, hence a user error.
+void require_finite_image(const ImageRGBA32F& image, const std::string& what);
+
 }  // namespace vkw

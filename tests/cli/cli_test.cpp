@@ -199,6 +199,21 @@ TEST(cli, OutOfRangeOptionsAreUserErrors) {
                          1, "cannot make it a folder");
 }
 
+// A scene value beyond 32-bit floats makes non-finite pixels: exit 1, nothing written, never exit 0
+// with NaN or infinity in the file.
+TEST(cli, NonFiniteImagesAreRefusedAndNotWritten) {
+    const std::string calm = std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json";
+    const std::string huge = " --set 'sun.irradiance=[1e300, 1e300, 1e300]'";
+    for (const char* command : {"render", "reference"}) {
+        const fs::path out = scratch(std::string("nonfinite_") + command + ".exr");
+        fs::remove(out);
+        expect_clean_failure(
+            run_vkwater(std::string(command) + " " + calm + " --width 16 --height 12 --out " + out.string() + huge), 1,
+            "non-finite values (NaN or infinity), so nothing was written");
+        EXPECT_FALSE(fs::exists(out)) << command;
+    }
+}
+
 TEST(cli, UnknownFlag) {
     const CommandRun run = run_vkwater("render " + kPool + " --out x.exr --no-such-flag");
     EXPECT_EQ(run.exit_code, 1) << run.output;

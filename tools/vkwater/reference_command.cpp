@@ -104,6 +104,7 @@ int run_reference(const ReferenceArgs& args) {
     ref::ReferenceReport report;
     const ImageRGBA32F image = ref::render_reference(scene, options, &report);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    require_finite_image(image, "the reference image");
     write_exr(args.out, image);
     std::printf("wrote %s (%ux%u, reference, layers RGBA + caustic) in %.2f s\n", args.out.c_str(), args.width,
                 args.height, seconds);

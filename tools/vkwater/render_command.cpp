@@ -125,6 +125,7 @@ int run_render(const RenderArgs& args) {
     std::printf("  %-24s %8.3f ms (CPU)\n", "declare + compile graph", declare_ms);
 
     context.reset();  // tear the device down now: teardown can report validation messages too
+    require_finite_image(result.image, "the rendered image (--check-finite names the first pass that made one)");
     if (kind == OutputKind::Exr) {
         const ExrWriteReport report =
             write_exr(out, result.image, args.half ? ExrPixelType::Half : ExrPixelType::Float);
