@@ -214,6 +214,17 @@ TEST(cli, NonFiniteImagesAreRefusedAndNotWritten) {
     }
 }
 
+// A wave far shorter than the reference's beam maps can resolve is refused before any work (a
+// 1e-6 m wavelength asked for a 35 GB map and crashed), naming the shortest accepted wavelength.
+TEST(cli, TheReferenceRefusesWavesItCannotResolve) {
+    const CommandRun run =
+        run_vkwater("reference " + kPool + " --width 8 --height 6 --out " + scratch("short.exr").string() +
+                    " --set 'water.waves.components[0].wavelength=1e-6'");
+    expect_clean_failure(run, 1, "water.waves: the shortest wavelength, 1e-06 m, needs");
+    EXPECT_NE(run.output.find("(accepted: at most 16384, a wavelength of at least 0.0391 m)"), std::string::npos)
+        << run.output;
+}
+
 TEST(cli, UnknownFlag) {
     const CommandRun run = run_vkwater("render " + kPool + " --out x.exr --no-such-flag");
     EXPECT_EQ(run.exit_code, 1) << run.output;

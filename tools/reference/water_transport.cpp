@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 
@@ -66,6 +67,22 @@ WaterTransport::WaterTransport(const Scene& scene, const Quality& quality) : sce
         shortest_wavelength_ = std::numeric_limits<double>::infinity();
         for (const WaveComponent& wave : scene.water->waves.components) {
             if (wave.amplitude > 0.0) shortest_wavelength_ = std::min(shortest_wavelength_, wave.wavelength);
+        }
+        // The beam maps' surface cells per side grow as 1 / wavelength; their work and memory as its
+        // square. Beyond kMaxBeamCells per side (a 1e-6 m wave asked for 6.4e8, a 35 GB map) the
+        // reference refuses, naming the wave and the shortest wavelength it accepts.
+        constexpr double kMaxBeamCells = 16384.0;
+        const double densest = std::max(quality.cells_per_wavelength, quality.in_scatter_cells_per_wavelength);
+        const double wanted = std::ceil(2.0 * half_extent_ / shortest_wavelength_ * densest);
+        if (!(wanted <= kMaxBeamCells)) {
+            char text[300];
+            std::snprintf(text, sizeof text,
+                          "%s: water.waves: the shortest wavelength, %g m, needs %.3g beam cells per side over the "
+                          "water's %g m at %g cells per wavelength (accepted: at most %.0f, a wavelength of at least "
+                          "%.3g m)",
+                          scene.source.string().c_str(), shortest_wavelength_, wanted, 2.0 * half_extent_, densest,
+                          kMaxBeamCells, 2.0 * half_extent_ * densest / kMaxBeamCells);
+            throw UserError(text);
         }
         const auto cells =
             static_cast<uint32_t>(std::ceil(2.0 * half_extent_ / shortest_wavelength_ * quality.cells_per_wavelength));
