@@ -225,6 +225,13 @@ TEST(cli, TheReferenceRefusesWavesItCannotResolve) {
         << run.output;
 }
 
+// A command-line error is one line with the vkwater: prefix, as every other error is.
+TEST(cli, CommandLineErrorsAreOneLine) {
+    const CommandRun run = run_vkwater("passes " + kPool + " --width 0");
+    expect_clean_failure(run, 1, "vkwater: --width: Value 0 not in range 1 to 16384");
+    EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+}
+
 TEST(cli, UnknownFlag) {
     const CommandRun run = run_vkwater("render " + kPool + " --out x.exr --no-such-flag");
     EXPECT_EQ(run.exit_code, 1) << run.output;

@@ -31,9 +31,11 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
-        // --help exits 0; every other parse error is the user's (exit 1).
-        const int code = app.exit(error);
-        return code == 0 ? vkw::kExitOk : vkw::kExitUserError;
+        // --help and --version print and exit 0; every other parse error is the user's (exit 1), on
+        // one line like every other error (CLI11's own form adds a second line).
+        if (error.get_exit_code() == 0) return app.exit(error);
+        std::fprintf(stderr, "vkwater: %s (vkwater help [COMMAND] lists the options)\n", error.what());
+        return vkw::kExitUserError;
     }
     if (help->parsed()) {
         if (help_topic.empty()) {
