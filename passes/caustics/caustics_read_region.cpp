@@ -124,7 +124,9 @@ CausticReadRegion caustic_read_region(const CausticMapFrame& frame, const Causti
     const glm::dvec2 shift = glm::abs(frame.shear) * std::max(in.level - lowest, in.amplitude);
     const Box projecting{{map_lo.x - shift.x, lowest, map_lo.y - shift.y},
                          {map_hi.x + shift.x, top, map_hi.y + shift.y}};
-    const Box slab{{-in.half_extent, in.level - in.amplitude, -in.half_extent}, {in.half_extent, top, in.half_extent}};
+    // Gerstner terms move surface points sideways by up to the amplitude, past the grid's extent.
+    const double half_width = in.half_extent + in.amplitude;
+    const Box slab{{-half_width, in.level - in.amplitude, -half_width}, {half_width, top, half_width}};
 
     // Per block of the screen (kBlocks^2 sub-frusta), the read sets' images in the map, each convex.
     constexpr int kBlocks = 8, kSides = 8;
