@@ -24,6 +24,10 @@ constexpr std::size_t kNoMatch = 4;
 
 std::size_t edit_score(std::size_t distance) { return distance < kMaxEdits ? distance : kMaxEdits + 1; }
 
+// Two edits turn most short words into each other ("size" into "time"): a word of up to five
+// letters may be one edit off, a longer one two.
+std::size_t allowed_edits(std::size_t length) { return length <= 5 ? 1 : kMaxEdits; }
+
 }  // namespace
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {
@@ -53,7 +57,9 @@ std::optional<std::string> closest_key(std::string_view typed, const std::vector
         const std::string key_loose = loose(key);
         const std::size_t distance = edit_distance(typed_loose, key_loose);
         std::size_t score = kNoMatch;
-        if (distance <= kMaxEdits && distance < typed_loose.size()) score = edit_score(distance);
+        if (distance <= allowed_edits(typed_loose.size()) && distance < typed_loose.size()) {
+            score = edit_score(distance);
+        }
         if (std::min(typed_loose.size(), key_loose.size()) >= 2 &&
             (key_loose.starts_with(typed_loose) || typed_loose.starts_with(key_loose))) {
             score = std::min(score, kPrefixScore);

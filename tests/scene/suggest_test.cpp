@@ -28,6 +28,10 @@ TEST(scene_suggest, ClosestKey) {
     EXPECT_EQ(closest_key("colour", kCameraKeys), std::nullopt);
     EXPECT_EQ(closest_key("ab", kCameraKeys), std::nullopt);  // two edits from "far" is no evidence
     EXPECT_EQ(closest_key("x", {}), std::nullopt);
+    // A short word two edits away is no evidence ("size" would become "time").
+    EXPECT_EQ(closest_key("size", {"level", "half_extent", "time", "ior"}), std::nullopt);
+    EXPECT_EQ(closest_key("tme", {"level", "half_extent", "time", "ior"}), "time");  // one edit
+    EXPECT_EQ(closest_key("exposrue", kCameraKeys), "exposure");                     // a long word may be two off
 }
 
 }  // namespace
