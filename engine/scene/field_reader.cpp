@@ -213,13 +213,23 @@ void FieldReader::declare(std::initializer_list<std::string_view> keys) {
     for (const std::string_view key : keys) find(key);
 }
 
+void FieldReader::belong_elsewhere(std::initializer_list<std::string_view> keys, std::string fix) {
+    for (const std::string_view key : keys) elsewhere_.emplace_back(std::string(key), fix);
+}
+
 void FieldReader::finish() {
     if (finished_) return;
     finished_ = true;
     for (const auto& item : object_.items()) {
         if (std::find(known_.begin(), known_.end(), item.key()) != known_.end()) continue;
         std::string what = "unknown field";
-        if (const auto hint = closest_key(item.key(), known_)) what += " (did you mean '" + *hint + "'?)";
+        const auto other = std::find_if(elsewhere_.begin(), elsewhere_.end(),
+                                        [&](const auto& entry) { return entry.first == item.key(); });
+        if (other != elsewhere_.end()) {
+            what = "not a field of this model (" + other->second + ")";
+        } else if (const auto hint = closest_key(item.key(), known_)) {
+            what += " (did you mean '" + *hint + "'?)";
+        }
         errors_.fail(path_of(item.key()), what, join(known_));
     }
     if (!missing_.empty()) {

@@ -102,6 +102,9 @@ public:
     // decides its other fields declares the fields of every kind when the kind is missing, so
     // that finish() reports a misspelt kind field rather than the fields it would have allowed.
     void declare(std::initializer_list<std::string_view> keys);
+    // Keys that belong to another setting of this object (a different model): still unknown
+    // here, but refused with `fix` (what to change) instead of a spelling hint.
+    void belong_elsewhere(std::initializer_list<std::string_view> keys, std::string fix);
 
     // Reports the first unknown key, then the first missing required field. Idempotent.
     void finish();
@@ -131,7 +134,8 @@ private:
     const nlohmann::json& object_;
     std::string path_;
     const ErrorContext& errors_;
-    std::vector<std::string> known_;  // every key asked for, in order: the valid keys here
+    std::vector<std::string> known_;                              // every key asked for, in order: the valid keys here
+    std::vector<std::pair<std::string, std::string>> elsewhere_;  // key, the fix that makes it valid
     std::vector<Missing> missing_;
     bool finished_ = false;
 };

@@ -65,8 +65,11 @@ Sky read_sky(FieldReader& fields) {
     sky.model = fields.choice("model", kSkyModels, defaults.model);
     if (sky.model == SkyModel::Constant) {
         sky.radiance = fields.vec3("radiance", radiance);
+        fields.belong_elsewhere({"zenith", "horizon", "ground", "exponent"},
+                                "it belongs to the gradient sky: add \"model\": \"gradient\"");
         return sky;
     }
+    fields.belong_elsewhere({"radiance"}, "it belongs to the constant sky: remove \"model\" or set it to \"constant\"");
     sky.zenith = fields.vec3("zenith", radiance);
     sky.horizon = fields.vec3("horizon", radiance);
     // The horizon's radiance continued below it: no step at the horizon.

@@ -42,8 +42,15 @@ TEST(scene_sky, GradientFormulaAndItsAverage) {
 
 TEST(scene_sky, GradientFieldsBelongToTheGradientModel) {
     const std::string message = test::user_error_of([] { with({"sky.zenith=[1,1,1]"}); });
-    EXPECT_NE(message.find("sky.zenith: unknown field"), std::string::npos) << message;
+    EXPECT_NE(message.find("sky.zenith: not a field of this model (it belongs to the gradient sky: add "
+                           "\"model\": \"gradient\")"),
+              std::string::npos)
+        << message;
     EXPECT_NE(message.find("(accepted: model, radiance)"), std::string::npos) << message;
+    // And the constant sky's field under the gradient model.
+    const std::string other = test::user_error_of([] { with({"sky.model=gradient", "sky.radiance=[1,1,1]"}); });
+    EXPECT_NE(other.find("sky.radiance: not a field of this model (it belongs to the constant sky"), std::string::npos)
+        << other;
 }
 
 TEST(scene_camera, DirectionFormLooksAlongTheNormalisedVector) {
