@@ -86,6 +86,8 @@ TEST(ViewScript, RefusesMalformedLinesNamingFileAndLine) {
         {"3: pause now", "pause takes 0 arguments, got 1"},
         {"3: time soon", "time: 'soon' is not a finite number"},
         {"3: wait-file", "wait-file takes 1 argument, got 0 (accepted: wait-file PATH)"},
+        {"3: screenshot shot", "screenshot 'shot' does not end in .exr (accepted: screenshot PATH.exr"},
+        {"3: screenshot shot.png", "screenshot 'shot.png' does not end in .exr"},
     };
     for (const Case& c : cases) {
         const std::string message = error_of(c.text);

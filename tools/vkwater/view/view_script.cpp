@@ -3,8 +3,10 @@
 #include "engine/core/errors.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -13,7 +15,7 @@ namespace {
 
 constexpr std::string_view kForms =
     "FRAME: camera PX PY PZ TX TY TZ | move PX PY PZ TX TY TZ N | resize W H | set KEY=VALUE | "
-    "screenshot PATH | pause | resume | time SECONDS | mode orbit|fly | reload-shaders | wait-file PATH";
+    "screenshot PATH.exr | pause | resume | time SECONDS | mode orbit|fly | reload-shaders | wait-file PATH";
 
 struct VerbName {
     ScriptVerb verb;
@@ -134,10 +136,20 @@ ScriptCommand parse_line(std::string_view line, const LineErrors& errors) {
             command.text = text;
             break;
         }
-        case ScriptVerb::Screenshot:
+        case ScriptVerb::Screenshot: {
             expect_arguments(errors, args, 1, "screenshot PATH");
+            // The screenshot is the EXR, its preview the same name with .png: a path of another
+            // extension (or none) would get an EXR under a misleading name.
+            std::string extension = std::filesystem::path(args[0]).extension().string();
+            std::transform(extension.begin(), extension.end(), extension.begin(),
+                           [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+            if (extension != ".exr") {
+                errors.fail("screenshot '" + std::string(args[0]) + "' does not end in .exr",
+                            "screenshot PATH.exr; the PNG preview is written beside it");
+            }
             command.text = args[0];
             break;
+        }
         case ScriptVerb::WaitFile:
             expect_arguments(errors, args, 1, "wait-file PATH");
             command.text = args[0];
