@@ -212,6 +212,8 @@ bool ParameterPanel::draw_methods(Scene& scene) {
 bool ParameterPanel::draw(Scene& scene, const fg::FrameNeeds* needs, ViewControls& controls) {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
+    // Collapsed at first: open, the panel and the statistics covered most of an 800x600 window.
+    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
     ImGui::Begin("Scene (F1 hides)");
     ImGui::PushItemWidth(-150.0f);  // room for the labels right of the widgets
     bool changed = draw_sun(scene);
