@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <functional>
 #include <string>
@@ -21,6 +22,9 @@ struct DeviceOptions {
     bool validation = false;
 };
 void add_device_options(CLI::App& command, DeviceOptions& options);
+
+// --width and --height in pixels, each 1 to 16384 (the largest image side any command takes).
+void add_image_size_options(CLI::App& command, uint32_t& width, uint32_t& height);
 
 // A check for number options that refuses NaN and infinities: CLI::Range lets NaN through, since
 // every comparison with it is false.

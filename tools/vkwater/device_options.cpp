@@ -1,3 +1,4 @@
+// Options several subcommands share: the Vulkan device, the image size.
 #include "tools/vkwater/commands.hpp"
 
 namespace vkw::cli {
@@ -9,6 +10,13 @@ void add_device_options(CLI::App& command, DeviceOptions& options) {
     command.add_flag("--validation", options.validation,
                      "Run with VK_LAYER_KHRONOS_validation and synchronization validation; any error or "
                      "warning fails the run (exit 2)");
+}
+
+void add_image_size_options(CLI::App& command, uint32_t& width, uint32_t& height) {
+    command.add_option("--width", width, "Image width in pixels")->check(CLI::Range(1u, 16384u))->capture_default_str();
+    command.add_option("--height", height, "Image height in pixels")
+        ->check(CLI::Range(1u, 16384u))
+        ->capture_default_str();
 }
 
 }  // namespace vkw::cli

@@ -67,12 +67,7 @@ Run add_passes_command(CLI::App& app) {
     auto args = std::make_shared<PassesArgs>();
     CLI::App* command = app.add_subcommand("passes", "Print the frame graph a scene compiles to, and why");
     command->add_option("scene", args->scene, "Scene file (JSON)")->required();
-    command->add_option("--width", args->width, "Output width in pixels")
-        ->check(CLI::Range(1u, 16384u))
-        ->capture_default_str();
-    command->add_option("--height", args->height, "Output height in pixels")
-        ->check(CLI::Range(1u, 16384u))
-        ->capture_default_str();
+    add_image_size_options(*command, args->width, args->height);
     command->add_option("--dot", args->dot, "Also write the graph as Graphviz to this file");
     command->add_flag("--barriers", args->barriers, "Also print every derived barrier");
     command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");

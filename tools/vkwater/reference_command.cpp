@@ -123,12 +123,7 @@ Run add_reference_command(CLI::App& app) {
         app.add_subcommand("reference", "Render a scene with the CPU reference renderer (ground truth)");
     command->add_option("scene", args->scene, "Scene file (JSON)")->required();
     command->add_option("--out,-o", args->out, "Output OpenEXR file (RGBA and the caustic layer)")->required();
-    command->add_option("--width", args->width, "Image width in pixels")
-        ->check(CLI::Range(1u, 16384u))
-        ->capture_default_str();
-    command->add_option("--height", args->height, "Image height in pixels")
-        ->check(CLI::Range(1u, 16384u))
-        ->capture_default_str();
+    add_image_size_options(*command, args->width, args->height);
     command
         ->add_option("--threads", args->threads,
                      "Worker threads (0: every hardware thread; more than the hardware has are clamped to it, with a "
