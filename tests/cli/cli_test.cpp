@@ -232,6 +232,17 @@ TEST(cli, CommandLineErrorsAreOneLine) {
     EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
 }
 
+// Off a terminal the reference reports its progress a line per tenth instead of a bar (it used to
+// print nothing until it finished).
+TEST(cli, TheReferenceReportsProgressOffATerminal) {
+    const CommandRun run =
+        run_vkwater("reference " + std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json --width 16 --height 12 --out " +
+                    scratch("progress.exr").string());
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    EXPECT_NE(run.output.find("reference: 10%\n"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("reference: 100%\n"), std::string::npos) << run.output;
+}
+
 TEST(cli, UnknownFlag) {
     const CommandRun run = run_vkwater("render " + kPool + " --out x.exr --no-such-flag");
     EXPECT_EQ(run.exit_code, 1) << run.output;

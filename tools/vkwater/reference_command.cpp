@@ -91,13 +91,21 @@ int run_reference(const ReferenceArgs& args) {
     }
     options.quality.caustic_in_scatter = true;  // the model's godrays under waves
     options.quality.cells_per_wavelength = args.cells_per_wavelength;
-    // A progress bar only on a terminal: logs and CI output stay clean.
+    // A progress bar on a terminal; elsewhere (logs, CI) a line at every tenth, so that a long
+    // reference is never silent.
     if (::isatty(STDERR_FILENO)) {
         options.progress = [](double fraction) {
             const int filled = static_cast<int>(fraction * 40);
             std::fprintf(stderr, "\r[%-40.*s] %3d%%", filled, "########################################",
                          static_cast<int>(fraction * 100));
             if (fraction >= 1.0) std::fprintf(stderr, "\n");
+        };
+    } else {
+        options.progress = [next = 1](double fraction) mutable {
+            while (next <= 10 && fraction >= next / 10.0) {
+                std::fprintf(stderr, "reference: %d%%\n", next * 10);
+                ++next;
+            }
         };
     }
     const auto start = std::chrono::steady_clock::now();
