@@ -142,85 +142,54 @@ bool misses_read_texels(ivec2 lo, ivec2 hi) {
     return true;
 }
 
-// Traces the photon, finds the box of its kernel's taps, and deposits unless the box misses the
-// texels the frame reads.
+// Traces the photon and deposits it unless its kernel can reach no texel the frame reads.
 void main() {
     GridPhoton p;
     const uint sub = pc.sub_and_flags & 0xffu;
     const CausticPhotonChunk chunk =
         CausticPhotonChunk(pc.resolution, sub, pc.first_row, pc.rows, (pc.sub_and_flags & 0x100u) != 0u);
     const bool cull = (pc.sub_and_flags & 0x200u) != 0u;
-    const bool traced = trace_grid_photon(gl_GlobalInvocationID.xy, chunk, pc.source, p);
-    const vec2 coord = traced ? caustic_texel_coord(p.photon.hit, pc.source.space) - 0.5 : vec2(0.0);
+    if (!trace_grid_photon(gl_GlobalInvocationID.xy, chunk, pc.source, p)) return;
+    const vec2 coord = caustic_texel_coord(p.photon.hit, pc.source.space) - 0.5;
     // Far off the map (or not a number): every tap is outside, and int() of it is undefined.
-    const bool far = traced && !all(lessThan(abs(coord), vec2(1e7)));
-    if (far) {
+    if (!all(lessThan(abs(coord), vec2(1e7)))) {
         for (uint ch = 0u; ch < 3u; ++ch) deposit(ivec2(-2), ch, uint64_t(p.q[ch] + 0.5));
+        return;
     }
-    const bool splat = traced && !far;
-    bool kept = splat;
+    bool kept = true;
 #if !defined(VKWATER_SPLAT_FOOTPRINT)
     // The tent's taps lie within kMaxSplatHalfWidth texels of its centre's texel (the bilinear
-    // kernel's within one): a photon farther than that from every read texel is left out before
-    // its neighbours are traced to size its kernel.
-    // One look-up in the widened rows.
-    if (cull && kept) {
+    // kernel's within one): one look-up in the widened rows leaves out a photon farther than that
+    // from every read texel, before its neighbours are traced to size its kernel.
+    if (cull) {
         const ivec2 centre = ivec2(floor(coord));
         const int height = int(pc.source.space.v_axis.w);
         if (centre.y < 0 || centre.y >= height) {
-            kept = centre.y + int(kMaxSplatHalfWidth) >= 0 && centre.y - int(kMaxSplatHalfWidth) < height &&
-                   !misses_read_texels(centre - int(kMaxSplatHalfWidth), centre + int(kMaxSplatHalfWidth));
+            kept = !misses_read_texels(centre - int(kMaxSplatHalfWidth), centre + int(kMaxSplatHalfWidth));
         } else {
             const uint span = read_rows[height + centre.y];
             kept = centre.x >= int(span & 0xffffu) && centre.x < int(span >> 16);
         }
     }
 #endif
-    // The kernel's sizing (the adaptive one traces two neighbours) and the deposit, for a kept
-    // photon only.
-    if (kept) {
-        ivec2 lo = ivec2(1), hi = ivec2(0);  // the taps' box; empty without taps
+    if (!kept) return;
 #if defined(VKWATER_SPLAT_BILINEAR)
-        if (splat) {
-            lo = ivec2(floor(coord));
-            hi = lo + 1;
-        }
+    deposit_bilinear(coord, p.q);
 #else
-        SplatAxis x_axis = SplatAxis(0, 0, 0.0, 1.0), y_axis = x_axis;
-        bool tent = splat;
 #if defined(VKWATER_SPLAT_FOOTPRINT)
-        ivec2 first = ivec2(0), size = ivec2(0);
-        float weight[64];
-        float total = 0.0;
-        vec2 corner[4];
-        const bool footprint = splat && footprint_corners(p.cell, p.uv0, p.uv1, p.photon, pc.source.space, corner) &&
-                               footprint_weights(corner, first, size, weight, total);
-        if (footprint) {
-            lo = first;
-            hi = first + size - 1;
-            tent = false;
-        }
-#endif
-        if (tent) {
-            const vec2 half_width = splat_half_width(p.cell, p.at, 1.0 / float(sub), p.photon, pc.source.space);
-            x_axis = splat_axis(coord.x, half_width.x);
-            y_axis = splat_axis(coord.y, half_width.y);
-            lo = ivec2(x_axis.first, y_axis.first);
-            hi = lo + ivec2(x_axis.count, y_axis.count) - 1;
-        }
-#endif
-#if defined(VKWATER_SPLAT_FOOTPRINT)
-        // Left out: a photon whose taps all fall outside the texels the frame can read
+    ivec2 first, size;
+    float weight[64];
+    float total;
+    vec2 corner[4];
+    if (footprint_corners(p.cell, p.uv0, p.uv1, p.photon, pc.source.space, corner) &&
+        footprint_weights(corner, first, size, weight, total)) {
+        // Left out: a footprint whose texels all fall outside the ones the frame can read
         // (caustics_read_region.hpp). What every read texel receives is unchanged.
-        if (cull && misses_read_texels(lo, hi)) return;
-#endif
-#if defined(VKWATER_SPLAT_BILINEAR)
-        if (splat) deposit_bilinear(coord, p.q);
-#else
-#if defined(VKWATER_SPLAT_FOOTPRINT)
-        if (footprint) deposit_footprint(first, size, weight, total, p.q);
-#endif
-        if (tent) deposit_tent(x_axis, y_axis, p.q);
-#endif
+        if (!(cull && misses_read_texels(first, first + size - 1))) deposit_footprint(first, size, weight, total, p.q);
+        return;
     }
+#endif
+    const vec2 half_width = splat_half_width(p.cell, p.at, 1.0 / float(sub), p.photon, pc.source.space);
+    deposit_tent(splat_axis(coord.x, half_width.x), splat_axis(coord.y, half_width.y), p.q);
+#endif
 }
