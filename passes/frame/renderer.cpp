@@ -16,6 +16,7 @@
 #include "passes/common/frame_keys.hpp"
 #include "passes/frame/frame_needs.hpp"
 #include "passes/godrays/godrays.hpp"
+#include "passes/godrays/godrays_composite.hpp"
 #include "passes/present/readback.hpp"
 #include "passes/receivers/floor.hpp"
 #include "passes/receivers/receiver_meshes.hpp"
@@ -39,6 +40,16 @@
 namespace vkw {
 
 namespace {
+// A layer read back as RGBA32F, as the image's RGB layer `name` (the alpha holds nothing).
+ExtraLayer rgb_layer(const std::string& name, const Buffer& readback, size_t pixels) {
+    const auto* rgba = static_cast<const float*>(readback.mapped());
+    ExtraLayer layer{name, std::vector<float>(pixels * 3)};
+    for (size_t i = 0; i < pixels; ++i) {
+        for (int c = 0; c < 3; ++c) layer.rgb[3 * i + c] = rgba[4 * i + c];
+    }
+    return layer;
+}
+
 // Texels per side of the light-space caustic map: matched to the photon grid (R photons
 // per side, plus the fit's one-texel border), so that each texel receives about one
 // photon on flat water and the 2x2 splat kernel leaves no holes between photons (the
@@ -127,8 +138,9 @@ passes::CausticReadInputs caustic_read_inputs(const Scene& scene, double aspect,
 
 void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
                        uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
-                       const passes::ReceiverMeshes* receivers, const FrameOutput* output, VkBuffer caustic_readback) {
-    const bool caustic_layer = caustic_readback != VK_NULL_HANDLE && !output;
+                       const passes::ReceiverMeshes* receivers, const FrameOutput* output, LayerReadbacks layers) {
+    const bool caustic_layer = layers.caustic != VK_NULL_HANDLE && !output;
+    const bool inscatter_layer = layers.inscatter != VK_NULL_HANDLE && !output;
     // The waves' amplitude bound, once: for the FFT ocean it builds the CPU surface.
     const double amplitude = scene.water ? water_bounds(scene).hi.y - scene.water->level : 0.0;
     passes::add_frame_constants_upload(graph, constants);
@@ -233,8 +245,8 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
     // Godrays only with a decision, as the frame constants' analytic in-scatter switch has it.
     const fg::EffectDecision* godrays = graph.needs().find(Effect::VolumeCaustics);
     if (surface && godrays && godrays->needed) {
-        passes::add_godray_passes(
-            graph, {*surface, scene.water->grid_resolution, amplitude, scene.effects.godrays, width, height});
+        passes::add_godray_passes(graph, {*surface, scene.water->grid_resolution, amplitude, scene.effects.godrays,
+                                          width, height, inscatter_layer});
     }
     if (output) {
         output->add_passes(graph, graph.blackboard().get(keys::kHdrColor));
@@ -242,8 +254,12 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
     }
     passes::add_readback_pass(graph, graph.blackboard().get(keys::kHdrColor), readback, hdr_bytes(width, height));
     if (caustic_layer) {
-        passes::add_readback_pass(graph, graph.blackboard().get(keys::kCausticLayer), caustic_readback,
+        passes::add_readback_pass(graph, graph.blackboard().get(keys::kCausticLayer), layers.caustic,
                                   hdr_bytes(width, height), "caustic layer readback");
+    }
+    if (inscatter_layer && graph.blackboard().has(keys::kInScatterLayer)) {
+        passes::add_readback_pass(graph, graph.blackboard().get(keys::kInScatterLayer), layers.inscatter,
+                                  hdr_bytes(width, height), "in-scatter layer readback");
     }
 }
 
@@ -252,9 +268,10 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
 struct Renderer::Readback {
     uint32_t width = 0, height = 0;
     bool with_hdr = false;  // false for a window's frame, which ends in its own hand-off
-    bool caustic_layer = false;
+    bool caustic_layer = false, inscatter_layer = false;
     Buffer hdr;
-    Buffer caustic;  // RenderOptions::caustic_layer only
+    Buffer caustic;    // RenderOptions::caustic_layer only
+    Buffer inscatter;  // RenderOptions::inscatter_layer only
 };
 
 // This frame's declaration and the executor whose resources run it: the executor outlives the
@@ -294,17 +311,19 @@ const Renderer::Readback& Renderer::readback_targets(const RenderOptions& option
     // A window's frame ends in its own hand-off (FrameOutput), not in a readback: no buffers.
     const bool hdr = !window_output;
     const bool caustic = hdr && options.caustic_layer;
+    const bool inscatter = hdr && options.inscatter_layer;
     if (readback_ && readback_->width == options.width && readback_->height == options.height &&
-        readback_->with_hdr == hdr && readback_->caustic_layer == caustic) {
+        readback_->with_hdr == hdr && readback_->caustic_layer == caustic && readback_->inscatter_layer == inscatter) {
         return *readback_;
     }
     frame_.reset();  // the compiled frame imported the old buffers
     readback_ = std::make_unique<Readback>();
-    *readback_ = {options.width, options.height, hdr, caustic, {}, {}};
+    *readback_ = {options.width, options.height, hdr, caustic, inscatter, {}, {}, {}};
     if (hdr) {
         const BufferDesc desc{hdr_bytes(options.width, options.height), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true};
         readback_->hdr = Buffer(context_, desc, "HDR readback");
         if (caustic) readback_->caustic = Buffer(context_, desc, "caustic layer readback");
+        if (inscatter) readback_->inscatter = Buffer(context_, desc, "in-scatter layer readback");
     }
     return *readback_;
 }
@@ -321,14 +340,10 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options) 
     result.image.height = static_cast<int>(options.height);
     result.image.rgba.resize(size_t{options.width} * options.height * 4);
     std::memcpy(result.image.rgba.data(), readback_->hdr.mapped(), result.image.rgba.size() * sizeof(float));
-    if (options.caustic_layer) {
-        // RGBA on the device, RGB in the image's layer (the alpha holds nothing).
-        const auto* rgba = static_cast<const float*>(readback_->caustic.mapped());
-        ExtraLayer layer{"caustic", std::vector<float>(size_t{options.width} * options.height * 3)};
-        for (size_t i = 0; i < size_t{options.width} * options.height; ++i) {
-            for (int c = 0; c < 3; ++c) layer.rgb[3 * i + c] = rgba[4 * i + c];
-        }
-        result.image.layers.push_back(std::move(layer));
+    const size_t pixels = size_t{options.width} * options.height;
+    if (options.caustic_layer) result.image.layers.push_back(rgb_layer("caustic", readback_->caustic, pixels));
+    if (options.inscatter_layer && frame.graph->blackboard().has(keys::kInScatterLayer)) {
+        result.image.layers.push_back(rgb_layer("inscatter", readback_->inscatter, pixels));
     }
     return result;
 }
@@ -407,7 +422,7 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
     auto graph = std::make_unique<fg::FrameGraph>(std::move(needs));
     graph->set_default_recording(options.recording);
     build_frame_graph(*graph, scene, constants_.get(), options.width, options.height, readback.hdr.handle(), ocean,
-                      receivers, output, readback.caustic.handle());
+                      receivers, output, {readback.caustic.handle(), readback.inscatter.handle()});
     // Timed frames carry the unit their times are reported in; untimed ones (tests) need none.
     if (options.timing != fg::TimingMode::None) passes::add_calibration_pass(*graph);
     graph->compile(options.width, options.height);

@@ -32,6 +32,9 @@ struct RenderOptions {
     fg::RecordingKind recording = fg::RecordingKind::DynamicRendering;
     // Also render the caustic layer (passes/caustics/caustic_layer.hpp) into the image's layer "caustic".
     bool caustic_layer = false;
+    // Also render the in-scatter layer (keys::kInScatterLayer, passes/godrays/godrays_composite.hpp)
+    // into the image's layer "inscatter" when the godrays run; a frame without them has no such layer.
+    bool inscatter_layer = false;
 };
 
 struct RenderResult {
@@ -55,18 +58,24 @@ struct FrameOutput {
 // `ocean` is the device copy of an FFT ocean's spectrum (nullptr for other waves);
 // `receivers` the scene's receiver meshes on the device (nullptr when it has none);
 // `output`, when given, ends the frame instead of the readback (which is then unused);
-// `caustic_readback`, when given (and no `output`), receives the caustic layer
-// (passes/caustics/caustic_layer.hpp), which the frame then renders.
+// `layers`' buffers, when given (and no `output`), receive the caustic layer
+// (passes/caustics/caustic_layer.hpp) and the in-scatter layer (passes/godrays/godrays_composite.hpp),
+// which the frame then renders (the in-scatter layer only where the godrays run).
 // What the photon pass's culling needs to know of the frame (passes/caustics/caustics_read_region.hpp):
 // the camera at `aspect`, the waves' bounds (`amplitude`, the slope from the wave model), the
 // lowest receiver, and from `needs` whether a ray can start in the water and whether the blur runs.
 passes::CausticReadInputs caustic_read_inputs(const Scene& scene, double aspect, const fg::FrameNeeds& needs,
                                               double amplitude, double lowest_receiver);
 
+struct LayerReadbacks {
+    VkBuffer caustic = VK_NULL_HANDLE;
+    VkBuffer inscatter = VK_NULL_HANDLE;
+};
+
 void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
                        uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
                        const passes::ReceiverMeshes* receivers, const FrameOutput* output = nullptr,
-                       VkBuffer caustic_readback = VK_NULL_HANDLE);
+                       LayerReadbacks layers = {});
 
 class Renderer {
 public:

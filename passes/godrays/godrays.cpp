@@ -28,7 +28,7 @@ void add_godray_passes(fg::FrameGraph& graph, const GodrayInputs& inputs) {
     if (settings.method == GodrayMethod::Marched) {
         const fg::ImageHandle radiance =
             add_godray_march_pass(graph, {view_depth, scale, settings.march_steps, inputs.max_amplitude, max_depth});
-        add_godray_composite_pass(graph, radiance, view_depth);
+        add_godray_composite_pass(graph, radiance, view_depth, inputs.inscatter_layer);
         return;
     }
     const fg::BufferHandle beams =
@@ -38,8 +38,8 @@ void add_godray_passes(fg::FrameGraph& graph, const GodrayInputs& inputs) {
         add_godray_lines_passes(graph, {beams, settings.grid, view_depth, width, height, inputs.max_amplitude});
     const fg::ImageHandle radiance = add_godray_resolve_pass(graph, counters, view_depth, scale, width, height);
     const fg::ImageHandle blurred_x = add_godray_blur_pass(graph, radiance, view_depth, scale, BlurAxis::X);
-    add_godray_composite_pass(graph, add_godray_blur_pass(graph, blurred_x, view_depth, scale, BlurAxis::Y),
-                              view_depth);
+    add_godray_composite_pass(graph, add_godray_blur_pass(graph, blurred_x, view_depth, scale, BlurAxis::Y), view_depth,
+                              inputs.inscatter_layer);
 }
 
 }  // namespace vkw::passes

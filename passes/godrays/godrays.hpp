@@ -25,11 +25,12 @@ struct GodrayInputs {
     double max_amplitude = 0.0;         // m: a bound on the waves' height above the mean level
     GodraySettings settings;
     uint32_t width = 800, height = 600;  // the output's size
+    bool inscatter_layer = false;        // also the in-scatter layer (keys::kInScatterLayer)
 };
 
 // Declares the passes after the water shading; reads keys::kFrameConstants, kSceneOptics,
 // kSceneDepth, kHdrColor and, when present, kCameraMedium, kCausticMap, kSunShadow; publishes the
-// new kHdrColor.
+// new kHdrColor (and kInScatterLayer when asked for).
 void add_godray_passes(fg::FrameGraph& graph, const GodrayInputs& inputs);
 
 }  // namespace vkw::passes

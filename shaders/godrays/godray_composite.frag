@@ -4,6 +4,7 @@
 // pixels around this pixel's position, those whose scene distance matches this pixel's within 5%
 // are blended bilinearly; where none does (a depth edge narrower than a godray pixel), the one
 // nearest in distance is taken. At the output's own resolution this is exactly a copy.
+// VKWATER_INSCATTER_LAYER writes the same radiance to a second target, the in-scatter layer.
 #extension GL_GOOGLE_include_directive : require
 
 #include "godrays/godray_view.glsl"
@@ -13,6 +14,9 @@ layout(set = 0, binding = 2) uniform sampler2D view_depth;   // r: distance to t
 layout(set = 0, binding = 3) uniform sampler2D scene_depth;  // D32, output resolution
 
 layout(location = 0) out vec4 out_radiance;
+#ifdef VKWATER_INSCATTER_LAYER
+layout(location = 1) out vec4 out_inscatter;
+#endif
 
 const float kSameSurface = 0.05;
 
@@ -42,4 +46,7 @@ void main() {
         }
     }
     out_radiance = vec4(weight > 0.0 ? sum / weight : nearest, 0.0);
+#ifdef VKWATER_INSCATTER_LAYER
+    out_inscatter = out_radiance;
+#endif
 }

@@ -362,11 +362,13 @@ TEST(cli, BenchSmokeTestWritesCsvAndSvgAndErrorFallsWithTheGrid) {
     std::ifstream csv(out / "sweep.csv");
     std::string line;
     std::getline(csv, line);
-    EXPECT_EQ(line, "setting,median_ms,spread_ms,rel_mse,flip,bias,rel_mse_4x,flip_4x,caustic_rel_mse,memory_bytes");
+    EXPECT_EQ(line,
+              "setting,median_ms,spread_ms,rel_mse,flip,bias,rel_mse_4x,flip_4x,caustic_rel_mse,inscatter_rel_mse,"
+              "memory_bytes");
     std::vector<std::vector<std::string>> rows;
     while (std::getline(csv, line)) rows.push_back(csv_fields(line));
     ASSERT_EQ(rows.size(), 4u);
-    for (const std::vector<std::string>& row : rows) ASSERT_EQ(row.size(), 10u) << row[0];
+    for (const std::vector<std::string>& row : rows) ASSERT_EQ(row.size(), 11u) << row[0];
     EXPECT_LT(std::stod(rows[2][3]), std::stod(rows[0][3])) << "the richer photon grid did not reduce the error:\n"
                                                             << run.output;
     for (const std::vector<std::string>& row : rows) {
@@ -377,8 +379,8 @@ TEST(cli, BenchSmokeTestWritesCsvAndSvgAndErrorFallsWithTheGrid) {
         }
     }
     // The 128 grid's surface vertices are about 60 times the 16 grid's (129^2 against 17^2).
-    EXPECT_GT(std::stoull(rows[2][9]), std::stoull(rows[0][9])) << run.output;
-    EXPECT_GT(std::stoull(rows[3][9]), std::stoull(rows[1][9])) << run.output;
+    EXPECT_GT(std::stoull(rows[2][10]), std::stoull(rows[0][10])) << run.output;
+    EXPECT_GT(std::stoull(rows[3][10]), std::stoull(rows[1][10])) << run.output;
 }
 
 TEST(cli, BenchSweepsAnySceneFieldOverEveryCombination) {

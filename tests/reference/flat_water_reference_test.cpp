@@ -1,8 +1,8 @@
 // The CPU reference renderer against the closed forms of docs/model.md for flat water:
 // radiance seen from above (section 3) at view elevations 5, 20, 45 and 90 degrees,
 // the floor's sun irradiance under the water for several sun angles (its caustic
-// layer), Snell's window radius seen from below (section 7), determinism, and a clear
-// refusal of what it does not compute yet.
+// layer), the in-scatter layer from above and from within (section 6), Snell's window radius seen
+// from below (section 7), determinism, and a clear refusal of what it does not compute yet.
 #include "engine/core/errors.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tools/reference/optics.hpp"
@@ -43,8 +43,9 @@ double fresnel_t(double cos_i) { return 1.0 - fresnel_reflectance(cos_i, 1.0, kI
 
 // docs/model.md section 3, written out here from its pieces: the floor's irradiance
 // E_floor = E_s cos(theta_s) T(theta_s) exp(-sigma_t d / cos(theta_t)) plus skylight,
-// then the view path of section 6 and the surface.
-glm::dvec3 closed_form_from_above(const Scene& scene, const glm::dvec3& view) {
+// then the view path of section 6 and the surface; the in-scatter term alone, carried through the
+// surface, also in `in_scatter` when given.
+glm::dvec3 closed_form_from_above(const Scene& scene, const glm::dvec3& view, glm::dvec3* in_scatter = nullptr) {
     const glm::dvec3 s = scene.sun.direction;
     const double cos_s = -s.y;
     const double sin_t_sun = std::sqrt(1 - cos_s * cos_s) / kIor, cos_t_sun = std::sqrt(1 - sin_t_sun * sin_t_sun);
@@ -74,11 +75,15 @@ glm::dvec3 closed_form_from_above(const Scene& scene, const glm::dvec3& view) {
         const double l_water = water_path_radiance(in);
         const double reflectance = 1.0 - fresnel_t(cos_v);
         radiance[c] = reflectance * scene.sky.radiance[c] + fresnel_t(cos_v) / (kIor * kIor) * l_water;
+        if (in_scatter) {
+            in.l_behind = 0.0;
+            (*in_scatter)[c] = fresnel_t(cos_v) / (kIor * kIor) * water_path_radiance(in);
+        }
     }
     return radiance;
 }
 
-TEST(reference_flat_water, RadianceFromAboveMatchesSection3) {
+TEST(reference_flat_water, RadianceAndItsInScatterFromAboveMatchSections3And6) {
     const Scene scene = calm_scene(60.0);
     const WaterTransport transport(scene);
     for (double elevation : {5.0, 20.0, 45.0, 90.0}) {
@@ -86,12 +91,51 @@ TEST(reference_flat_water, RadianceFromAboveMatchesSection3) {
         // Look along -z (sun toward +x): no sun glint in the reflected direction.
         const glm::dvec3 view = elevation == 90.0 ? glm::dvec3(0, -1, 0) : glm::dvec3(0, -std::sin(e), -std::cos(e));
         const PixelRadiance pixel = transport.trace_camera_ray({{0, 2, 0}, view});
-        const glm::dvec3 expected = closed_form_from_above(scene, view);
+        glm::dvec3 expected_in_scatter;
+        const glm::dvec3 expected = closed_form_from_above(scene, view, &expected_in_scatter);
         for (int c = 0; c < 3; ++c) {
             // Both sides are double precision; T_hemi comes from a numerical integral
             // exact to ~1e-9, which bounds the relative difference.
             EXPECT_NEAR(pixel.radiance[c], expected[c], 1e-8 * expected[c]) << elevation << " deg, channel " << c;
+            // The in-scatter alone (section 6's second term through the surface): the same closed
+            // form reached through different operations (the ray's crossing, the refraction), a
+            // few dozen roundings, ~1e-14; the crossing at kOffset from the hit moves the path's
+            // length by ~1e-9 m. It is part of the pixel, never the whole of it.
+            ASSERT_GT(expected_in_scatter[c], 0.0);
+            EXPECT_NEAR(pixel.in_scatter[c], expected_in_scatter[c], 1e-8 * expected_in_scatter[c])
+                << elevation << " deg, channel " << c;
+            EXPECT_LT(pixel.in_scatter[c], pixel.radiance[c]) << "the in-scatter alone, not the pixel's radiance";
         }
+    }
+}
+
+TEST(reference_flat_water, InScatterFromWithinIsSection6sTermOfTheViewSegment) {
+    // From 0.5 m down, 45 degrees below the horizon toward the floor 1.5 m down: a path of
+    // sqrt(2) m from depth z0 = 0.5, the segment of section 6 with nothing behind it.
+    const Scene scene = calm_scene(60.0, R"("position": [0, -0.5, 0], "target": [0, -1.5, -1])");
+    const WaterTransport transport(scene);
+    const glm::dvec3 view = glm::normalize(glm::dvec3(0, -1, -1));
+    const PixelRadiance pixel = transport.trace_camera_ray({{0, -0.5, 0}, view});
+    const glm::dvec3 s = scene.sun.direction;
+    const double cos_s = -s.y, sin_s = std::sqrt(1 - cos_s * cos_s);
+    const double sin_t = sin_s / kIor, cos_t = std::sqrt(1 - sin_t * sin_t);
+    const glm::dvec3 t_sun{s.x / sin_s * sin_t, -cos_t, s.z / sin_s * sin_t};
+    const glm::dvec3 sigma_t = scene.medium.sigma_t();
+    for (int c = 0; c < 3; ++c) {
+        const InScatterInput in{scene.medium.sigma_s[c],
+                                sigma_t[c],
+                                scene.medium.g,
+                                0.5,
+                                std::sqrt(2.0),
+                                view,
+                                t_sun,
+                                scene.sun.irradiance[c] * cos_s * fresnel_t(cos_s) / cos_t,
+                                0.0};
+        const double expected = water_path_radiance(in);
+        ASSERT_GT(expected, 0.0);
+        // Double precision on both sides; the floor's hit found by the BVH to ~1e-12 m.
+        EXPECT_NEAR(pixel.in_scatter[c], expected, 1e-10 * expected) << "channel " << c;
+        EXPECT_LT(pixel.in_scatter[c], pixel.radiance[c]);
     }
 }
 
@@ -117,8 +161,9 @@ TEST(reference_flat_water, CausticLayerIsTheUniformFloorIrradianceInEveryPixel) 
     const Scene scene = calm_scene(60.0, R"("position": [0, 2, 0], "target": [0, 0, -1])");
     const uint32_t width = 64, height = 48;
     const ImageRGBA32F image = render_reference(scene, {width, height, 0, {}});
-    ASSERT_EQ(image.layers.size(), 1u);
+    ASSERT_EQ(image.layers.size(), 2u);
     ASSERT_EQ(image.layers[0].name, "caustic");
+    ASSERT_EQ(image.layers[1].name, "inscatter");
     const WaterTransport transport(scene);
     const glm::dvec3 expected = transport.sun_irradiance_under_water({0, -kDepth, 0}, {0, 1, 0});
     for (size_t pixel = 0; pixel < size_t{width} * height; ++pixel) {
@@ -164,7 +209,7 @@ TEST(reference_flat_water, OutputIsIdenticalForAnyThreadCount) {
     const ImageRGBA32F one = render_reference(scene, {40, 30, 1, {}});
     const ImageRGBA32F two = render_reference(scene, {40, 30, 2, {}});
     EXPECT_EQ(one.rgba, two.rgba);
-    EXPECT_EQ(one.layers[0].rgb, two.layers[0].rgb);
+    for (size_t i = 0; i < one.layers.size(); ++i) EXPECT_EQ(one.layers[i].rgb, two.layers[i].rgb);
 }
 
 TEST(reference_flat_water, RefusesWhatItDoesNotComputeYetWithAClearMessage) {

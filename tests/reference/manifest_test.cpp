@@ -37,8 +37,9 @@ TEST(reference_manifest, EveryEntryMatchesItsSceneFileAndImage) {
         const ImageRGBA32F image = read_exr(kReferences / entry["reference"].get<std::string>());
         EXPECT_EQ(image.width, entry["width"].get<int>());
         EXPECT_EQ(image.height, entry["height"].get<int>());
-        ASSERT_EQ(image.layers.size(), 1u);
+        ASSERT_EQ(image.layers.size(), 2u);
         EXPECT_EQ(image.layers[0].name, "caustic");
+        EXPECT_EQ(image.layers[1].name, "inscatter");
     }
 }
 

@@ -26,17 +26,20 @@ void write_csv(const std::filesystem::path& file, const std::vector<SweepRow>& r
     std::ostringstream out;
     const std::string factor = std::to_string(downsample_factor) + "x";
     out << "setting,median_ms,spread_ms,rel_mse,flip,bias,rel_mse_" << factor << ",flip_" << factor
-        << ",caustic_rel_mse,memory_bytes\n";
+        << ",caustic_rel_mse,inscatter_rel_mse,memory_bytes\n";
     out.precision(6);
     for (const SweepRow& row : rows) {
         out << '"' << row.setting << "\"," << row.median_ms << ',' << row.spread_ms << ',' << row.rel_mse << ','
             << row.flip << ',' << row.bias << ',' << row.rel_mse_downsampled << ',' << row.flip_downsampled << ',';
-        if (row.caustic_rel_mse) {
-            out << *row.caustic_rel_mse;
-        } else {
-            out << "n/a";
+        for (const std::optional<double>& layer : {row.caustic_rel_mse, row.inscatter_rel_mse}) {
+            if (layer) {
+                out << *layer;
+            } else {
+                out << "n/a";
+            }
+            out << ',';
         }
-        out << ',' << row.memory_bytes << '\n';
+        out << row.memory_bytes << '\n';
     }
     write_file_checked(file, out.str());
 }
@@ -117,6 +120,9 @@ void write_svg(const std::filesystem::path& file, const std::string& title, cons
                                 {"|bias|", [](const SweepRow& r) { return std::optional(r.bias); }}};
     if (std::any_of(rows.begin(), rows.end(), [](const SweepRow& r) { return r.caustic_rel_mse.has_value(); })) {
         metrics.push_back({"relMSE of the caustic layer", [](const SweepRow& r) { return r.caustic_rel_mse; }});
+    }
+    if (std::any_of(rows.begin(), rows.end(), [](const SweepRow& r) { return r.inscatter_rel_mse.has_value(); })) {
+        metrics.push_back({"relMSE of the in-scatter layer", [](const SweepRow& r) { return r.inscatter_rel_mse; }});
     }
     const double size = 260, gap = 90;  // panel side and the space between panels, px
     const size_t columns = 3;

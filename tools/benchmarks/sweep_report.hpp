@@ -18,18 +18,19 @@ struct SweepRow {
     double rel_mse = 0.0, flip = 0.0, bias = 0.0;
     // The same two metrics with both images box-downsampled (by the report's factor).
     double rel_mse_downsampled = 0.0, flip_downsampled = 0.0;
-    std::optional<double> caustic_rel_mse;  // empty when an image has no caustic layer
-    uint64_t memory_bytes = 0;              // the frame's transient heap plus imported resources
+    std::optional<double> caustic_rel_mse;    // empty when an image has no caustic layer
+    std::optional<double> inscatter_rel_mse;  // empty when an image has no in-scatter layer
+    uint64_t memory_bytes = 0;                // the frame's transient heap plus imported resources
 };
 
 // Indices of the rows no other row beats in both time and relMSE.
 std::vector<size_t> pareto_front(const std::vector<SweepRow>& rows);
 
 // Columns: setting, median_ms, spread_ms, rel_mse, flip, bias, rel_mse_<f>x, flip_<f>x (f =
-// downsample_factor), caustic_rel_mse ("n/a" when absent), memory_bytes.
+// downsample_factor), caustic_rel_mse, inscatter_rel_mse ("n/a" when absent), memory_bytes.
 void write_csv(const std::filesystem::path& file, const std::vector<SweepRow>& rows, int downsample_factor);
-// Panels: relMSE, relMSE at <f>x, FLIP, |bias|, and the caustic layer's relMSE when some row
-// has it. Points are numbered by row; the legend below names each row's setting.
+// Panels: relMSE, relMSE at <f>x, FLIP, |bias|, and the caustic and in-scatter layers' relMSE when
+// some row has them. Points are numbered by row; the legend below names each row's setting.
 void write_svg(const std::filesystem::path& file, const std::string& title, const std::vector<SweepRow>& rows,
                int downsample_factor);
 

@@ -1,5 +1,5 @@
 // The errors of a frame against a reference at full and reduced resolution, and of the
-// caustic layer (definitions in reference_errors.hpp).
+// caustic and in-scatter layers (definitions in reference_errors.hpp).
 #include "tools/metrics/reference_errors.hpp"
 
 #include <algorithm>
@@ -51,6 +51,7 @@ FrameErrors ReferenceErrors::measure(const ImageRGBA32F& test) const {
     errors.downsampled =
         compare_images(box_downsample(test, factor_), reference_downsampled_, nullptr, &range_downsampled_);
     errors.caustic = layer_rel_mse(test, reference_, kCausticLayer);
+    errors.inscatter = layer_rel_mse(test, reference_, kInScatterLayer);
     return errors;
 }
 

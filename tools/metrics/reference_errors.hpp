@@ -1,6 +1,6 @@
 // Every error `vkwater bench` reports for one rendered frame against its reference: the four
 // metrics at full resolution, the same at box-downsampled resolution, and the relMSE of the
-// caustic layer when both images carry it. The reference's share of the work (its downsampled
+// caustic and in-scatter layers when both images carry them. The reference's share of the work (its downsampled
 // copy and both HDR-FLIP exposure ranges) is done once, for every frame compared with it.
 #pragma once
 
@@ -16,6 +16,9 @@ namespace vkw::metrics {
 // The layer holding the sun's irradiance on the receiver each pixel sees under the water
 // (EXR channels caustic.R/G/B), written by `vkwater reference`.
 inline constexpr const char* kCausticLayer = "caustic";
+// The layer holding the single-scattered radiance of each pixel's primary path in the water alone
+// (EXR channels inscatter.R/G/B): `vkwater reference` always, `vkwater render` where the godrays run.
+inline constexpr const char* kInScatterLayer = "inscatter";
 
 // A layer's relMSE, or why there is none.
 struct LayerRelMse {
@@ -33,9 +36,10 @@ LayerRelMse layer_rel_mse(const ImageRGBA32F& test, const ImageRGBA32F& referenc
                           const ImageRGBA32F* mask = nullptr);
 
 struct FrameErrors {
-    Metrics full;         // at the images' resolution
-    Metrics downsampled;  // both images box-downsampled by the factor
-    LayerRelMse caustic;  // the caustic layer's relMSE at full resolution
+    Metrics full;           // at the images' resolution
+    Metrics downsampled;    // both images box-downsampled by the factor
+    LayerRelMse caustic;    // the caustic layer's relMSE at full resolution
+    LayerRelMse inscatter;  // the in-scatter layer's
 };
 
 class ReferenceErrors {

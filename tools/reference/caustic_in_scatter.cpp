@@ -69,10 +69,12 @@ glm::dvec3 CausticInScatter::modulation(const glm::dvec3& point) const {
 }
 
 glm::dvec3 CausticInScatter::segment_radiance(const glm::dvec3& origin, const glm::dvec3& direction, double length,
-                                              const glm::dvec3& behind) const {
+                                              const glm::dvec3& behind, glm::dvec3* in_scatter) const {
     const glm::dvec3 sigma_t = scene_.medium.sigma_t();
     glm::dvec3 radiance = behind * glm::dvec3(std::exp(-sigma_t.x * length), std::exp(-sigma_t.y * length),
                                               std::exp(-sigma_t.z * length));
+    glm::dvec3 scattered(0.0);
+    if (in_scatter) *in_scatter = scattered;
     if (!sun_up_ || length <= 0.0) return radiance;
     const auto segments = static_cast<uint64_t>(std::ceil(length / segment_length_));
     const double step = length / double(segments);
@@ -91,9 +93,12 @@ glm::dvec3 CausticInScatter::segment_radiance(const glm::dvec3& origin, const gl
                                     refracted_sun_,
                                     e_perp0_[c],
                                     0.0};
-            radiance[c] += m[c] * std::exp(-sigma_t[c] * start) * water_path_radiance(in);
+            const double term = m[c] * std::exp(-sigma_t[c] * start) * water_path_radiance(in);
+            radiance[c] += term;
+            scattered[c] += term;
         }
     }
+    if (in_scatter) *in_scatter = scattered;
     return radiance;
 }
 

@@ -42,9 +42,10 @@ public:
     glm::dvec3 modulation(const glm::dvec3& point) const;
 
     // The radiance arriving at `origin` along the unit `direction` in the water over `length`,
-    // with `behind` at the far end: behind exp(-sigma_t length) plus the modulated in-scatter.
+    // with `behind` at the far end: behind exp(-sigma_t length) plus the modulated in-scatter
+    // (that term alone also in `in_scatter`, when given).
     glm::dvec3 segment_radiance(const glm::dvec3& origin, const glm::dvec3& direction, double length,
-                                const glm::dvec3& behind) const;
+                                const glm::dvec3& behind, glm::dvec3* in_scatter = nullptr) const;
 
     double segment_length() const { return segment_length_; }
     const std::vector<double>& plane_depths() const { return depths_; }

@@ -31,6 +31,7 @@ ImageRGBA32F render_reference(const Scene& scene, const ReferenceOptions& option
     image.height = static_cast<int>(options.height);
     image.rgba.assign(size_t{options.width} * options.height * 4, 0.0f);
     ExtraLayer caustic{"caustic", std::vector<float>(size_t{options.width} * options.height * 3, 0.0f)};
+    ExtraLayer in_scatter{"inscatter", std::vector<float>(size_t{options.width} * options.height * 3, 0.0f)};
 
     // Rows are handed out one at a time; each pixel is a pure function of the scene,
     // so the image does not depend on the number of threads or their timing.
@@ -46,6 +47,7 @@ ImageRGBA32F render_reference(const Scene& scene, const ReferenceOptions& option
                 for (int c = 0; c < 3; ++c) {
                     out[c] = static_cast<float>(pixel.radiance[c]);
                     caustic.rgb[3 * index + c] = static_cast<float>(pixel.caustic[c]);
+                    in_scatter.rgb[3 * index + c] = static_cast<float>(pixel.in_scatter[c]);
                 }
                 out[3] = 1.0f;
             }
@@ -60,6 +62,7 @@ ImageRGBA32F render_reference(const Scene& scene, const ReferenceOptions& option
     for (std::thread& thread : pool) thread.join();
     if (options.progress) options.progress(1.0);
     image.layers.push_back(std::move(caustic));
+    image.layers.push_back(std::move(in_scatter));
     return image;
 }
 

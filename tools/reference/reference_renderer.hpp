@@ -1,8 +1,9 @@
 // The CPU reference renderer: one ray through each pixel's centre (the real-time
 // renderer also evaluates at pixel centres), traced exactly through the model in
 // double precision, on every core, deterministic (no random numbers yet: the flat-water
-// transport is closed form). The image carries the layer `caustic`: the sun's
-// irradiance on the receiver each pixel sees under the water, 0 elsewhere.
+// transport is closed form). The image carries two layers: `caustic`, the sun's
+// irradiance on the receiver each pixel sees under the water, 0 elsewhere; `inscatter`, the
+// single-scattered radiance of the pixel's primary path in the water alone (PixelRadiance).
 #pragma once
 
 #include "engine/image/image.hpp"

@@ -347,8 +347,8 @@ glm::dvec3 WaterTransport::radiance_in_air(const Ray& ray) const {
 }
 
 glm::dvec3 WaterTransport::in_water_segment(const glm::dvec3& origin, double length, const glm::dvec3& direction,
-                                            const glm::dvec3& behind) const {
-    if (in_scatter_) return in_scatter_->segment_radiance(origin, direction, length, behind);
+                                            const glm::dvec3& behind, glm::dvec3* in_scatter) const {
+    if (in_scatter_) return in_scatter_->segment_radiance(origin, direction, length, behind, in_scatter);
     // A segment that starts in a crest above the mean level uses depth 0.
     const double z0 = std::max(0.0, level_ - origin.y);
     glm::dvec3 radiance;
@@ -358,18 +358,23 @@ glm::dvec3 WaterTransport::in_water_segment(const glm::dvec3& origin, double len
             scene_.medium.sigma_s[c],    sigma_t[c], scene_.medium.g, z0, length, direction, refracted_sun_,
             sun_up_ ? e_perp0_[c] : 0.0, behind[c]};
         radiance[c] = water_path_radiance(in);
+        if (in_scatter) {
+            in.l_behind = 0.0;
+            (*in_scatter)[c] = water_path_radiance(in);
+        }
     }
     return radiance;
 }
 
-glm::dvec3 WaterTransport::radiance_in_water_to_receiver(const Ray& ray, glm::dvec3* caustic) const {
+glm::dvec3 WaterTransport::radiance_in_water_to_receiver(const Ray& ray, glm::dvec3* caustic,
+                                                         glm::dvec3* in_scatter) const {
     const auto hit = closest_receiver(ray, kInfinity);
     // A ray that leaves the water body without meeting a receiver sees nothing (the
     // scenes close their water with a floor or walls).
     const double length = hit ? hit->distance : 0.0;
     const glm::dvec3 behind =
         hit ? receiver_radiance(ray.origin + hit->distance * ray.direction, *hit, caustic) : glm::dvec3(0.0);
-    return in_water_segment(ray.origin, length, ray.direction, behind);
+    return in_water_segment(ray.origin, length, ray.direction, behind, in_scatter);
 }
 
 PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray) const {
@@ -398,11 +403,12 @@ PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray) const {
         const double reflectance = fresnel_reflectance(cos_i, 1.0, ior_);
         const glm::dvec3 reflected = glm::reflect(ray.direction, up);
         const glm::dvec3 l_reflected = radiance_in_air({p + kOffset * up, reflected});
-        glm::dvec3 l_water(0.0);
+        glm::dvec3 l_water(0.0), in_scatter(0.0);
         if (const auto refracted = refract(ray.direction, up, 1.0 / ior_); refracted && cos_i > 0.0) {
-            l_water = radiance_in_water_to_receiver({p - kOffset * up, *refracted}, &pixel.caustic);
+            l_water = radiance_in_water_to_receiver({p - kOffset * up, *refracted}, &pixel.caustic, &in_scatter);
         }
         pixel.radiance = reflectance * l_reflected + (1.0 - reflectance) / (ior_ * ior_) * l_water;
+        pixel.in_scatter = (1.0 - reflectance) / (ior_ * ior_) * in_scatter;
         return pixel;
     }
 
@@ -410,7 +416,7 @@ PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray) const {
     if (receiver) {
         const glm::dvec3 behind =
             receiver_radiance(ray.origin + receiver->distance * ray.direction, *receiver, &pixel.caustic);
-        pixel.radiance = in_water_segment(ray.origin, receiver->distance, ray.direction, behind);
+        pixel.radiance = in_water_segment(ray.origin, receiver->distance, ray.direction, behind, &pixel.in_scatter);
         return pixel;
     }
     if (to_surface == kInfinity) {
@@ -427,7 +433,7 @@ PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray) const {
     if (const auto refracted = refract(ray.direction, down, ior_)) {
         at_surface += (1.0 - reflectance) * ior_ * ior_ * radiance_in_air({p - kOffset * down, *refracted});
     }
-    pixel.radiance = in_water_segment(ray.origin, to_surface, ray.direction, at_surface);
+    pixel.radiance = in_water_segment(ray.origin, to_surface, ray.direction, at_surface, &pixel.in_scatter);
     return pixel;
 }
 

@@ -41,6 +41,10 @@ namespace vkw::ref {
 struct PixelRadiance {
     glm::dvec3 radiance{0.0};
     glm::dvec3 caustic{0.0};  // sun irradiance on the receiver seen under the water, else 0
+    // The single-scattered radiance of the primary ray's path in the water alone, as the camera
+    // receives it ((1 - F) / n^2 of it through the surface from above); not the in-scatter on the
+    // paths after a reflection under the surface. 0 where the ray never enters the water.
+    glm::dvec3 in_scatter{0.0};
 };
 
 class WaterTransport {
@@ -111,13 +115,15 @@ private:
     // Radiance of a Lambertian receiver point, in air or under the water.
     glm::dvec3 receiver_radiance(const glm::dvec3& point, const SurfaceHit& hit, glm::dvec3* caustic) const;
     // Radiance arriving at `start` along `ray` inside the water, up to the receiver it
-    // meets (no surface event: the ray's one surface event is already spent).
-    glm::dvec3 radiance_in_water_to_receiver(const Ray& ray, glm::dvec3* caustic) const;
+    // meets (no surface event: the ray's one surface event is already spent); its in-scatter
+    // alone also in `in_scatter`, when given.
+    glm::dvec3 radiance_in_water_to_receiver(const Ray& ray, glm::dvec3* caustic,
+                                             glm::dvec3* in_scatter = nullptr) const;
     // Radiance arriving at `origin` in the water along `direction` over `length`, `behind` at
     // its far end: attenuation and in-scatter (closed form under flat water, modulated by the
-    // caustics under waves).
+    // caustics under waves); the in-scatter term alone also in `in_scatter`, when given.
     glm::dvec3 in_water_segment(const glm::dvec3& origin, double length, const glm::dvec3& direction,
-                                const glm::dvec3& behind) const;
+                                const glm::dvec3& behind, glm::dvec3* in_scatter = nullptr) const;
     bool sun_blocked_in_air(const glm::dvec3& point) const;
     BeamIrradiance::Visibility beam_visibility() const;
     bool meshes_under_water() const;  // any receiver mesh reaching below the highest crest

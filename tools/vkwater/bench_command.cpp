@@ -1,7 +1,7 @@
 // vkwater bench SCENE --reference REF.exr: renders the scene over a sweep of quality
 // settings, times each (median of N frames after a warm-up, interquartile spread, one
 // submission per frame), measures its error against the reference (at full resolution, at
-// 4x box-downsampled resolution, and of the caustic layer when both images carry one) and the
+// 4x box-downsampled resolution, and of the caustic and in-scatter layers when both images carry them) and the
 // frame's memory, and writes the table as CSV and as an SVG plot of error against time with
 // the Pareto front marked.
 // The settings: the water grid (which is also the photon grid, `--grids`) times any scene
@@ -149,8 +149,8 @@ int run_bench(const BenchArgs& args) {
     auto context = std::make_unique<Context>(context_options);
     std::vector<bench::SweepRow> rows;
     const std::string factor = std::to_string(metrics::kBenchDownsampleFactor) + "x";
-    std::printf("%-28s %10s %9s %12s %12s %9s %9s %12s %9s\n", "setting", "ms", "spread", "relMSE",
-                ("relMSE " + factor).c_str(), "FLIP", "bias", "caustic", "MiB");
+    std::printf("%-28s %10s %9s %12s %12s %9s %9s %12s %12s %9s\n", "setting", "ms", "spread", "relMSE",
+                ("relMSE " + factor).c_str(), "FLIP", "bias", "caustic", "in-scatter", "MiB");
     std::vector<SweepAxis> axes(1);
     for (const uint32_t grid : args.grids) axes[0].values.push_back({"water.grid_resolution=" + std::to_string(grid)});
     if (args.sweeps.empty() && args.alternatives.empty()) axes.push_back(parse_sweep("effects.caustics.mode=on,off"));
@@ -169,10 +169,11 @@ int run_bench(const BenchArgs& args) {
             times.push_back(result.timing.total_ms);
         }
         std::sort(times.begin(), times.end());
-        // The errors from one more frame with the caustic layer, which the timed frames leave out
-        // (its second colour target is not part of the setting's cost).
+        // The errors from one more frame with the caustic and in-scatter layers, which the timed
+        // frames leave out (their second colour targets are not part of the setting's cost).
         RenderOptions with_layer = options;
         with_layer.caustic_layer = true;
+        with_layer.inscatter_layer = true;
         result = renderer.render(scene, with_layer);
         const metrics::FrameErrors error = reference.measure(result.image);
         const bench::FrameMemory memory = bench::measure_frame_memory(renderer, scene, options);
@@ -187,10 +188,12 @@ int run_bench(const BenchArgs& args) {
                             error.downsampled.rel_mse,
                             error.downsampled.flip_mean,
                             error.caustic.value,
+                            error.inscatter.value,
                             memory.total()};
-        std::printf("%-28s %10.2f %9.2f %12.6g %12.6g %9.4f %9.4f %12s %9.2f\n", row.setting.c_str(), row.median_ms,
-                    row.spread_ms, row.rel_mse, row.rel_mse_downsampled, row.flip, row.bias,
-                    error.caustic.text().c_str(), static_cast<double>(row.memory_bytes) / (1024.0 * 1024.0));
+        std::printf("%-28s %10.2f %9.2f %12.6g %12.6g %9.4f %9.4f %12s %12s %9.2f\n", row.setting.c_str(),
+                    row.median_ms, row.spread_ms, row.rel_mse, row.rel_mse_downsampled, row.flip, row.bias,
+                    error.caustic.text().c_str(), error.inscatter.text().c_str(),
+                    static_cast<double>(row.memory_bytes) / (1024.0 * 1024.0));
         std::fflush(stdout);  // a long sweep shows its progress, also when its output goes to a file
         rows.push_back(row);
     }

@@ -2,7 +2,7 @@
 // reference B, one line per metric (relMSE, FLIP, bias, L*u*v*; definitions in
 // tools/metrics/metrics.hpp); with --downsample N the same four again with both images (and the
 // mask) box-downsampled by N (tools/metrics/downsample.hpp); without --layer, the relMSE of the
-// caustic layer when both images carry one, else "n/a" and why.
+// caustic and in-scatter layers when both images carry them, else "n/a" and why.
 #include "engine/core/errors.hpp"
 #include "engine/image/exr_io.hpp"
 #include "tools/metrics/downsample.hpp"
@@ -79,8 +79,10 @@ int run_compare(const CompareArgs& args) {
                           metrics::size_text(small_reference.width, small_reference.height) + ")");
     }
     if (args.layer.empty()) {
-        std::printf("%s relMSE %s\n", metrics::kCausticLayer,
-                    metrics::layer_rel_mse(test, reference, metrics::kCausticLayer, mask_image).text(true).c_str());
+        for (const char* layer : {metrics::kCausticLayer, metrics::kInScatterLayer}) {
+            std::printf("%s relMSE %s\n", layer,
+                        metrics::layer_rel_mse(test, reference, layer, mask_image).text(true).c_str());
+        }
     }
     return kExitOk;
 }

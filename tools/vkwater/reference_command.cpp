@@ -114,8 +114,8 @@ int run_reference(const ReferenceArgs& args) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     require_finite_image(image, "the reference image");
     write_exr(args.out, image);
-    std::printf("wrote %s (%ux%u, reference, layers RGBA + caustic) in %.2f s\n", args.out.c_str(), args.width,
-                args.height, seconds);
+    std::printf("wrote %s (%ux%u, reference, layers RGBA, caustic, inscatter) in %.2f s\n", args.out.c_str(),
+                args.width, args.height, seconds);
     if (!args.manifest.empty()) {
         record_in_manifest(args, seconds, report);
         std::printf("recorded in %s\n", args.manifest.c_str());
@@ -130,7 +130,8 @@ Run add_reference_command(CLI::App& app) {
     CLI::App* command =
         app.add_subcommand("reference", "Render a scene with the CPU reference renderer (ground truth)");
     command->add_option("scene", args->scene, "Scene file (JSON)")->required();
-    command->add_option("--out,-o", args->out, "Output OpenEXR file (RGBA and the caustic layer)")->required();
+    command->add_option("--out,-o", args->out, "Output OpenEXR file (RGBA and the layers caustic and inscatter)")
+        ->required();
     add_image_size_options(*command, args->width, args->height);
     command
         ->add_option("--threads", args->threads,

@@ -6,6 +6,7 @@
 #include "engine/image/png_preview.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
+#include "passes/frame/frame_needs.hpp"
 #include "passes/frame/renderer.hpp"
 #include "tools/metrics/metrics.hpp"
 #include "tools/metrics/reference_errors.hpp"
@@ -30,6 +31,7 @@ struct RenderArgs {
     bool png = false;
     bool check_finite = false;
     bool no_caustic_layer = false;
+    bool no_inscatter_layer = false;
     uint32_t repeat = 1;
     std::string recording = "dynamic";
     std::vector<std::string> overrides;
@@ -56,6 +58,15 @@ OutputKind output_kind(const std::filesystem::path& out) {
     throw UserError("--out " + quoted_path(out) + ": " +
                     (extension.empty() ? std::string("no extension") : "unknown extension '" + extension + "'") +
                     " (accepted: .exr for the linear HDR image, .png for a tone-mapped preview alone)");
+}
+
+// The in-scatter layer's relMSE, or why there is none; a frame without godrays names their decision.
+std::string inscatter_text(const Scene& scene, const RenderOptions& options, const metrics::LayerRelMse& error) {
+    if (error.value || !options.inscatter_layer) return error.text(true);
+    const fg::FrameNeeds needs = decide_frame_needs(scene, double(options.width) / double(options.height));
+    const fg::EffectDecision* godrays = needs.find(Effect::VolumeCaustics);
+    if (godrays && !godrays->needed) return "n/a (the godrays do not run: " + godrays->reason + ")";
+    return error.text(true);
 }
 
 int run_render(const RenderArgs& args) {
@@ -93,6 +104,7 @@ int run_render(const RenderArgs& args) {
     options.height = args.height;
     options.check_finite = args.check_finite;
     options.caustic_layer = !args.no_caustic_layer;
+    options.inscatter_layer = !args.no_inscatter_layer;
     options.recording =
         args.recording == "renderpass" ? fg::RecordingKind::RenderPassObject : fg::RecordingKind::DynamicRendering;
     RenderResult result;
@@ -145,9 +157,13 @@ int run_render(const RenderArgs& args) {
         const metrics::Metrics error = metrics::compare_images(result.image, reference);
         std::printf("time: %.2f ms per frame (%s)\n", result.timing.total_ms, result.timing.method_name().c_str());
         const metrics::LayerRelMse caustic = metrics::layer_rel_mse(result.image, reference, metrics::kCausticLayer);
-        std::printf("error against %s: relMSE %.6g, FLIP %.6g, bias %.6g, L*u*v* %.6g, caustic relMSE %s\n",
-                    args.reference.c_str(), error.rel_mse, error.flip_mean, error.bias, error.luv_mean,
-                    caustic.text().c_str());
+        const metrics::LayerRelMse inscatter =
+            metrics::layer_rel_mse(result.image, reference, metrics::kInScatterLayer);
+        std::printf(
+            "error against %s: relMSE %.6g, FLIP %.6g, bias %.6g, L*u*v* %.6g, caustic relMSE %s, "
+            "in-scatter relMSE %s\n",
+            args.reference.c_str(), error.rel_mse, error.flip_mean, error.bias, error.luv_mean, caustic.text().c_str(),
+            inscatter_text(scene, options, inscatter).c_str());
     }
     const double total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::printf("total %.1f ms (whole command)\n", total);
@@ -182,6 +198,9 @@ Run add_render_command(CLI::App& app) {
     command->add_flag("--no-caustic-layer", args->no_caustic_layer,
                       "Leave out the EXR layer caustic.R/G/B (the sun's irradiance on the receiver each pixel sees "
                       "under the water), and the second colour target its passes write");
+    command->add_flag("--no-inscatter-layer", args->no_inscatter_layer,
+                      "Leave out the EXR layer inscatter.R/G/B (the godrays' single-scattered radiance alone, "
+                      "written where they run), and the second colour target of their composite");
     command->add_flag("--check-finite", args->check_finite,
                       "After each pass, scan every float target it wrote for NaN/Inf and name the first");
     command->add_option("--recording", args->recording, "Graphics pass recording: dynamic or renderpass")
