@@ -23,7 +23,7 @@ inline constexpr VkDeviceSize kGodrayBeamBytes = 48;
 struct GodrayBeamInputs {
     fg::BufferHandle surface;           // the vertex grid of add_water_surface_pass
     uint32_t surface_resolution = 256;  // its R
-    uint32_t grid = 128;                // G: beams per side, 2..1024
+    uint32_t grid = 64;                 // G: beams per side, 2..1024 (GodraySettings::grid sets it)
     double max_depth = 1e30;            // m below the mean level where beams stop
 };
 

@@ -24,7 +24,7 @@ namespace vkw::passes {
 
 struct GodrayLineInputs {
     fg::BufferHandle beams;          // add_godray_beams_pass's output
-    uint32_t grid = 128;             // G: its beams per side
+    uint32_t grid = 64;              // G: its beams per side
     fg::ImageHandle view_depth;      // add_godray_depth_pass's output
     uint32_t width = 0, height = 0;  // its size (the godray resolution)
     double max_amplitude = 0.0;      // m: a bound on the waves' height above the mean level

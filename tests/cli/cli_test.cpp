@@ -184,6 +184,10 @@ TEST(cli, OutOfRangeOptionsAreUserErrors) {
     expect_clean_failure(run_vkwater("passes " + calm + " --width 0"), 1, "--width: Value 0 not in range 1 to 16384");
     expect_clean_failure(run_vkwater("reference " + calm + tiny + " --cells-per-wavelength nan"), 1,
                          "--cells-per-wavelength: 'nan' is not a finite number");
+    expect_clean_failure(run_vkwater("reference " + calm + tiny + " --in-scatter-planes 1"), 1,
+                         "--in-scatter-planes: Value 1 not in range 2 to 1024");
+    expect_clean_failure(run_vkwater("reference " + calm + tiny + " --in-scatter-texels 9000"), 1,
+                         "--in-scatter-texels: Value 9000 not in range 16 to 8192");
     const fs::path folder = scratch("manifest_folder");
     fs::create_directories(folder);
     expect_clean_failure(run_vkwater("reference " + calm + tiny + " --manifest " + folder.string()), 1,

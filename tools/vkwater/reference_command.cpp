@@ -30,6 +30,8 @@ struct ReferenceArgs {
     uint32_t height = 300;
     unsigned threads = 0;
     double cells_per_wavelength = ref::WaterTransport::Quality{}.cells_per_wavelength;
+    uint32_t in_scatter_planes = ref::WaterTransport::Quality{}.in_scatter_levels;
+    uint32_t in_scatter_texels = ref::WaterTransport::Quality{}.in_scatter_texels;
     std::vector<std::string> overrides;
     std::string manifest;
 };
@@ -61,6 +63,8 @@ void record_in_manifest(const ReferenceArgs& args, double seconds, const ref::Re
         {"seed", 0},
         {"samples_per_pixel", 1},
         {"cells_per_wavelength", args.cells_per_wavelength},
+        {"in_scatter_planes", args.in_scatter_planes},
+        {"in_scatter_texels", args.in_scatter_texels},
         {"estimated_rel_mse", kClosedFormRelMse + report.caustic_refinement_change * report.caustic_refinement_change},
         {"caustic_refinement_change", report.caustic_refinement_change},
         {"approximations", report.approximations},
@@ -91,6 +95,8 @@ int run_reference(const ReferenceArgs& args) {
     }
     options.quality.caustic_in_scatter = true;  // the model's godrays under waves
     options.quality.cells_per_wavelength = args.cells_per_wavelength;
+    options.quality.in_scatter_levels = args.in_scatter_planes;
+    options.quality.in_scatter_texels = args.in_scatter_texels;
     // A progress bar on a terminal; elsewhere (logs, CI) a line at every tenth, so that a long
     // reference is never silent.
     if (::isatty(STDERR_FILENO)) {
@@ -145,6 +151,17 @@ Run add_reference_command(CLI::App& app) {
                      "estimate compares against half as many); more lowers the reference's error and costs "
                      "about its square in time")
         ->check(finite_number() & CLI::Range(4.0, 256.0))
+        ->capture_default_str();
+    command
+        ->add_option("--in-scatter-planes", args->in_scatter_planes,
+                     "Wavy water: depths at which the in-scatter's caustic modulation is mapped (linear between "
+                     "them); the time grows about linearly with it")
+        ->check(CLI::Range(2u, 1024u))
+        ->capture_default_str();
+    command
+        ->add_option("--in-scatter-texels", args->in_scatter_texels,
+                     "Wavy water: texels per side of each in-scatter plane's map over the floor")
+        ->check(CLI::Range(16u, 8192u))
         ->capture_default_str();
     command->add_option("--manifest", args->manifest,
                         "Record this reference (scene hash, settings, estimated error, time) in a JSON manifest");
