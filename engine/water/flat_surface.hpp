@@ -14,6 +14,7 @@ public:
     bool is_heightfield() const override { return true; }
     double max_amplitude() const override { return 0.0; }
     double max_slope() const override { return 0.0; }
+    double max_curvature() const override { return 0.0; }
 
 private:
     double level_;

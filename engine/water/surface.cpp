@@ -89,6 +89,8 @@ glm::dvec2 WaterSurface::parameter_at(double x, double z) const {
 
 double WaterSurface::max_slope() const { return std::numeric_limits<double>::infinity(); }
 
+double WaterSurface::max_curvature() const { return std::numeric_limits<double>::infinity(); }
+
 double WaterSurface::height_at(double x, double z) const {
     const glm::dvec2 parameter = parameter_at(x, z);
     return at_parameter(parameter.x, parameter.y).position.y;

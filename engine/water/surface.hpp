@@ -64,6 +64,11 @@ public:
     // A conservative bound on the slope |grad h| (the tangent of the normal's tilt from +y), for
     // bounding where refracted rays and photons can go; +infinity when the model has none.
     virtual double max_slope() const;
+
+    // A conservative bound on the curvature of the height field, the largest |u^T H u| over unit
+    // horizontal u of the Hessian H of h (1/m), for bounding how much the surface focuses the
+    // sun's beams; +infinity when the model has none.
+    virtual double max_curvature() const;
 };
 
 // The surface described by `settings` at `level` (the mean water level, m) and `time` (s).

@@ -36,6 +36,13 @@ WaveSumSurface::WaveSumSurface(const WaveSettings& settings, double level, doubl
     }
     height_gradient = std::min(terms, height_gradient + std::numbers::pi / kDirections * terms);
     slope_bound_ = steepness < 1.0 ? height_gradient / (1.0 - steepness) : std::numeric_limits<double>::infinity();
+    if (heightfield_) {
+        for (const WaveTerms& w : waves_) {
+            curvature_bound_ += w.amplitude * glm::dot(w.k_vector, w.k_vector);
+        }
+    } else {
+        curvature_bound_ = std::numeric_limits<double>::infinity();
+    }
 }
 
 SurfacePoint WaveSumSurface::at_parameter(double x0, double z0) const {

@@ -34,12 +34,17 @@ public:
     // (x, z) shrinks no length by more than 1 - sum s (each Gerstner term subtracts
     // s sin(theta) d d^T); +infinity when sum s >= 1 (folding allowed).
     double max_slope() const override { return slope_bound_; }
+    // Sines alone: sum of A_i k_i^2, since H = -sum A k^2 sin(theta) d d^T and |u^T d d^T u| <= 1
+    // (reached where every term's sine is 1 and the directions agree). With a Gerstner term the
+    // surface is no height field of (x0, z0) and no bound is computed: +infinity.
+    double max_curvature() const override { return curvature_bound_; }
 
 private:
     std::vector<WaveTerms> waves_;
     double level_;
     double amplitude_sum_ = 0.0;
     double slope_bound_ = 0.0;
+    double curvature_bound_ = 0.0;
     bool heightfield_ = true;
 };
 

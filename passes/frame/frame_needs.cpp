@@ -1,9 +1,11 @@
 #include "passes/frame/frame_needs.hpp"
 
+#include "engine/water/beam_modulation_bound.hpp"
 #include "engine/water/surface.hpp"
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 namespace vkw {
@@ -108,23 +110,53 @@ void decide_scene_lookups(fg::FrameNeeds& needs, const Scene& scene, const Water
 }
 
 // Godrays (volume caustics): the sun's refracted beams scattered toward the camera, as lines
-// (passes/godrays/godrays.hpp). They need a lit, scattering medium in view. Under flat water with
-// nothing over it to shadow the beams, the beams are uniform and the shading's analytic
-// in-scatter (docs/model.md section 6) is already exact, so the lines would only add their
-// sampling error.
+// (passes/godrays/godrays.hpp). They need a lit, scattering medium in view. Without them the shading
+// adds the flat beams' analytic in-scatter (docs/model.md section 6), which differs from theirs by
+// the waves' modulation m of the beams' irradiance, m - 1 of it at most: where
+// engine/water/beam_modulation_bound.hpp bounds that change below kGodraysInvisibleChange of the
+// in-scatter (and so of the pixel, whose other terms only add), the passes would change no
+// pixel visibly and are left out. Flat water with nothing over it is the exact case (m = 1).
 void decide_godrays(fg::FrameNeeds& needs, const Scene& scene, const WaterBounds& bounds, bool water_visible,
                     bool sun_up) {
     const glm::dvec3& sigma_s = scene.medium.sigma_s;
     const double most = std::max({sigma_s.x, sigma_s.y, sigma_s.z});
     const bool scatters = most > 0.0;
-    const bool uniform_beams = bounds.hi.y == scene.water->level && !receivers_over_water(scene, bounds).any;
-    decide(needs, scene, Effect::VolumeCaustics, water_visible && sun_up && scatters && !uniform_beams,
-           !water_visible ? "the water is not in view"
-           : !sun_up      ? "the sun is below the horizon"
-           : !scatters    ? "the medium does not scatter (sigma_s = 0 in every channel)"
-           : uniform_beams
-               ? "the water is flat and no object over it shadows the beams: the analytic in-scatter is exact"
-               : format("the sun is up, the water is in view and scatters (sigma_s up to %.3g 1/m)", most, 0.0));
+    const auto rule = [&](bool needed, const std::string& reason) {
+        decide(needs, scene, Effect::VolumeCaustics, needed, reason);
+    };
+    if (!water_visible) return rule(false, "the water is not in view");
+    if (!sun_up) return rule(false, "the sun is below the horizon");
+    if (!scatters) return rule(false, "the medium does not scatter (sigma_s = 0 in every channel)");
+    const std::string lit = format("the sun is up, the water is in view and scatters (sigma_s up to %.3g 1/m)", most);
+    if (receivers_over_water(scene, bounds).any)
+        return rule(true, lit + "; receiver meshes over the water shadow the beams");
+    const Water& water = *scene.water;
+    const double depth = water.level - water_bottom(scene);
+    const std::optional<double>& max_depth = scene.effects.godrays.max_depth;
+    if (max_depth && *max_depth < depth) {
+        return rule(true,
+                    lit + format("; effects.godrays.max_depth = %.3g m stops the beams above the bottom", *max_depth));
+    }
+    if (bounds.hi.y == water.level) {
+        return rule(false,
+                    "the water is flat and no object over it shadows the beams: the analytic in-scatter is exact");
+    }
+    const auto surface = make_surface(water.waves, water.level, water.time);
+    const glm::dvec3 sigma_t = scene.medium.sigma_t();
+    const BeamModulationBound bound =
+        beam_modulation_bound({scene.sun.direction, water.ior, surface->max_amplitude(), surface->max_slope(),
+                               surface->max_curvature(), depth, std::max({sigma_t.x, sigma_t.y, sigma_t.z})});
+    if (!bound.bounded) return rule(true, lit + "; the waves' beams: " + bound.unbounded_because);
+    const double change = bound.largest_relative_change();
+    const std::string range =
+        format("the waves keep the beams' irradiance within %.4g to %.4g of flat water's", bound.low, bound.high) +
+        format(" down to %.3g m, an in-scatter change of at most %.3g%%", depth, 100.0 * change);
+    if (change <= kGodraysInvisibleChange) {
+        return rule(false, range + format(" <= %.3g%% (no preview pixel moves by half a step): the analytic "
+                                          "in-scatter stands in",
+                                          100.0 * kGodraysInvisibleChange));
+    }
+    rule(true, lit + "; " + range + format(" > %.3g%%", 100.0 * kGodraysInvisibleChange));
 }
 
 }  // namespace

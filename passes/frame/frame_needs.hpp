@@ -22,6 +22,11 @@ struct WaterBounds {
     glm::dvec3 lo, hi;  // axis-aligned box that holds the water body and every wave
 };
 WaterBounds water_bounds(const Scene& scene);
+// The godrays' rule leaves them out where, at most, they would change a pixel's radiance by this
+// fraction: no channel of the PNG preview (engine/image/tone_curve.hpp, at any exposure) moves by
+// half a step. The curve's steepest point, 72.9 steps per unit of log radiance at 0.169 exposed,
+// gives 0.5 / 72.9 = 0.00686; this is 0.5 / 73 (tests/godrays/godrays_needs_test.cpp checks it).
+inline constexpr double kGodraysInvisibleChange = 0.5 / 73.0;
 // World-space corners of the camera's near-plane rectangle.
 std::array<glm::dvec3, 4> near_plane_corners(const Camera& camera, double aspect);
 
