@@ -1,7 +1,8 @@
 // The CPU reference renderer against the closed forms of docs/model.md for flat water:
 // radiance seen from above (section 3) at view elevations 5, 20, 45 and 90 degrees,
 // the floor's sun irradiance under the water for several sun angles (its caustic
-// layer), the in-scatter layer from above and from within (section 6), Snell's window radius seen
+// layer), the in-scatter layer from above, from within and under total internal reflection
+// (section 6), Snell's window radius seen
 // from below (section 7), determinism, and a clear refusal of what it does not compute yet.
 #include "engine/core/errors.hpp"
 #include "engine/scene/scene_loader.hpp"
@@ -109,6 +110,19 @@ TEST(reference_flat_water, RadianceAndItsInScatterFromAboveMatchSections3And6) {
     }
 }
 
+// The sun under flat water: its cosines above and below, and the refracted direction t (Snell's law
+// written out, not the renderer's refract).
+struct SunUnderFlatWater {
+    double cos_s, cos_t;
+    glm::dvec3 t;
+};
+SunUnderFlatWater sun_under_flat_water(const Scene& scene) {
+    const glm::dvec3 s = scene.sun.direction;
+    const double cos_s = -s.y, sin_s = std::sqrt(1 - cos_s * cos_s);
+    const double sin_t = sin_s / kIor, cos_t = std::sqrt(1 - sin_t * sin_t);
+    return {cos_s, cos_t, {s.x / sin_s * sin_t, -cos_t, s.z / sin_s * sin_t}};
+}
+
 TEST(reference_flat_water, InScatterFromWithinIsSection6sTermOfTheViewSegment) {
     // From 0.5 m down, 45 degrees below the horizon toward the floor 1.5 m down: a path of
     // sqrt(2) m from depth z0 = 0.5, the segment of section 6 with nothing behind it.
@@ -116,10 +130,9 @@ TEST(reference_flat_water, InScatterFromWithinIsSection6sTermOfTheViewSegment) {
     const WaterTransport transport(scene);
     const glm::dvec3 view = glm::normalize(glm::dvec3(0, -1, -1));
     const PixelRadiance pixel = transport.trace_camera_ray({{0, -0.5, 0}, view});
-    const glm::dvec3 s = scene.sun.direction;
-    const double cos_s = -s.y, sin_s = std::sqrt(1 - cos_s * cos_s);
-    const double sin_t = sin_s / kIor, cos_t = std::sqrt(1 - sin_t * sin_t);
-    const glm::dvec3 t_sun{s.x / sin_s * sin_t, -cos_t, s.z / sin_s * sin_t};
+    const SunUnderFlatWater sun = sun_under_flat_water(scene);
+    const double cos_s = sun.cos_s, cos_t = sun.cos_t;
+    const glm::dvec3 t_sun = sun.t;
     const glm::dvec3 sigma_t = scene.medium.sigma_t();
     for (int c = 0; c < 3; ++c) {
         const InScatterInput in{scene.medium.sigma_s[c],
@@ -135,6 +148,34 @@ TEST(reference_flat_water, InScatterFromWithinIsSection6sTermOfTheViewSegment) {
         ASSERT_GT(expected, 0.0);
         // Double precision on both sides; the floor's hit found by the BVH to ~1e-12 m.
         EXPECT_NEAR(pixel.in_scatter[c], expected, 1e-10 * expected) << "channel " << c;
+        EXPECT_LT(pixel.in_scatter[c], pixel.radiance[c]);
+    }
+}
+
+TEST(reference_flat_water, InScatterUnderTotalReflectionAddsTheReflectedSegment) {
+    // From 1 m down, rising at 30 degrees above the horizontal (60 degrees from the normal, past
+    // the critical 48.6): the path meets the surface after 2 m, is totally reflected (R = 1) and
+    // falls at 30 degrees to the floor 1.5 m down, 3 m further. The layer is section 6's term of
+    // the first segment plus that of the reflected one, carried back over the first's 2 m.
+    const Scene scene = calm_scene(60.0, R"("position": [0, -1, 0], "target": [0, -0.5, -0.8660254])");
+    const WaterTransport transport(scene);
+    const glm::dvec3 up = glm::normalize(glm::dvec3(0, 0.5, -0.8660254037844386));
+    const PixelRadiance pixel = transport.trace_camera_ray({{0, -1, 0}, up});
+    const glm::dvec3 down{up.x, -up.y, up.z};
+    const SunUnderFlatWater sun = sun_under_flat_water(scene);
+    const double cos_s = sun.cos_s, cos_t = sun.cos_t;
+    const glm::dvec3 t_sun = sun.t;
+    const glm::dvec3 sigma_t = scene.medium.sigma_t();
+    for (int c = 0; c < 3; ++c) {
+        const double e_perp0 = scene.sun.irradiance[c] * cos_s * fresnel_t(cos_s) / cos_t;
+        const double first = water_path_radiance(
+            {scene.medium.sigma_s[c], sigma_t[c], scene.medium.g, 1.0, 2.0, up, t_sun, e_perp0, 0.0});
+        const double reflected = water_path_radiance(
+            {scene.medium.sigma_s[c], sigma_t[c], scene.medium.g, 0.0, 3.0, down, t_sun, e_perp0, 0.0});
+        const double expected = first + std::exp(-2.0 * sigma_t[c]) * reflected;
+        ASSERT_GT(reflected, 0.0);
+        // Double precision on both sides; the surface and floor hits to ~1e-12 m.
+        EXPECT_NEAR(pixel.in_scatter[c], expected, 1e-9 * expected) << "channel " << c;
         EXPECT_LT(pixel.in_scatter[c], pixel.radiance[c]);
     }
 }

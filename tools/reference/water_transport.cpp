@@ -428,12 +428,18 @@ PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray) const {
     const glm::dvec3 down = -surface_normal;
     const double cos_i = std::max(0.0, glm::dot(ray.direction, surface_normal));
     const double reflectance = fresnel_reflectance(cos_i, ior_, 1.0);
+    // The reflected path's in-scatter belongs to the layer too, weighted as in the pixel (by the
+    // reflectance, 1 under total internal reflection, and the first segment's transmittance).
+    glm::dvec3 reflected_in_scatter(0.0);
     glm::dvec3 at_surface =
-        reflectance * radiance_in_water_to_receiver({p + kOffset * down, glm::reflect(ray.direction, down)}, nullptr);
+        reflectance * radiance_in_water_to_receiver({p + kOffset * down, glm::reflect(ray.direction, down)}, nullptr,
+                                                    &reflected_in_scatter);
     if (const auto refracted = refract(ray.direction, down, ior_)) {
         at_surface += (1.0 - reflectance) * ior_ * ior_ * radiance_in_air({p - kOffset * down, *refracted});
     }
     pixel.radiance = in_water_segment(ray.origin, to_surface, ray.direction, at_surface, &pixel.in_scatter);
+    const glm::dvec3 first_segment = exp3(-scene_.medium.sigma_t() * to_surface);
+    pixel.in_scatter += reflectance * first_segment * reflected_in_scatter;
     return pixel;
 }
 
