@@ -4,7 +4,7 @@
 # grid, the caustics (off: the flat-surface stand-in; on with the bilinear or the adaptive splat
 # kernel, or the baselines: the footprint kernel, Tipprasert 2006's area ratio, Guardado & Sánchez-Crespo 2004's procedural
 # caustic, and Ojeda & Susín 2013's camera-space splats) and the godrays (off, or a 32 or 128 beam
-# grid; the default is 64 at full resolution); and docs/sweeps/godrays-{pool,lake,ocean}.{csv,svg}: the godray methods
+# grid; the default is 64); and docs/sweeps/godrays-{pool,lake,ocean}.{csv,svg}: the godray methods
 # alone (lines over 32 to 256 beams per side, marched with 8 to 64 steps, each at half and full
 # resolution) at the scene's own grid, to be read by the in-scatter layer's error against time.
 # Usage: docs/sweeps/run.sh [BUILD_DIR] [FRAMES] [SCENE...]

@@ -133,7 +133,7 @@ enum class GodrayMethod : uint8_t {
 // The settings of effects.godrays beside its mode (scenes/README.md).
 struct GodraySettings {
     uint32_t grid = 64;               // photon beams per side over the water, in [2, 1024]
-    double resolution_scale = 1.0;    // of the output size: 1 or 0.5
+    double resolution_scale = 0.5;    // of the output size: 1 or 0.5
     std::optional<double> max_depth;  // m below the mean level where beams stop; nullopt: at the floor
     GodrayMethod method = GodrayMethod::Lines;
     uint32_t march_steps = 32;  // Marched: steps per view segment in the water, in [1, 4096]

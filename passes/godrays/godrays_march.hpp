@@ -15,7 +15,7 @@ namespace vkw::passes {
 
 struct GodrayMarchInputs {
     fg::ImageHandle view_depth;  // add_godray_depth_pass's output
-    float scale = 1.0f;          // its size relative to the output
+    float scale = 0.5f;          // its size relative to the output
     uint32_t steps = 32;         // per view segment, 1..4096
     double max_amplitude = 0.0;  // m: a bound on the waves' height above the mean level
     double max_depth = 1e30;     // m below the mean level where the light stops

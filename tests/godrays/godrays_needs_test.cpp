@@ -222,16 +222,16 @@ TEST(godrays_needs, ModesForceEitherWay) {
 TEST(godrays_scene, DefaultsAndEveryField) {
     const GodraySettings defaults = scene_with().effects.godrays;
     EXPECT_EQ(defaults.grid, 64u);
-    EXPECT_EQ(defaults.resolution_scale, 1.0);
+    EXPECT_EQ(defaults.resolution_scale, 0.5);
     EXPECT_FALSE(defaults.max_depth.has_value());
     EXPECT_EQ(defaults.method, GodrayMethod::Lines);
     EXPECT_EQ(defaults.march_steps, 32u);
     const GodraySettings set =
-        scene_with({"effects.godrays.grid=256", "effects.godrays.resolution_scale=0.5", "effects.godrays.max_depth=7.5",
+        scene_with({"effects.godrays.grid=256", "effects.godrays.resolution_scale=1", "effects.godrays.max_depth=7.5",
                     "effects.godrays.method=marched", "effects.godrays.march_steps=9", "effects.godrays.mode=on"})
             .effects.godrays;
     EXPECT_EQ(set.grid, 256u);
-    EXPECT_EQ(set.resolution_scale, 0.5);
+    EXPECT_EQ(set.resolution_scale, 1.0);
     EXPECT_EQ(set.max_depth, 7.5);
     EXPECT_EQ(set.method, GodrayMethod::Marched);
     EXPECT_EQ(set.march_steps, 9u);
