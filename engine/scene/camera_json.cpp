@@ -18,13 +18,14 @@ constexpr std::string_view kViewForms = "exactly one of target, direction";
 Camera read_camera(FieldReader& fields) {
     const Camera defaults;
     Camera camera;
-    camera.position = fields.vec3("position", Range::any("m"));
-    const auto target = fields.optional_vec3("target", Range::any("m"));
+    camera.position = fields.vec3("position", Range::length());
+    const auto target = fields.optional_vec3("target", Range::length());
     const auto direction = fields.optional_vec3("direction", Range::any());
     camera.fov_y_deg = fields.number("fov_y_deg", Range::open(1.0, 179.0, "degrees"), defaults.fov_y_deg);
-    camera.near_plane = fields.number("near", Range::above(0.0, "m"), defaults.near_plane);
-    camera.far_plane = fields.number("far", Range::above(0.0, "m"), defaults.far_plane);
-    camera.exposure = fields.number("exposure", Range::above(0.0), defaults.exposure);
+    camera.near_plane = fields.number("near", Range::positive_length(), defaults.near_plane);
+    camera.far_plane = fields.number("far", Range::positive_length(), defaults.far_plane);
+    camera.exposure =
+        fields.number("exposure", Range{.min = 0.0, .max = kMaxRadiometric, .min_inclusive = false}, defaults.exposure);
     fields.finish();
 
     if (!(camera.near_plane < camera.far_plane)) {

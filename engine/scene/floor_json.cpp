@@ -6,9 +6,9 @@ namespace vkw {
 FloorPlane read_floor(FieldReader& fields) {
     const FloorPlane defaults;
     FloorPlane floor;
-    floor.height = fields.number("height", Range::any("m"), defaults.height);
+    floor.height = fields.number("height", Range::length(), defaults.height);
     floor.albedo = fields.vec3("albedo", Range::closed(0.0, 1.0), defaults.albedo);
-    floor.half_extent = fields.number("half_extent", Range::above(0.0, "m"), defaults.half_extent);
+    floor.half_extent = fields.number("half_extent", Range::positive_length(), defaults.half_extent);
     return floor;
 }
 

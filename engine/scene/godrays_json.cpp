@@ -22,7 +22,7 @@ GodraySettings read_godray_settings(FieldReader& fields) {
     godrays.grid =
         static_cast<uint32_t>(fields.integer("grid", Range::closed(2.0, 1024.0, "beams per side"), defaults.grid));
     godrays.resolution_scale = fields.number("resolution_scale", Range::closed(0.5, 1.0), defaults.resolution_scale);
-    godrays.max_depth = fields.optional_number("max_depth", Range::above(0.0, "m"));
+    godrays.max_depth = fields.optional_number("max_depth", Range::positive_length());
     godrays.method = fields.choice("method", kMethods, defaults.method);
     godrays.march_steps =
         static_cast<uint32_t>(fields.integer("march_steps", Range::closed(1.0, 4096.0, "steps"), defaults.march_steps));

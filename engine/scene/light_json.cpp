@@ -39,7 +39,7 @@ Sun read_sun(FieldReader& fields) {
     const auto elevation = fields.optional_number("elevation_deg", elevation_range);
     const auto azimuth = fields.optional_number("azimuth_deg", Range::closed(-360.0, 360.0, "degrees"));
     Sun sun;
-    sun.irradiance = fields.vec3("irradiance", Range::at_least(0.0, "W m^-2"), defaults.irradiance);
+    sun.irradiance = fields.vec3("irradiance", Range::radiometric("W m^-2"), defaults.irradiance);
     // A misspelt "elevaton_deg" is the real reason when no form is found below.
     fields.finish();
 
@@ -60,7 +60,7 @@ Sun read_sun(FieldReader& fields) {
 // exponent for gradient. A field of the other model is then an unknown field.
 Sky read_sky(FieldReader& fields) {
     const Sky defaults;
-    const Range radiance = Range::at_least(0.0, "W m^-2 sr^-1");
+    const Range radiance = Range::radiometric("W m^-2 sr^-1");
     Sky sky;
     sky.model = fields.choice("model", kSkyModels, defaults.model);
     if (sky.model == SkyModel::Constant) {

@@ -14,8 +14,8 @@ std::string forms(const std::vector<std::string_view>& presets) {
 Medium read_medium(FieldReader& fields) {
     const std::vector<std::string_view> presets = medium_preset_names();
     const auto preset = fields.optional_choice_index("preset", presets);
-    const auto sigma_a = fields.optional_vec3("sigma_a", Range::at_least(0.0, "1/m"));
-    const auto sigma_s = fields.optional_vec3("sigma_s", Range::at_least(0.0, "1/m"));
+    const auto sigma_a = fields.optional_vec3("sigma_a", Range::closed(0.0, kMaxCoefficient, "1/m"));
+    const auto sigma_s = fields.optional_vec3("sigma_s", Range::closed(0.0, kMaxCoefficient, "1/m"));
     const auto g = fields.optional_number("g", Range::open(-1.0, 1.0));
     fields.finish();
 

@@ -22,6 +22,16 @@ Range Range::above(double lo, std::string unit) {
     return Range{.min = lo, .min_inclusive = false, .unit = std::move(unit)};
 }
 
+Range Range::length() { return closed(-kMaxSceneLength, kMaxSceneLength, "m"); }
+
+Range Range::positive_length() {
+    return Range{.min = 0.0, .max = kMaxSceneLength, .min_inclusive = false, .unit = "m"};
+}
+
+Range Range::nonnegative_length() { return closed(0.0, kMaxSceneLength, "m"); }
+
+Range Range::radiometric(std::string unit) { return closed(0.0, kMaxRadiometric, std::move(unit)); }
+
 bool Range::contains(double value) const {
     if (!std::isfinite(value)) return false;
     const bool above_min = min_inclusive ? value >= min : value > min;

@@ -9,6 +9,18 @@
 
 namespace vkw {
 
+// Lengths: fp32 resolves 1/2^24 of a coordinate, 6 mm at 1e5 m, the finest the GPU's world
+// positions can place a wave of a few centimetres' amplitude; areas and volumes of such lengths
+// (1e10, 1e15) stay far from fp32's 3.4e38.
+inline constexpr double kMaxSceneLength = 1e5;
+// Radiances and irradiances: each value itself an fp32 with 8 orders of headroom for the factors
+// one term multiplies it by (focusing, phase function, 1 / pixel area); products of several can
+// still overflow, which the final image's scan refuses.
+inline constexpr double kMaxRadiometric = 1e30;
+// Extinction coefficients: a millimetre of water at 1e6 1/m transmits exp(-1000), nothing a float
+// holds; sigma_s times a radiance stays within fp32 (1e36).
+inline constexpr double kMaxCoefficient = 1e6;
+
 struct Range {
     double min = -std::numeric_limits<double>::infinity();
     double max = std::numeric_limits<double>::infinity();
@@ -21,6 +33,13 @@ struct Range {
     static Range open(double lo, double hi, std::string unit = {});    // lo < v < hi
     static Range at_least(double lo, std::string unit = {});           // v >= lo
     static Range above(double lo, std::string unit = {});              // v > lo
+
+    // The scene's physical quantities within what both renderers hold in 32-bit floats
+    // (scenes/README.md "Limits"):
+    static Range length();                       // a coordinate or height: |v| <= kMaxSceneLength m
+    static Range positive_length();              // a size: 0 < v <= kMaxSceneLength m
+    static Range nonnegative_length();           // 0 <= v <= kMaxSceneLength m
+    static Range radiometric(std::string unit);  // a radiance or irradiance: 0 <= v <= kMaxRadiometric
 
     bool contains(double value) const;
     std::string describe() const;

@@ -1,7 +1,9 @@
 // One element of "receivers": a built-in shape (builtin_meshes.hpp) or a glTF mesh
 // (gltf_mesh.hpp) with its transform and albedo, turned into a world-space Mesh. The type
 // decides the shape's fields: those of another type are unknown fields.
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "engine/core/errors.hpp"
 #include "engine/scene/angles.hpp"
@@ -52,16 +54,16 @@ Mesh read_gltf(FieldReader& fields, const std::filesystem::path& base_dir, std::
 Mesh read_shape(FieldReader& fields, ReceiverType type, const std::filesystem::path& base_dir,
                 std::optional<glm::dvec3>& albedo) {
     switch (type) {
-        case ReceiverType::Plane: return make_plane_mesh(fields.vec2("half_size", Range::above(0.0, "m")));
-        case ReceiverType::Box: return make_box_mesh(fields.vec3("half_size", Range::above(0.0, "m")));
-        case ReceiverType::Sphere: return make_sphere_mesh(fields.number("radius", Range::above(0.0, "m")));
+        case ReceiverType::Plane: return make_plane_mesh(fields.vec2("half_size", Range::positive_length()));
+        case ReceiverType::Box: return make_box_mesh(fields.vec3("half_size", Range::positive_length()));
+        case ReceiverType::Sphere: return make_sphere_mesh(fields.number("radius", Range::positive_length()));
         case ReceiverType::Terrain: {
             const TerrainShape defaults;
             TerrainShape shape;
-            shape.size = fields.number("size", Range::above(0.0, "m"));
+            shape.size = fields.number("size", Range::positive_length());
             shape.resolution = static_cast<uint32_t>(
                 fields.integer("resolution", Range::closed(2.0, 2048.0, "cells per side"), defaults.resolution));
-            shape.height = fields.number("height", Range::at_least(0.0, "m"));
+            shape.height = fields.number("height", Range::nonnegative_length());
             shape.seed = static_cast<uint64_t>(
                 fields.integer("seed", Range::closed(0.0, kMaxExactInteger), static_cast<int64_t>(defaults.seed)));
             fields.finish();  // no mesh from placeholders of missing fields
@@ -79,9 +81,10 @@ Receiver read_receiver(FieldReader& fields, const std::filesystem::path& base_di
     receiver.name = fields.string("name", fields.path_of(""));
     const auto type = fields.required_choice("type", kTypes);
     std::optional<glm::dvec3> albedo = fields.optional_vec3("albedo", Range::closed(0.0, 1.0));
-    const glm::dvec3 translation = fields.vec3("translation", Range::any("m"), glm::dvec3(0.0));
+    const glm::dvec3 translation = fields.vec3("translation", Range::length(), glm::dvec3(0.0));
     const glm::dvec3 rotation = fields.vec3("rotation_deg", Range::closed(-360.0, 360.0, "degrees"), glm::dvec3(0.0));
-    const glm::dvec3 scale = fields.vec3("scale", Range::above(0.0), glm::dvec3(1.0));
+    const glm::dvec3 scale =
+        fields.vec3("scale", Range{.min = 0.0, .max = kMaxSceneLength, .min_inclusive = false}, glm::dvec3(1.0));
     if (!type) {
         for (const std::string_view key : kShapeFields) fields.declare({key});
         fields.finish();  // reports a misspelt type, or the missing one
@@ -96,6 +99,15 @@ Receiver read_receiver(FieldReader& fields, const std::filesystem::path& base_di
     object_to_world[3] = glm::dvec4(translation, 1.0);
     receiver.object_to_world = object_to_world;
     transform_mesh(receiver.mesh, object_to_world);
+    // The placed mesh within the scene's lengths (Range::length), however scale and shape combine.
+    double reach = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        reach = std::max({reach, std::abs(receiver.mesh.bounds_min[axis]), std::abs(receiver.mesh.bounds_max[axis])});
+    }
+    if (!(reach <= kMaxSceneLength)) {
+        fields.fail("scale", "places the mesh " + format_number(reach) + " m from the origin",
+                    "every vertex within " + format_number(kMaxSceneLength) + " m of it");
+    }
     return receiver;
 }
 

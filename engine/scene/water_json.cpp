@@ -7,10 +7,10 @@ namespace vkw {
 Water read_water(FieldReader& fields) {
     const Water defaults;
     Water water;
-    water.level = fields.number("level", Range::any("m"), defaults.level);
+    water.level = fields.number("level", Range::length(), defaults.level);
     // Below 1, total internal reflection would occur above the surface (docs/model.md section 1).
     water.ior = fields.number("ior", Range::closed(1.0, 2.0), defaults.ior);
-    water.half_extent = fields.number("half_extent", Range::above(0.0, "m"), defaults.half_extent);
+    water.half_extent = fields.number("half_extent", Range::positive_length(), defaults.half_extent);
     // Only the schema's range here: what the device can hold is checked by the renderer.
     water.grid_resolution = static_cast<uint32_t>(
         fields.integer("grid_resolution", Range::closed(2.0, 4096.0, "cells per side"), defaults.grid_resolution));
@@ -18,7 +18,7 @@ Water read_water(FieldReader& fields) {
         water.mesh_resolution = static_cast<uint32_t>(*mesh);
     }
     water.time = fields.number("time", Range::any("s"), defaults.time);
-    water.depth = fields.optional_number("depth", Range::above(0.0, "m"));
+    water.depth = fields.optional_number("depth", Range::positive_length());
     const auto seed =
         fields.integer("seed", Range::closed(0.0, kMaxExactInteger), static_cast<int64_t>(defaults.waves.seed));
     water.waves = fields.object("waves", Presence::optional, read_waves);

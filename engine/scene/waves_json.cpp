@@ -7,6 +7,10 @@
 #include "engine/scene/scene_json.hpp"
 
 namespace vkw {
+
+// The Phillips spectrum's largest wave is V^2 / g: at most kMaxSceneLength for V <= 990 m/s.
+constexpr double kMaxWindSpeed = 990.0;
+
 namespace {
 
 constexpr std::array<Named<WaveModel>, 3> kModels = {{
@@ -28,14 +32,17 @@ constexpr std::array<std::string_view, 10> kModelFields = {
 WaveComponent read_component(FieldReader& fields) {
     const WaveComponent defaults;
     WaveComponent wave;
-    wave.amplitude = fields.number("amplitude", Range::at_least(0.0, "m"));
-    wave.wavelength = fields.number("wavelength", Range::above(0.0, "m"));
+    wave.amplitude = fields.number("amplitude", Range::nonnegative_length());
+    wave.wavelength = fields.number("wavelength", Range::positive_length());
     const Range angle = Range::closed(-360.0, 360.0, "degrees");
     wave.direction_deg = fields.number("direction_deg", angle, defaults.direction_deg);
     wave.phase_deg = fields.number("phase_deg", angle, defaults.phase_deg);
     wave.steepness = fields.number("steepness", Range::closed(0.0, 1.0), defaults.steepness);
     // Omitted: the deep-water dispersion speed, which WaveComponent marks with a negative value.
-    wave.speed = fields.optional_number("speed", Range::above(0.0, "m/s")).value_or(defaults.speed);
+    wave.speed =
+        fields
+            .optional_number("speed", Range{.min = 0.0, .max = kMaxSceneLength, .min_inclusive = false, .unit = "m/s"})
+            .value_or(defaults.speed);
     return wave;
 }
 
@@ -64,14 +71,16 @@ void read_fft(FieldReader& fields, FftOceanSettings& ocean) {
                     "a power of two, " + resolution_range.describe());
     }
     ocean.resolution = static_cast<uint32_t>(resolution);
-    ocean.patch_size = fields.number("patch_size", Range::above(0.0, "m"), defaults.patch_size);
-    ocean.wind_speed = fields.number("wind_speed", Range::above(0.0, "m/s"), defaults.wind_speed);
+    ocean.patch_size = fields.number("patch_size", Range::positive_length(), defaults.patch_size);
+    ocean.wind_speed =
+        fields.number("wind_speed", Range{.min = 0.0, .max = kMaxWindSpeed, .min_inclusive = false, .unit = "m/s"},
+                      defaults.wind_speed);
     ocean.wind_direction_deg =
         fields.number("wind_direction_deg", Range::closed(-360.0, 360.0, "degrees"), defaults.wind_direction_deg);
     ocean.spectrum = fields.choice("spectrum", kSpectra, defaults.spectrum);
-    ocean.fetch = fields.number("fetch", Range::above(0.0, "m"), defaults.fetch);
-    ocean.amplitude_scale = fields.number("amplitude_scale", Range::at_least(0.0), defaults.amplitude_scale);
-    ocean.choppiness = fields.number("choppiness", Range::at_least(0.0), defaults.choppiness);
+    ocean.fetch = fields.number("fetch", Range::positive_length(), defaults.fetch);
+    ocean.amplitude_scale = fields.number("amplitude_scale", Range::closed(0.0, 1e3), defaults.amplitude_scale);
+    ocean.choppiness = fields.number("choppiness", Range::closed(0.0, 1e3), defaults.choppiness);
     fields.finish();
     // Phillips has no fetch: a fetch there would be silently ignored.
     if (fields.has("fetch") && ocean.spectrum != OceanSpectrum::Jonswap) {

@@ -254,7 +254,7 @@ TEST(godrays_scene, OutOfRangeFieldsAreRefusedNamingFieldAndRange) {
         {"effects.godrays.grid=64.5", {"effects.godrays.grid"}},
         {"effects.godrays.resolution_scale=0.75", {"effects.godrays.resolution_scale: 0.75", "0.5 or 1"}},
         {"effects.godrays.resolution_scale=2", {"effects.godrays.resolution_scale: 2 is out of range"}},
-        {"effects.godrays.max_depth=0", {"effects.godrays.max_depth: 0 is out of range", "value > 0 m"}},
+        {"effects.godrays.max_depth=0", {"effects.godrays.max_depth: 0 is out of range", "0 < value <= 1e+05 m"}},
         {"effects.godrays.method=rays", {"effects.godrays.method", "lines, marched"}},
         {"effects.godrays.march_steps=0", {"effects.godrays.march_steps: 0 is out of range", "1 <= value <= 4096"}},
         {"effects.godrays.grdi=64", {"effects.godrays.grdi: unknown field", "did you mean 'grid'"}},

@@ -138,7 +138,7 @@ TEST(scene_overrides, ArrayElementsByIndex) {
     // An error inside an overridden element names the override.
     const std::string range = test::user_error_of([&] { parse_scene(text, "r.json", {"receivers[0].radius=0"}); });
     EXPECT_EQ(range,
-              "r.json: receivers[0].radius: 0 is out of range (accepted: value > 0 m) "
+              "r.json: receivers[0].radius: 0 is out of range (accepted: 0 < value <= 1e+05 m) "
               "[from override 'receivers[0].radius=0']");
 }
 
