@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "engine/core/errors.hpp"
 #include "engine/scene/angles.hpp"
@@ -100,9 +101,18 @@ Receiver read_receiver(FieldReader& fields, const std::filesystem::path& base_di
     receiver.object_to_world = object_to_world;
     transform_mesh(receiver.mesh, object_to_world);
     // The placed mesh within the scene's lengths (Range::length), however scale and shape combine.
+    // A NaN or infinite vertex (a glTF file can hold one) is refused too.
     double reach = 0.0;
-    for (int axis = 0; axis < 3; ++axis) {
-        reach = std::max({reach, std::abs(receiver.mesh.bounds_min[axis]), std::abs(receiver.mesh.bounds_max[axis])});
+    for (const glm::vec3& position : receiver.mesh.positions) {
+        for (int axis = 0; axis < 3; ++axis) {
+            const double value = std::abs(double(position[axis]));
+            reach = std::isfinite(value) ? std::max(reach, value) : std::numeric_limits<double>::infinity();
+        }
+    }
+    if (!std::isfinite(reach)) {
+        fields.fail(receiver.type == ReceiverType::Gltf ? "file" : "scale",
+                    "the mesh holds a vertex that is not a finite number once placed",
+                    "finite vertices within " + format_number(kMaxSceneLength) + " m of the origin");
     }
     if (!(reach <= kMaxSceneLength)) {
         fields.fail("scale", "places the mesh " + format_number(reach) + " m from the origin",

@@ -131,5 +131,27 @@ TEST(scene_gltf, ReceiverFileIsRelativeToTheSceneFile) {
     EXPECT_EQ(receiver.mesh.bounds_max, glm::dvec3(1.0, 1.0, 1.0));
 }
 
+// A vertex that is NaN (or beyond the scene's lengths) is refused when the scene places the mesh:
+// one line naming the receiver's file. It used to reach the GPU and exit 2.
+TEST(scene_gltf, ANonFiniteVertexIsRefusedNamingTheFile) {
+    GltfSpec spec;
+    spec.positions = {0, 0, 0, 1, 0, 0, 0, 0, 1};
+    const std::filesystem::path mesh = write_gltf("nan_vertex", spec);
+    std::string text = test::gltf_text(spec);
+    // The first position's x as NaN: its bytes in the base64 buffer, 00 00 c0 7f.
+    const std::string zero_x = test::base64({0, 0, 0, 0, 0, 0});
+    const std::string nan_x = test::base64({0, 0, 0xc0, 0x7f, 0, 0});
+    ASSERT_EQ(text.find(zero_x.substr(0, 8)), text.find("base64,") + 7);
+    text.replace(text.find("base64,") + 7, 8, nan_x.substr(0, 8));
+    test::write_text(mesh, text);
+    const std::filesystem::path scene_file = test::write_text(mesh.parent_path() / "scene.json", R"({
+        "camera": { "position": [0, 1, 3], "target": [0, 0, 0] }, "sun": { "elevation_deg": 45 },
+        "sky": { "radiance": [0.3, 0.4, 0.5] },
+        "receivers": [{ "type": "gltf", "file": "mesh.gltf" }] })");
+    const std::string message = test::user_error_of([&] { load_scene(scene_file); });
+    EXPECT_NE(message.find("receivers[0].file: the mesh holds a vertex that is not a finite number"), std::string::npos)
+        << message;
+}
+
 }  // namespace
 }  // namespace vkw
