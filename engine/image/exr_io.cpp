@@ -8,7 +8,9 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStdIO.h>
+#include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfTestFile.h>
 
 #include <algorithm>
@@ -99,6 +101,13 @@ ExrWriteReport write_exr(const std::filesystem::path& path, const ImageRGBA32F& 
     // compression the bytes depend on the pixels alone.
     Imf::Header header(image.width, image.height);
     header.compression() = Imf::ZIP_COMPRESSION;
+    Imf::addChromaticities(header, Imf::Chromaticities());  // the default: Rec. 709 primaries, D65 white
+    for (const ImageAttribute& attribute : image.attributes) {
+        if (attribute.name.empty() || header.find(attribute.name) != header.end()) {
+            throw InternalError("write_exr: attribute '" + attribute.name + "' is empty or given twice");
+        }
+        header.insert(attribute.name, Imf::StringAttribute(attribute.value));
+    }
     const Imath::Box2i window = header.dataWindow();
 
     ExrWriteReport report;
@@ -193,6 +202,11 @@ ImageRGBA32F read_pixels(const std::filesystem::path& path, Imf::InputFile& file
     }
     file.setFrameBuffer(frame_buffer);
     file.readPixels(window.min.y, window.max.y);
+    for (auto it = file.header().begin(); it != file.header().end(); ++it) {
+        if (const auto* text = dynamic_cast<const Imf::StringAttribute*>(&it.attribute())) {
+            image.attributes.push_back({it.name(), text->value()});
+        }
+    }
     return image;
 }
 

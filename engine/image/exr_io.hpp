@@ -16,15 +16,18 @@ struct ExrWriteReport {
     std::size_t nonfinite_values = 0;  // NaN / +-inf, stored unchanged
 };
 
-// Writes R, G, B, A and "<layer>.R/G/B" for each extra layer, ZIP-compressed. The output is
-// deterministic: the same image and pixel type give a byte-identical file.
+// Writes R, G, B, A and "<layer>.R/G/B" for each extra layer, ZIP-compressed, with the standard
+// `chromaticities` attribute (Rec. 709 primaries, D65 white: the renderers' linear RGB) and each of
+// the image's attributes as a string attribute. The output is deterministic: the same image
+// (attributes included) and pixel type give a byte-identical file.
 // Throws UserError (one line naming the path) if the file cannot be written,
 // InternalError if the image's sizes are inconsistent.
 ExrWriteReport write_exr(const std::filesystem::path& path, const ImageRGBA32F& image,
                          ExrPixelType pixel_type = ExrPixelType::Float);
 
 // Reads R, G, B (required) and A (1 where missing), half, float or uint, plus every layer
-// that has any of "<name>.R/G/B" (missing ones read as 0); layers come back sorted by name.
+// that has any of "<name>.R/G/B" (missing ones read as 0); layers come back sorted by name, and
+// the header's string attributes as attributes, sorted by name.
 // The data window's top-left corner becomes pixel (0, 0).
 // Throws UserError (one line naming the path) for a missing, unreadable or malformed file.
 ImageRGBA32F read_exr(const std::filesystem::path& path);

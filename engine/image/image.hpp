@@ -16,11 +16,19 @@ struct ExtraLayer {
     std::vector<float> rgb;  // 3 floats per pixel, same pixel order as ImageRGBA32F::rgba
 };
 
+// A named text that travels with the image: what made it (EXR stores each as a string attribute
+// of the header; the pixels never depend on them).
+struct ImageAttribute {
+    std::string name;  // e.g. "software", "vkwater/scene"
+    std::string value;
+};
+
 struct ImageRGBA32F {
     int width = 0;
     int height = 0;
     std::vector<float> rgba;  // 4 floats per pixel, row-major, row 0 is the TOP row of the picture
     std::vector<ExtraLayer> layers;
+    std::vector<ImageAttribute> attributes;
 
     std::size_t pixel_count() const { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
 

@@ -3,6 +3,8 @@
 // input must fail cleanly: no crash, no validation message.
 #include <gtest/gtest.h>
 
+#include "engine/image/exr_io.hpp"
+
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -217,6 +219,38 @@ TEST(cli, ValuesBeyondFloatsAreRefusedAndNothingWritten) {
             run_vkwater(std::string(command) + " " + calm + " --width 16 --height 12 --out " + out.string() + huge), 1,
             "sun.irradiance[0]: 1e+300 is out of range (accepted: 0 <= value <= 1e+30 W m^-2)");
         EXPECT_FALSE(fs::exists(out)) << command;
+    }
+}
+
+// Both renderers' EXR files say how they were made (README "What an EXR file records"):
+// the software, the scene file and its hash, the camera, the overrides, the renderer, the pixel
+// filter, the device and the time.
+TEST(cli, ExrFilesRecordHowTheyWereMade) {
+    const std::string calm = std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json";
+    for (const char* command : {"render", "reference"}) {
+        const fs::path out = scratch(std::string("provenance_") + command + ".exr");
+        const CommandRun run = run_vkwater(std::string(command) + " " + calm + " --width 16 --height 12 --out " +
+                                           out.string() + " --set camera.fov_y_deg=50");
+        ASSERT_EQ(run.exit_code, 0) << run.output;
+        const vkw::ImageRGBA32F image = vkw::read_exr(out);
+        auto value = [&](const std::string& name) {
+            for (const vkw::ImageAttribute& a : image.attributes) {
+                if (a.name == name) return a.value;
+            }
+            return std::string("(missing)");
+        };
+        EXPECT_EQ(value("software"), "vkwater " VKWATER_VERSION) << command;
+        EXPECT_EQ(value("vkwater/scene"), calm);
+        EXPECT_EQ(value("vkwater/sceneHash").size(), 16u);
+        EXPECT_EQ(value("vkwater/overrides"), "camera.fov_y_deg=50");
+        EXPECT_NE(value("vkwater/camera").find("position [0, 3, 3] m"), std::string::npos) << value("vkwater/camera");
+        EXPECT_NE(value("vkwater/camera").find("fov_y 50 degrees"), std::string::npos);
+        EXPECT_EQ(value("vkwater/renderer"), std::string(command) == "render" ? "real-time" : "reference");
+        EXPECT_EQ(value("vkwater/filter"), "point: one sample at each pixel centre");
+        EXPECT_NE(value("vkwater/device"), "(missing)");
+        EXPECT_NE(value("vkwater/time").find(std::string(command) == "render" ? " ms, frame 1 of 1" : " s, the whole"),
+                  std::string::npos)
+            << value("vkwater/time");
     }
 }
 

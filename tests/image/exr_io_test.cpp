@@ -1,5 +1,7 @@
 // Tests of write_exr / read_exr: round trips, half clamping, NaN handling, extra layers,
 // deterministic bytes and error reporting on bad input files.
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfStandardAttributes.h>
 #include <gtest/gtest.h>
 
 #include <Imath/half.h>
@@ -144,6 +146,35 @@ TEST(image_exr_io, ExtraLayersRoundTripSortedByName) {
     expect_bit_identical(image.layers[1].rgb, back.layers[0].rgb);
     expect_bit_identical(image.layers[0].rgb, back.layers[1].rgb);
     expect_bit_identical(image.rgba, back.rgba);
+}
+
+// The header carries the standard chromaticities (the renderers' linear RGB is Rec. 709 with a D65
+// white) and every attribute of the image, which read back as written, sorted by name.
+TEST(image_exr_io, AttributesAndChromaticitiesRoundTrip) {
+    ScratchDir dir;
+    ImageRGBA32F image = make_test_image(5, 4, {});
+    image.attributes = {{"vkwater/scene", "scenes/pool.json"}, {"software", "vkwater test"}};
+    write_exr(dir / "a.exr", image);
+    Imf::InputFile file((dir / "a.exr").c_str());
+    ASSERT_TRUE(Imf::hasChromaticities(file.header()));
+    const Imf::Chromaticities c = Imf::chromaticities(file.header());
+    EXPECT_FLOAT_EQ(c.red.x, 0.64f);
+    EXPECT_FLOAT_EQ(c.green.y, 0.6f);
+    EXPECT_FLOAT_EQ(c.blue.x, 0.15f);
+    EXPECT_FLOAT_EQ(c.white.x, 0.3127f);
+    EXPECT_FLOAT_EQ(c.white.y, 0.329f);
+    const ImageRGBA32F back = read_exr(dir / "a.exr");
+    ASSERT_EQ(back.attributes.size(), 2u);
+    EXPECT_EQ(back.attributes[0].name, "software");
+    EXPECT_EQ(back.attributes[0].value, "vkwater test");
+    EXPECT_EQ(back.attributes[1].name, "vkwater/scene");
+    EXPECT_EQ(back.attributes[1].value, "scenes/pool.json");
+    expect_bit_identical(image.rgba, back.rgba);
+    // One name twice (or one that a standard attribute already has) is a caller's bug.
+    image.attributes.push_back({"software", "again"});
+    EXPECT_THROW(write_exr(dir / "b.exr", image), InternalError);
+    image.attributes.back() = {"chromaticities", "text"};
+    EXPECT_THROW(write_exr(dir / "b.exr", image), InternalError);
 }
 
 TEST(image_exr_io, RepeatedWritesAreByteIdentical) {

@@ -8,6 +8,7 @@
 #include "tools/reference/reference_renderer.hpp"
 #include "tools/reference/scene_hash.hpp"
 #include "tools/vkwater/commands.hpp"
+#include "tools/vkwater/image_provenance.hpp"
 
 #include <unistd.h>
 #include <nlohmann/json.hpp>
@@ -116,9 +117,15 @@ int run_reference(const ReferenceArgs& args) {
     }
     const auto start = std::chrono::steady_clock::now();
     ref::ReferenceReport report;
-    const ImageRGBA32F image = ref::render_reference(scene, options, &report);
+    ImageRGBA32F image = ref::render_reference(scene, options, &report);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     require_finite_image(image, "the reference image");
+    char time[64], device[64];
+    std::snprintf(time, sizeof time, "%.2f s, the whole image", seconds);
+    std::snprintf(device, sizeof device, "CPU, %u threads", options.threads == 0 ? hardware : options.threads);
+    image.attributes = image_attributes(
+        {args.scene, args.overrides, "reference", "point: one sample at each pixel centre", device, time},
+        scene.camera);
     write_exr(args.out, image);
     std::printf("wrote %s (%ux%u, reference, layers RGBA, caustic, inscatter) in %.2f s\n", args.out.c_str(),
                 args.width, args.height, seconds);

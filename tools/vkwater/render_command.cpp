@@ -11,6 +11,7 @@
 #include "tools/metrics/metrics.hpp"
 #include "tools/metrics/reference_errors.hpp"
 #include "tools/vkwater/commands.hpp"
+#include "tools/vkwater/image_provenance.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -136,8 +137,15 @@ int run_render(const RenderArgs& args) {
     // The CPU's share before the device runs: the graph is declared and compiled every frame.
     std::printf("  %-24s %8.3f ms (CPU)\n", "declare + compile graph", declare_ms);
 
+    const std::string device_name = context->device_name();
     context.reset();  // tear the device down now: teardown can report validation messages too
     require_finite_image(result.image, "the rendered image (--check-finite names the first pass that made one)");
+    char time[96];
+    std::snprintf(time, sizeof time, "%.2f ms, frame %u of %u (%s)", result.timing.total_ms, args.repeat, args.repeat,
+                  result.timing.method_name().c_str());
+    result.image.attributes = image_attributes(
+        {args.scene, args.overrides, "real-time", "point: one sample at each pixel centre", device_name, time},
+        scene.camera);
     if (kind == OutputKind::Exr) {
         const ExrWriteReport report =
             write_exr(out, result.image, args.half ? ExrPixelType::Half : ExrPixelType::Float);
