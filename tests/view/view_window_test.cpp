@@ -174,6 +174,18 @@ TEST_F(ViewWindow, ScreenshotOfAStillFrameEqualsTheOffscreenRender) {
     // 2.9e-4 (this test fails then); 1 mm gives 8e-5, about the bound's resolution.
     // The exposure does not enter: the EXR is the radiance before display.
     EXPECT_LT(error.rel_mse, 1e-4);
+    // The screenshot records how it was made, as the render does: the viewer's own camera pose.
+    const vkw::ImageRGBA32F image = vkw::read_exr(shot);
+    auto value = [&](const std::string& name) {
+        for (const vkw::ImageAttribute& a : image.attributes) {
+            if (a.name == name) return a.value;
+        }
+        return std::string("(missing)");
+    };
+    EXPECT_EQ(value("vkwater/renderer"), "real-time (vkwater view)");
+    EXPECT_EQ(value("vkwater/overrides"), "water.grid_resolution=64");
+    EXPECT_NE(value("vkwater/camera").find("position [0.3"), std::string::npos) << value("vkwater/camera");
+    EXPECT_NE(value("software").find("vkwater "), std::string::npos);
 }
 
 TEST_F(ViewWindow, ShaderReloadRereadsTheSpvFiles) {

@@ -12,6 +12,7 @@
 #include "passes/frame/renderer.hpp"
 #include "passes/present/present_graph.hpp"
 #include "passes/present/present_handoff.hpp"
+#include "tools/vkwater/image_provenance.hpp"
 #include "tools/vkwater/view/camera_controller.hpp"
 #include "tools/vkwater/view/frame_stats.hpp"
 #include "tools/vkwater/view/parameter_panel.hpp"
@@ -436,8 +437,14 @@ bool Viewer::render_frame() {
     for (const std::filesystem::path& exr : screenshots_) {
         const VkExtent2D extent = swapchain_->extent();
         try {
-            const std::filesystem::path png = write_screenshot(exr, static_cast<const float*>(readback.mapped()),
-                                                               extent.width, extent.height, tonemap_.exposure);
+            char time[96];
+            std::snprintf(time, sizeof time, "%.2f ms, the mean frame interval over the last frames (wall clock)",
+                          stats_.recent_frame_ms());
+            const std::filesystem::path png = write_screenshot(
+                exr, static_cast<const float*>(readback.mapped()), extent.width, extent.height, tonemap_.exposure,
+                cli::image_attributes({options_.scene, overrides_, "real-time (vkwater view)",
+                                       "point: one sample at each pixel centre", context_->device_name(), time},
+                                      scene_->camera));
             std::printf("frame %llu: wrote %s (linear HDR, %ux%u) and %s\n", static_cast<unsigned long long>(frame_),
                         exr.c_str(), extent.width, extent.height, png.c_str());
         } catch (const UserError& error) {
