@@ -222,6 +222,23 @@ TEST(cli, ValuesBeyondFloatsAreRefusedAndNothingWritten) {
     }
 }
 
+// `passes` prints what a frame costs on a CPU device, from its counts (tools/vkwater/cpu_frame_estimate.hpp):
+// pool at 400x300 with 1024^2 godray beams walks them over a 200-column godray image, 8.6 s a frame
+// by the rates (1048576 x 200 x 40 ns + 1048576 x 130 ns + 120000 x 350 ns = 8.566 s), where pool's
+// defaults cost 0.21 s.
+TEST(cli, PassesEstimatesTheFrameOnACpuDevice) {
+    const CommandRun slow =
+        run_vkwater("passes " + kPool + " --width 400 --height 300 --set effects.godrays.grid=1024");
+    ASSERT_EQ(slow.exit_code, 0) << slow.output;
+    EXPECT_NE(slow.output.find("on a CPU device (lavapipe, 2 cores): 1048576 photons, 1048576 godray beams over 200 "
+                               "columns: about 8.6 s a frame"),
+              std::string::npos)
+        << slow.output;
+    const CommandRun defaults = run_vkwater("passes " + kPool + " --width 400 --height 300");
+    EXPECT_NE(defaults.output.find("4096 godray beams over 200 columns: about 0.21 s a frame"), std::string::npos)
+        << defaults.output;
+}
+
 // Both renderers' EXR files say how they were made (README "What an EXR file records"):
 // the software, the scene file and its hash, the camera, the overrides, the renderer, the pixel
 // filter, the device and the time.

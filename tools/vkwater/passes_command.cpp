@@ -13,6 +13,7 @@
 #include "passes/receivers/receiver_meshes.hpp"
 #include "passes/water/water_surface_spectrum.hpp"
 #include "tools/vkwater/commands.hpp"
+#include "tools/vkwater/cpu_frame_estimate.hpp"
 
 #include <cstdio>
 #include <memory>
@@ -52,6 +53,8 @@ int run_passes(const PassesArgs& args) {
     build_frame_graph(graph, scene, &constants, args.width, args.height, VK_NULL_HANDLE, ocean.get(), receivers.get());
     graph.compile(args.width, args.height);
     std::printf("%s", graph.describe().c_str());
+    std::printf("on a CPU device (lavapipe, 2 cores): %s\n",
+                estimate_cpu_frame(scene, graph.needs(), args.width, args.height).describe().c_str());
     if (args.barriers) std::printf("barriers:\n%s", graph.dump_barriers().c_str());
     if (!args.dot.empty()) {
         require_writable_file_path(args.dot);

@@ -11,6 +11,7 @@
 #include "tools/metrics/metrics.hpp"
 #include "tools/metrics/reference_errors.hpp"
 #include "tools/vkwater/commands.hpp"
+#include "tools/vkwater/cpu_frame_estimate.hpp"
 #include "tools/vkwater/image_provenance.hpp"
 
 #include <algorithm>
@@ -99,6 +100,14 @@ int run_render(const RenderArgs& args) {
     const std::shared_ptr<ValidationLog> validation_log = context->shared_validation_log();
     std::printf("device: %s (instance + device created in %.1f ms%s)\n", context->device_name().c_str(), context_ms,
                 args.device.validation ? ", with validation" : "");
+
+    if (context->is_cpu_device()) {
+        const CpuFrameEstimate estimate = estimate_cpu_frame(
+            scene, decide_frame_needs(scene, double(args.width) / args.height), args.width, args.height);
+        if (estimate.seconds * args.repeat > kSlowCpuFrameSeconds) {
+            std::printf("note: %s on this CPU device, %u frame(s)\n", estimate.describe().c_str(), args.repeat);
+        }
+    }
 
     RenderOptions options;
     options.width = args.width;
