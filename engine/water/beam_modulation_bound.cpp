@@ -71,7 +71,7 @@ BeamModulationBound beam_modulation_bound(const BeamModulationInputs& in) {
         return bound;
     }
     // The tilted normals: kTilts magnitudes from 0 to atan(S) (both ends) by kAzimuths directions.
-    constexpr int kTilts = 33, kAzimuths = 128;
+    constexpr int kTilts = 17, kAzimuths = 64;
     std::vector<Refraction> samples(kTilts * kAzimuths);
     for (int j = 0; j < kTilts; ++j) {
         const double tilt = max_tilt * j / (kTilts - 1);

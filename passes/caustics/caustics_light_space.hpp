@@ -103,6 +103,8 @@ struct CausticMapFrame {
     bool sun_up = false;         // s.y < 0; otherwise no photon deposits anything
     glm::dvec3 flat_texel_flux;  // Phi_flat per channel (above), W
     glm::dvec3 lsb;              // W per fixed-point unit, per channel
+
+    bool operator==(const CausticMapFrame&) const = default;
 };
 
 // Duff, Burgess, Christensen, Hery, Kensler, Liani, Villemin, "Building an Orthonormal Basis,

@@ -253,4 +253,15 @@ CausticReadRegion caustic_read_region(const CausticMapFrame& frame, const Causti
     return region;
 }
 
+const CausticReadRegion& CausticReadRegionCache::region(const CausticMapFrame& frame, const CausticReadInputs& inputs) {
+    if (!valid_ || !(frame == frame_) || !(inputs == inputs_)) {
+        region_ = caustic_read_region(frame, inputs);
+        frame_ = frame;
+        inputs_ = inputs;
+        valid_ = true;
+        ++computed_;
+    }
+    return region_;
+}
+
 }  // namespace vkw::passes

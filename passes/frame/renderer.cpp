@@ -138,7 +138,8 @@ passes::CausticReadInputs caustic_read_inputs(const Scene& scene, double aspect,
 
 void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
                        uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
-                       const passes::ReceiverMeshes* receivers, const FrameOutput* output, LayerReadbacks layers) {
+                       const passes::ReceiverMeshes* receivers, const FrameOutput* output, LayerReadbacks layers,
+                       passes::CausticReadRegionCache* read_regions) {
     const bool caustic_layer = layers.caustic != VK_NULL_HANDLE && !output;
     const bool inscatter_layer = layers.inscatter != VK_NULL_HANDLE && !output;
     // The waves' amplitude bound, once: for the FFT ocean it builds the CPU surface.
@@ -205,9 +206,12 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
                     const double lowest = receivers && !receivers->empty()
                                               ? std::min(scene.floor.height, receivers->bounds_lo().y)
                                               : scene.floor.height;
-                    const passes::CausticReadRegion region = passes::caustic_read_region(
-                        passes::fit_caustic_map(caustics),
-                        caustic_read_inputs(scene, double(width) / double(height), graph.needs(), amplitude, lowest));
+                    const passes::CausticMapFrame map = passes::fit_caustic_map(caustics);
+                    const passes::CausticReadInputs read =
+                        caustic_read_inputs(scene, double(width) / double(height), graph.needs(), amplitude, lowest);
+                    const passes::CausticReadRegion computed =
+                        read_regions ? passes::CausticReadRegion{} : passes::caustic_read_region(map, read);
+                    const passes::CausticReadRegion& region = read_regions ? read_regions->region(map, read) : computed;
                     if (region.bounded) {
                         caustics.read_texels = passes::CausticReadTexels{
                             {region.x0, region.y0, region.x1, region.y1}, region.rows, region.photon_spread};
@@ -422,7 +426,7 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
     auto graph = std::make_unique<fg::FrameGraph>(std::move(needs));
     graph->set_default_recording(options.recording);
     build_frame_graph(*graph, scene, constants_.get(), options.width, options.height, readback.hdr.handle(), ocean,
-                      receivers, output, {readback.caustic.handle(), readback.inscatter.handle()});
+                      receivers, output, {readback.caustic.handle(), readback.inscatter.handle()}, &read_regions_);
     // Timed frames carry the unit their times are reported in; untimed ones (tests) need none.
     if (options.timing != fg::TimingMode::None) passes::add_calibration_pass(*graph);
     graph->compile(options.width, options.height);

@@ -75,7 +75,7 @@ struct LayerReadbacks {
 void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
                        uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
                        const passes::ReceiverMeshes* receivers, const FrameOutput* output = nullptr,
-                       LayerReadbacks layers = {});
+                       LayerReadbacks layers = {}, passes::CausticReadRegionCache* read_regions = nullptr);
 
 class Renderer {
 public:
@@ -97,6 +97,8 @@ public:
     // How many times the frame's device objects were made: once per physical signature of the
     // compiled graph (output size, the passes that live, their resources), not per frame.
     size_t realize_count() const { return realize_count_; }
+    // How many times the photon culling's read region was computed (it is reused while the camera stays).
+    uint64_t read_regions_computed() const { return read_regions_.computed(); }
     // The CPU time of the last frame's declaration and compilation, in milliseconds.
     double last_declare_ms() const { return last_declare_ms_; }
 
@@ -115,6 +117,7 @@ private:
     std::unique_ptr<passes::OceanSpectrumBuffer> ocean_;    // the FFT ocean's h0 on the device
     std::shared_ptr<const FftOceanSpectrum> ocean_source_;  // the CPU spectrum it was made from
     std::unique_ptr<passes::ReceiverMeshes> receivers_;     // the scene's receiver meshes on the device
+    passes::CausticReadRegionCache read_regions_;           // the photon culling's region, while the camera stays
     const void* receivers_source_ = nullptr;                // the scene whose receivers they are
     size_t receivers_count_ = 0;
     size_t realize_count_ = 0;

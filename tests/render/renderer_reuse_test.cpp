@@ -69,5 +69,27 @@ TEST_F(RendererReuse, AnAdoptedGraphRendersWhatAFreshOneRenders) {
     EXPECT_EQ(adopted.image.rgba, made.image.rgba);
 }
 
+// The photon culling's read region depends on the camera and the waves' bounds, not on their
+// clock: frames with a running clock reuse it; a new amplitude or camera computes it again (and
+// the previous test shows the reused region's image equal to a fresh renderer's).
+TEST_F(RendererReuse, ReusesThePhotonCullingRegionWhileTheCameraStays) {
+    Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
+    Renderer renderer(context());
+    const RenderOptions options{64, 48, true, fg::TimingMode::None};
+    renderer.render(scene, options);
+    EXPECT_EQ(renderer.read_regions_computed(), 1u);
+    for (int frame = 0; frame < 3; ++frame) {
+        scene.water->time += 1.0 / 30.0;
+        renderer.render(scene, options);
+    }
+    EXPECT_EQ(renderer.read_regions_computed(), 1u) << "the clock alone recomputed the region";
+    scene.water->waves.components[0].amplitude *= 1.5;
+    renderer.render(scene, options);
+    EXPECT_EQ(renderer.read_regions_computed(), 2u) << "a new amplitude bound must recompute it";
+    scene.camera.position.x += 0.1;
+    renderer.render(scene, options);
+    EXPECT_EQ(renderer.read_regions_computed(), 3u) << "a new camera must recompute it";
+}
+
 }  // namespace
 }  // namespace vkw::test
