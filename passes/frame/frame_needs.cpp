@@ -141,6 +141,10 @@ void decide_godrays(fg::FrameNeeds& needs, const Scene& scene, const WaterBounds
         return rule(false,
                     "the water is flat and no object over it shadows the beams: the analytic in-scatter is exact");
     }
+    // The FFT ocean's CPU surface would cost its FFTs to build, and its fields have no slope bound.
+    if (water.waves.model == WaveModel::FftOcean) {
+        return rule(true, lit + "; the waves' beams: the FFT ocean gives no bound on its slope or curvature");
+    }
     const auto surface = make_surface(water.waves, water.level, water.time);
     const glm::dvec3 sigma_t = scene.medium.sigma_t();
     const BeamModulationBound bound =
