@@ -50,6 +50,11 @@ std::string describe(const char* pattern, double value) {
     return text;
 }
 
+std::string focusing_reason(double a) {
+    return describe(
+        "the beams may focus within the lit depth ((D + A) K kappa + S tan(phi) = %.3g >= 1: a caustic can form)", a);
+}
+
 }  // namespace
 
 double BeamModulationBound::largest_relative_change() const {
@@ -68,6 +73,14 @@ BeamModulationBound beam_modulation_bound(const BeamModulationInputs& in) {
     const double max_tilt = std::atan(in.slope);
     if (!(sun_zenith + max_tilt < 0.5 * std::numbers::pi - 1e-3)) {
         bound.unbounded_because = describe("the sun may graze the surface where its slope reaches %.3g", in.slope);
+        return bound;
+    }
+    // The untilted normal alone already shows most caustics: a is at least its value there.
+    const Refraction untilted = refract_sun(in.sun, {0.0, 1.0, 0.0}, in.ior);
+    const double a_at_least =
+        (in.depth + in.amplitude) * std::abs(untilted.focusing) * in.curvature + in.slope * untilted.tan_phi;
+    if (!(a_at_least < 1.0)) {
+        bound.unbounded_because = focusing_reason(a_at_least);
         return bound;
     }
     // The tilted normals: kTilts magnitudes from 0 to atan(S) (both ends) by kAzimuths directions.
@@ -104,9 +117,7 @@ BeamModulationBound beam_modulation_bound(const BeamModulationInputs& in) {
     const double a =
         (in.depth + in.amplitude) * focusing.widened_high() * in.curvature + in.slope * tan_phi.widened_high();
     if (!(a < 1.0)) {
-        bound.unbounded_because = describe(
-            "the beams may focus within the lit depth ((D + A) K kappa + S tan(phi) = %.3g >= 1: a caustic can form)",
-            a);
+        bound.unbounded_because = focusing_reason(a);
         return bound;
     }
     const double projection = in.slope * std::tan(sun_zenith);
