@@ -34,7 +34,7 @@ Refraction refract_sun(const glm::dvec3& sun, const glm::dvec3& normal, double n
 
 // The extremes of one quantity over the sampled tilts, widened by the largest step between
 // neighbouring samples (the quantities are smooth in the tilt).
-struct Range {
+struct Extremes {
     double low = kInfinity, high = -kInfinity, step = 0.0;
     void add(double value) {
         low = std::min(low, value);
@@ -95,7 +95,7 @@ BeamModulationBound beam_modulation_bound(const BeamModulationInputs& in) {
             samples[j * kAzimuths + k] = refract_sun(in.sun, normal, in.ior);
         }
     }
-    Range transmittance, inverse_cos_phi, tan_phi, focusing;
+    Extremes transmittance, inverse_cos_phi, tan_phi, focusing;
     auto widen = [&](const Refraction& a, const Refraction& b) {
         transmittance.step = std::max(transmittance.step, std::abs(a.transmittance - b.transmittance));
         inverse_cos_phi.step = std::max(inverse_cos_phi.step, std::abs(a.inverse_cos_phi - b.inverse_cos_phi));

@@ -209,9 +209,9 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
                     const passes::CausticMapFrame map = passes::fit_caustic_map(caustics);
                     const passes::CausticReadInputs read =
                         caustic_read_inputs(scene, double(width) / double(height), graph.needs(), amplitude, lowest);
-                    const passes::CausticReadRegion computed =
-                        read_regions ? passes::CausticReadRegion{} : passes::caustic_read_region(map, read);
-                    const passes::CausticReadRegion& region = read_regions ? read_regions->region(map, read) : computed;
+                    passes::CausticReadRegionCache one_frame;  // without the caller's: this frame's alone
+                    const passes::CausticReadRegion& region =
+                        (read_regions ? *read_regions : one_frame).region(map, read);
                     if (region.bounded) {
                         caustics.read_texels = passes::CausticReadTexels{
                             {region.x0, region.y0, region.x1, region.y1}, region.rows, region.photon_spread};
