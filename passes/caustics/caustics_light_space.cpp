@@ -82,10 +82,10 @@ CausticMapFrame fit_caustic_map(const CausticInputs& in) {
     // and as many more as the crests' shift along t and the margin need on each side.
     const double texel = 2.0 * in.half_extent / double(in.map_width - 2);
     const glm::dvec2 reach = in.max_amplitude * glm::abs(shear) + glm::dvec2(in.fit_margin);
-    // The adaptive kernel reaches up to kMaxSplatHalfWidth texels from its photon, the bilinear
+    // The adaptive kernel reaches up to kAdaptiveSplatReach texels from its photon, the bilinear
     // one a texel (the border below): the difference is added so edge photons keep all their taps.
     const uint32_t kernel_reach = in.kernel == CausticKernel::Bilinear   ? 0
-                                  : in.kernel == CausticKernel::Adaptive ? kMaxSplatHalfWidth - 1
+                                  : in.kernel == CausticKernel::Adaptive ? kAdaptiveSplatReach - 1
                                                                          : kMaxFootprintTexels - 1;
     const glm::uvec2 extra(std::ceil(reach.x / texel - 1e-9) + kernel_reach,
                            std::ceil(reach.y / texel - 1e-9) + kernel_reach);

@@ -14,7 +14,7 @@
 //   normal to t is A_ls = texel_x texel_z cos(theta_t).
 // - fit: the water's extent, plus as many texels on each side as the crests' shift along t
 //   (max_amplitude |t.xz / t.y|) and fit_margin need, plus a border as wide as the splat
-//   kernel reaches (one texel for the bilinear 2x2, kMaxSplatHalfWidth for the adaptive one,
+//   kernel reaches (one texel for the bilinear 2x2, kAdaptiveSplatReach for the adaptive one,
 //   kMaxFootprintTexels for the footprint),
 //   so the kernel of an edge photon stays on the map. The map is therefore wider than the requested
 //   W x H when the water has waves (CausticMapFrame::width, height).
@@ -41,9 +41,10 @@
 
 namespace vkw::passes {
 
-// The adaptive splat's largest half-width, texels (kMaxSplatHalfWidth of caustic_splat.glsl), and
-// the footprint splat's largest extent per axis (kMaxFootprintTexels of caustic_footprint.glsl).
-constexpr uint32_t kMaxSplatHalfWidth = 4;
+// How far the adaptive splat's taps reach from the texel of its photon's node, texels
+// (kAdaptiveSplatReach of caustic_splat.glsl), and the footprint splat's largest extent per axis
+// (kMaxFootprintTexels of caustic_footprint.glsl).
+constexpr uint32_t kAdaptiveSplatReach = 6;
 constexpr uint32_t kMaxFootprintTexels = 8;
 
 // A rectangle of map texels, [x0, x1) x [y0, y1).

@@ -27,7 +27,9 @@ struct CausticPhotonPush {
     CausticPhotonSourcePush source;
     uint32_t resolution;
     uint32_t sub_and_flags;  // bits 0-7: S; bit 8: jitter; bit 9: cull outside read_x, read_y
-    uint32_t first_row, rows, band_first, band_rows;
+    uint32_t chunk_rows;     // the chunk's first cell row | its cell rows << 16 (R <= 4096)
+    uint32_t vertex_offset;  // the element of the chunk's binding that holds vertex (0, first row)
+    uint32_t band_first, band_rows;
     uint32_t read_x, read_y;  // the read texels' columns and rows, [first, end): first | end << 16
 };
 constexpr uint32_t kJitterFlag = 1u << 8, kCullFlag = 1u << 9;
@@ -67,14 +69,37 @@ CausticPhotonSourcePush caustic_photon_source(const CausticInputs& in) {
     return push;
 }
 
-std::vector<RowBand> caustic_photon_chunks(const fg::PassContext& context, uint32_t resolution, uint32_t sub) {
+std::vector<RowBand> caustic_photon_chunks(const fg::PassContext& context, uint32_t resolution, uint32_t sub,
+                                           bool neighbour_rows) {
     const VkPhysicalDeviceLimits& limits = context.context().properties().limits;
-    // Cell rows j .. j + rows read vertex rows j .. j + rows: one extra row per chunk.
-    return row_bands(resolution, VkDeviceSize{resolution + 1} * kWaterVertexBytes, 0, 1, limits.maxStorageBufferRange,
-                     limits.minStorageBufferOffsetAlignment, kMaxGroups * kGroupSide / sub);
+    const VkDeviceSize row_bytes = VkDeviceSize{resolution + 1} * kWaterVertexBytes;
+    // Cell rows j .. j + rows read vertex rows j .. j + rows: one extra row per chunk. With the
+    // neighbours' rows, neighbour_binding's two more and the rows its aligned start adds.
+    const VkDeviceSize align = std::max<VkDeviceSize>(limits.minStorageBufferOffsetAlignment, 1);
+    const uint32_t extra = neighbour_rows ? static_cast<uint32_t>(3 + (align + row_bytes - 1) / row_bytes) : 1;
+    return row_bands(resolution, row_bytes, 0, extra, limits.maxStorageBufferRange, align,
+                     kMaxGroups * kGroupSide / sub);
 }
 
 namespace {
+
+// A chunk's binding widened to the vertex rows its photons' neighbours read: the row before the
+// chunk's first and the one after its last (where they exist), from the aligned offset at or
+// before the first of them. Vulkan's offset alignments are powers of two, so that offset is a
+// whole number of vertices.
+struct NeighbourBinding {
+    VkDeviceSize offset = 0, bytes = 0;
+    uint32_t vertex_offset = 0;  // the binding's element that holds vertex (0, chunk.first)
+};
+NeighbourBinding neighbour_binding(const RowBand& chunk, uint32_t resolution, VkDeviceSize alignment) {
+    const VkDeviceSize row_bytes = VkDeviceSize{resolution + 1} * kWaterVertexBytes;
+    const VkDeviceSize align = std::max<VkDeviceSize>(alignment, 1);
+    const uint32_t first_row = chunk.first > 0 ? chunk.first - 1 : 0;
+    const uint32_t end_row = std::min(chunk.first + chunk.rows + 2, resolution + 1);
+    const VkDeviceSize offset = first_row * row_bytes / align * align;
+    return {offset, end_row * row_bytes - offset,
+            static_cast<uint32_t>((chunk.first * row_bytes - offset) / kWaterVertexBytes)};
+}
 
 // The chunks' part within cell rows [first, end).
 std::vector<RowBand> clip_cell_rows(const std::vector<RowBand>& chunks, uint32_t first, uint32_t end,
@@ -107,9 +132,9 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
     push.resolution = inputs.grid_resolution;
     push.sub_and_flags = inputs.sub_photons | (inputs.jitter ? kJitterFlag : 0u);
     const CausticMapFrame frame = fit_caustic_map(inputs);  // its size includes the margin for the waves
-    // Per map row, the read texels [x0, x1) as x0 | x1 << 16, then the same widened by the tent's
-    // reach (kMaxSplatHalfWidth texels along both axes: the rows within it merged), so that a
-    // photon's centre alone says whether its tent can reach a read texel (binding 3; one unread
+    // Per map row, the read texels [x0, x1) as x0 | x1 << 16, then the same widened by the hat's
+    // reach (kAdaptiveSplatReach texels along both axes: the rows within it merged), so that a
+    // photon's node alone says whether its hat can reach a read texel (binding 3; one unread
     // entry when every photon is kept).
     std::vector<uint32_t> read_rows(1, 0u);
     if (inputs.read_texels) {
@@ -127,13 +152,13 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
         read_rows.clear();
         const std::vector<CausticTexelSpan>& spans = inputs.read_texels->rows;
         for (const CausticTexelSpan& span : spans) read_rows.push_back(span.x0 | span.x1 << 16);
-        const int reach = static_cast<int>(kMaxSplatHalfWidth), rows = static_cast<int>(spans.size());
+        const int reach = static_cast<int>(kAdaptiveSplatReach), rows = static_cast<int>(spans.size());
         for (int row = 0; row < rows; ++row) {
             uint32_t x0 = 0xffffu, x1 = 0;
             for (int near = std::max(0, row - reach); near <= std::min(rows - 1, row + reach); ++near) {
                 if (spans[near].x1 <= spans[near].x0) continue;
-                x0 = std::min(x0, spans[near].x0 - std::min<uint32_t>(spans[near].x0, kMaxSplatHalfWidth));
-                x1 = std::max(x1, spans[near].x1 + kMaxSplatHalfWidth);
+                x0 = std::min(x0, spans[near].x0 - std::min<uint32_t>(spans[near].x0, kAdaptiveSplatReach));
+                x1 = std::max(x1, spans[near].x1 + kAdaptiveSplatReach);
             }
             read_rows.push_back(x1 > x0 ? x0 | std::min<uint32_t>(x1, 0xffffu) << 16 : 0u);
         }
@@ -141,7 +166,7 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
     const fg::BufferHandle rows = add_read_rows_upload(graph, read_rows);
     // The cell rows whose photons can land on a read row: a cell's photons land within
     // photon_spread of the cell's own place (caustics_read_region.hpp), and their tents reach
-    // kMaxSplatHalfWidth texels further (the footprint kernel kMaxFootprintTexels).
+    // kAdaptiveSplatReach texels further (the footprint kernel kMaxFootprintTexels).
     uint32_t first_cell_row = 0, end_cell_row = inputs.grid_resolution;
     if (inputs.read_texels && std::isfinite(inputs.read_texels->photon_spread)) {
         const CausticTexelRect& r = inputs.read_texels->bounds;
@@ -189,8 +214,10 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
             const VkPhysicalDeviceLimits& limits = context.context().properties().limits;
             const uint32_t r = push.resolution, s = push.sub_and_flags & 0xffu;
-            const auto chunks =
-                clip_cell_rows(caustic_photon_chunks(context, r, s), first_cell_row, end_cell_row, context, r);
+            // The adaptive kernel (and the footprint's fallback to it) reads each photon's neighbours.
+            const bool neighbours = kernel_variant != CausticKernel::Bilinear;
+            const auto chunks = clip_cell_rows(caustic_photon_chunks(context, r, s, neighbours), first_cell_row,
+                                               end_cell_row, context, r);
             const uint32_t width = static_cast<uint32_t>(push.source.space.u_axis[3]);
             const uint32_t height = static_cast<uint32_t>(push.source.space.v_axis[3]);
             const auto bands = row_bands(height, VkDeviceSize{width} * kCausticTexelBytes, kCausticFluxHeaderBytes, 0,
@@ -202,13 +229,20 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
                 fg::DescriptorBinding surface = context.storage_buffer(0, d.surface);
                 surface.buffer.offset = chunk.offset;
                 surface.buffer.range = chunk.bytes;
+                uint32_t vertex_offset = 0;
+                if (neighbours) {
+                    const NeighbourBinding wide = neighbour_binding(chunk, r, limits.minStorageBufferOffsetAlignment);
+                    surface.buffer.offset = wide.offset;
+                    surface.buffer.range = wide.bytes;
+                    vertex_offset = wide.vertex_offset;
+                }
                 for (const RowBand& band : bands) {
                     fg::DescriptorBinding flux = context.storage_buffer(1, d.flux);
                     flux.buffer.offset = band.offset;
                     flux.buffer.range = band.bytes;
                     CausticPhotonPush p = push;
-                    p.first_row = chunk.first;
-                    p.rows = chunk.rows;
+                    p.chunk_rows = chunk.first | chunk.rows << 16;
+                    p.vertex_offset = vertex_offset;
                     p.band_first = band.first;
                     p.band_rows = band.rows;
                     std::vector<fg::DescriptorBinding> bindings{surface, flux, lost,

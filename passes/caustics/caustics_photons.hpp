@@ -4,8 +4,9 @@
 // refracts them with the exact Fresnel of common/fresnel.glsl, carries them to the floor plane,
 // and splats each photon's flux
 //   Phi = E_s max(0, -s.a) T(theta_i) exp(-sigma_t l)      (a: the sub-cell's vector area)
-// with its kernel (caustic_splat.glsl: the 2x2 bilinear tent, or one as wide as the photon's
-// neighbours land apart; caustic_footprint.glsl: its sub-cell's footprint by area; each a shader
+// with its kernel (the 2x2 bilinear tent; caustic_splat.glsl: the hat of the landed photon
+// lattice, whose photons carry what their hats intercept rather than their sub-cells' area;
+// caustic_footprint.glsl: its sub-cell's footprint by area; each a shader
 // variant; the taps sum to the photon's flux exactly, in integers) into the light-space
 // caustic flux map of fit_caustic_map, accumulated with uint64 fixed-point atomics
 // (caustics_light_space.hpp gives the LSB and the headroom), so two runs are bit-identical.
@@ -46,8 +47,11 @@ static_assert(sizeof(CausticPhotonSourcePush) == 96);
 CausticPhotonSourcePush caustic_photon_source(const CausticInputs& inputs);
 
 // The photon grid's dispatches: chunks of cell rows whose vertex rows fit one storage binding
-// and whose S x S photons per cell stay within 65535 groups of 8 per side.
-std::vector<RowBand> caustic_photon_chunks(const fg::PassContext& context, uint32_t resolution, uint32_t sub);
+// and whose S x S photons per cell stay within 65535 groups of 8 per side. `neighbour_rows`: the
+// binding must also hold the rows the adaptive kernel's neighbours are in, one before the chunk
+// and one after it, from an aligned offset.
+std::vector<RowBand> caustic_photon_chunks(const fg::PassContext& context, uint32_t resolution, uint32_t sub,
+                                           bool neighbour_rows = false);
 // Groups of 8 (the kernels' local size per side) for `invocations`.
 uint32_t caustic_photon_groups(uint64_t invocations);
 

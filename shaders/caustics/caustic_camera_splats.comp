@@ -171,7 +171,7 @@ float splat_taps(vec2 box, int level) {
 
 void main() {
     GridPhoton p;
-    const CausticPhotonChunk chunk = CausticPhotonChunk(pc.resolution, pc.sub, pc.first_row, pc.rows, pc.jitter != 0u);
+    const CausticPhotonChunk chunk = CausticPhotonChunk(pc.resolution, pc.sub, pc.first_row, pc.rows, pc.jitter != 0u, 0u);
     if (!trace_grid_photon(gl_GlobalInvocationID.xy, chunk, pc.source, p)) return;
     const u64vec3 q = u64vec3(p.q + 0.5);
     const vec2 size = vec2(pc.width, pc.height);

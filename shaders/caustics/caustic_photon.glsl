@@ -17,8 +17,8 @@ const float kCausticUpEpsilon = 1e-6;
 struct CausticPhoton {
     vec3 entry;      // where it enters the water (the sub-cell's centre)
     vec3 direction;  // its refracted direction t (unit, pointing down)
-    float carried;   // max(0, -s.a) T(theta_i), a the sub-cell's vector area: its flux over E_s
-                     // just below the surface
+    float area;      // max(0, -s.a), a the sub-cell's vector area: what it intercepts of the beam, m^2
+    float carried;   // area T(theta_i): its flux over E_s just below the surface
     float path;      // l: the path in the water to its receiver
     vec3 hit;        // entry + l t, where it meets the receiver
     vec3 energy;     // per RGB: carried exp(-sigma_t l); times E_s this is the photon's flux Phi (W)
@@ -69,7 +69,7 @@ bool caustic_patch_ray(CausticCell cell, vec2 at, CausticLightSpace space, out v
 // a jittered point of it; its area stays the sub-cell's either way.
 bool trace_caustic_photon_at(CausticCell cell, vec2 uv0, vec2 uv1, vec2 at, CausticLightSpace space, vec3 sigma_t,
                              out CausticPhoton photon) {
-    photon = CausticPhoton(vec3(0.0), vec3(0.0, -1.0, 0.0), 0.0, 0.0, vec3(0.0), vec3(0.0));
+    photon = CausticPhoton(vec3(0.0), vec3(0.0, -1.0, 0.0), 0.0, 0.0, 0.0, vec3(0.0), vec3(0.0));
     const vec3 s = space.sun.xyz;
     const float n = space.sun.w;
     const vec3 c00 = caustic_patch_point(cell, uv0), c11 = caustic_patch_point(cell, uv1);
@@ -88,6 +88,7 @@ bool trace_caustic_photon_at(CausticCell cell, vec2 uv0, vec2 uv1, vec2 at, Caus
     const Fresnel fresnel = fresnel_exact(cos_i, 1.0, n);
     photon.entry = p;
     photon.direction = t;
+    photon.area = projected;
     photon.carried = projected * fresnel.T;
     caustic_photon_stop_at(photon, l, sigma_t);
     return true;

@@ -7,8 +7,8 @@
 // sits in the same shader, even behind a uniform branch (measured: 104 ms against 223 ms for the
 // bilinear kernel's 1024^2 photons). One invocation per photon: sub-cell (a, b) of cell (i, j),
 // invocation (i S + a, j_local S + b). Each photon's flux, in units of the map's LSB, is rounded
-// once to an integer q and split over its splat kernel (caustic_splat.glsl: a tent one texel
-// wide, the bilinear 2x2, or as wide as its neighbours' spacing; caustic_footprint.glsl: its
+// once to an integer q and split over its splat kernel (the bilinear 2x2; caustic_splat.glsl:
+// the hat of the landed photon lattice, integrated over each texel; caustic_footprint.glsl: its
 // sub-cell's footprint, by area) by cumulative rounding, so the taps sum to q exactly (a
 // normalised kernel with no rounding drift) and integer addition makes the result independent of
 // the order the atomics land in.
@@ -20,7 +20,9 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-// The vertex rows first_row .. first_row + rows of the grid (a chunk's binding).
+// The vertex rows first_row - 1 .. first_row + rows + 1 of the grid (those that exist), vertex
+// (0, first_row) at element vertex_offset: a chunk's binding with the rows its photons'
+// neighbours need.
 layout(set = 0, binding = 0, std430) readonly buffer Surface { WaterVertex vertices[]; };
 
 #include "caustics/caustic_grid_photon.glsl"  // with VKWATER_SUN_SHADOW: bindings 6 and 7
@@ -33,7 +35,7 @@ layout(set = 0, binding = 1, std430) buffer Flux { uint64_t flux[]; };
 // Flux whose kernel tap fell outside the map, per channel (added by the band-0 dispatches only).
 layout(set = 0, binding = 2, std430) buffer Lost { uint64_t lost[]; };
 // With culling, per map row the texels [x0, x1) that the frame reads, as x0 | x1 << 16 (rows
-// 0 .. H - 1), then the same widened by kMaxSplatHalfWidth along both axes (rows H .. 2H - 1).
+// 0 .. H - 1), then the same widened by kAdaptiveSplatReach along both axes (rows H .. 2H - 1).
 layout(set = 0, binding = 3, std430) readonly buffer ReadRows { uint read_rows[]; };
 
 // Mirrors CausticPhotonPush in passes/caustics/caustics_photons.cpp (128 bytes, the guaranteed minimum).
@@ -42,8 +44,8 @@ layout(push_constant) uniform Push {
     uint resolution;     // R cells per side
     uint sub_and_flags;  // bits 0-7: S (S x S photons per cell); bit 8: jitter (each photon leaves from a
                          // hashed point of its sub-cell); bit 9: cull outside the read texels
-    uint first_row;      // first cell row of this chunk
-    uint rows;           // cell rows in this chunk
+    uint chunk_rows;     // the chunk's first cell row | its cell rows << 16
+    uint vertex_offset;  // the element of `vertices` that holds vertex (0, first cell row)
     uint band_first;     // first map row of this band
     uint band_rows;      // map rows in this band
     uint read_x;         // the texel columns the frame reads, [first, end): first | end << 16
@@ -61,14 +63,13 @@ void deposit(ivec2 texel, uint channel, uint64_t q) {
     atomicAdd(flux[(uint(row) * uint(pc.source.space.u_axis.w) + uint(texel.x)) * 3u + channel], q);
 }
 
-// Splits q over the taps of one axis by cumulative rounding: share k is
-// round(q W_k / W) - round(q W_{k-1} / W) with W_k the partial sums of the weights, so the shares
-// are non-negative and sum to q exactly.
-uint64_t axis_share(uint64_t q, SplatAxis axis, float total, int k, inout float partial, inout uint64_t given) {
-    partial += splat_weight(axis, k);
-    const uint64_t upto = k == axis.count - 1 ? q : caustic_share(q, partial / total);
-    const uint64_t s = upto - given;
-    given = upto;
+// Splits q over the taps of one axis of the hat by cumulative rounding: tap k's share is
+// round(q F_k) - round(q F_{k-1}), F_k the hat's integral up to tap k's far edge over its total,
+// so the shares are non-negative and sum to q exactly.
+uint64_t hat_tap_share(uint64_t q, HatAxis axis, int k, inout uint64_t given) {
+    const uint64_t upto = k == axis.count - 1 ? q : caustic_share(q, hat_share_upto(axis, k));
+    const uint64_t s = upto - min(given, upto);
+    given = max(given, upto);
     return s;
 }
 
@@ -89,20 +90,17 @@ void deposit_bilinear(vec2 coord, vec3 q) {
     }
 }
 
-// A tent (caustic_splat.glsl's axes), split over its taps.
-void deposit_tent(SplatAxis x_axis, SplatAxis y_axis, vec3 q) {
-    const float x_total = splat_total(x_axis), y_total = splat_total(y_axis);
+// The hat (caustic_splat.glsl), split over its taps: a column's share along u, then its taps'
+// shares of that along v.
+void deposit_hat(LatticeHat hat, vec3 q) {
     for (uint ch = 0u; ch < 3u; ++ch) {
         const uint64_t total = uint64_t(q[ch] + 0.5);
-        float x_partial = 0.0;
         uint64_t x_given = 0ul;
-        for (int i = 0; i < x_axis.count; ++i) {
-            const uint64_t column = axis_share(total, x_axis, x_total, i, x_partial, x_given);
-            float y_partial = 0.0;
+        for (int i = 0; i < hat.u.count; ++i) {
+            const uint64_t column = hat_tap_share(total, hat.u, i, x_given);
             uint64_t y_given = 0ul;
-            for (int j = 0; j < y_axis.count; ++j) {
-                const uint64_t tap = axis_share(column, y_axis, y_total, j, y_partial, y_given);
-                deposit(ivec2(x_axis.first + i, y_axis.first + j), ch, tap);
+            for (int j = 0; j < hat.v.count; ++j) {
+                deposit(ivec2(hat.u.first + i, hat.v.first + j), ch, hat_tap_share(column, hat.v, j, y_given));
             }
         }
     }
@@ -146,8 +144,8 @@ bool misses_read_texels(ivec2 lo, ivec2 hi) {
 void main() {
     GridPhoton p;
     const uint sub = pc.sub_and_flags & 0xffu;
-    const CausticPhotonChunk chunk =
-        CausticPhotonChunk(pc.resolution, sub, pc.first_row, pc.rows, (pc.sub_and_flags & 0x100u) != 0u);
+    const CausticPhotonChunk chunk = CausticPhotonChunk(pc.resolution, sub, pc.chunk_rows & 0xffffu, pc.chunk_rows >> 16,
+                                                        (pc.sub_and_flags & 0x100u) != 0u, pc.vertex_offset);
     const bool cull = (pc.sub_and_flags & 0x200u) != 0u;
     if (!trace_grid_photon(gl_GlobalInvocationID.xy, chunk, pc.source, p)) return;
     const vec2 coord = caustic_texel_coord(p.photon.hit, pc.source.space) - 0.5;
@@ -158,14 +156,14 @@ void main() {
     }
     bool kept = true;
 #if !defined(VKWATER_SPLAT_FOOTPRINT)
-    // The tent's taps lie within kMaxSplatHalfWidth texels of its centre's texel (the bilinear
+    // The hat's taps lie within kAdaptiveSplatReach texels of its node's texel (the bilinear
     // kernel's within one): one look-up in the widened rows leaves out a photon farther than that
-    // from every read texel, before its neighbours are traced to size its kernel.
+    // from every read texel, before its neighbours are traced to shape its kernel.
     if (cull) {
         const ivec2 centre = ivec2(floor(coord));
         const int height = int(pc.source.space.v_axis.w);
         if (centre.y < 0 || centre.y >= height) {
-            kept = !misses_read_texels(centre - int(kMaxSplatHalfWidth), centre + int(kMaxSplatHalfWidth));
+            kept = !misses_read_texels(centre - kAdaptiveSplatReach, centre + kAdaptiveSplatReach);
         } else {
             const uint span = read_rows[height + centre.y];
             kept = centre.x >= int(span & 0xffffu) && centre.x < int(span >> 16);
@@ -189,7 +187,22 @@ void main() {
         return;
     }
 #endif
-    const vec2 half_width = splat_half_width(p.cell, p.at, 1.0 / float(sub), p.photon, pc.source.space);
-    deposit_tent(splat_axis(coord.x, half_width.x), splat_axis(coord.y, half_width.y), p.q);
+    // The neighbours land on the photon's own receiver plane: the floor, or the horizontal plane
+    // through the receiver mesh it hit.
+#ifdef VKWATER_SUN_SHADOW
+    const float plane = p.photon.hit.y;
+#else
+    const float plane = pc.source.space.origin.w;
+#endif
+    const LatticeHat hat = lattice_hat(p, chunk, pc.source.space, plane);
+#if defined(VKWATER_SPLAT_ADAPTIVE)
+    // The adaptive kernel's photon carries what its surface hat intercepts (the footprint
+    // kernel's fallback keeps its sub-cell's, which its neighbours' footprints tile with).
+    const vec3 q = p.q * (hat.intercepted / p.photon.area);
+    if (!caustic_flux_representable(q)) return;
+#else
+    const vec3 q = p.q;
+#endif
+    deposit_hat(hat, q);
 #endif
 }

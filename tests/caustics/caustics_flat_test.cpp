@@ -120,9 +120,9 @@ TEST_F(caustics_flat, FloorIrradianceMatchesSection3) {
 
 // (b) n = 1, no jitter, vertical sun, one and four photons per cell, photon lattice aligned with
 // the texels: every interior texel equal.
-// Every kernel: under flat water the adaptive kernel's half-width is one texel (neighbours land
-// one photon spacing apart, at most a texel) and a photon's footprint is its sub-cell, inside its
-// texel, so both must be exactly as uniform as the bilinear one.
+// Every kernel: under flat water the adaptive kernel's hats have their nodes one photon spacing
+// apart and sum to one, and a photon's footprint is its sub-cell, inside its texel, so both must
+// be exactly as uniform as the bilinear one.
 TEST_F(caustics_flat, RefractionFreeMapIsUniform) {
     for (const CausticKernel kernel : {CausticKernel::Bilinear, CausticKernel::Adaptive, CausticKernel::Footprint})
         for (const uint32_t sub : {1u, 2u}) {
@@ -156,8 +156,8 @@ TEST_F(caustics_flat, RefractionFreeMapIsUniform) {
 }
 
 // (c) Sparse photons: 16 cells on a 64-texel map, n = 1, vertical sun: photons land 4 texels
-// apart. The adaptive kernel sizes its tent from the neighbours' spacing, half-width 4 texels,
-// and tents of half-width h spaced h apart sum to one everywhere; the footprint kernel spreads
+// apart. The adaptive kernel's hats reach from one neighbour's landing point to the other's, 4
+// texels on each side, and hats spaced h apart sum to one everywhere; the footprint kernel spreads
 // each photon over its cell's 4 x 4 texels: either way the covered interior is uniform and equal
 // to E_s, to rounding. The bilinear kernel leaves the texels between photons empty (spread 1),
 // which is what shows this test can fail.
@@ -183,9 +183,9 @@ TEST_F(caustics_flat, AdaptiveKernelFillsBetweenSparsePhotons) {
                 EXPECT_GT(spread, 0.5) << "the bilinear kernel should leave texels between sparse photons empty";
                 continue;
             }
-            // Bound, relative: the half-width comes from fp32 landing coordinates, each off by at
-            // most 8 u max|coordinate| / texel texels (as above), so each tent weight by that over
-            // h and the partition of unity by twice it per photon, at most 4 photons per axis
+            // Bound, relative: the hats' sides come from fp32 landing coordinates, each off by at
+            // most 8 u max|coordinate| / texel texels (as above), so each hat weight by that over
+            // the side and the partition of unity by twice it per photon, at most 4 photons per axis
             // reach a texel: 2 axes x 4 x 2 x 8 u coord/texel; plus 16 u for the photons' fluxes
             // and the LSB rounding of at most 64 taps of 1e-9.
             const double coord = 2.0 * kE + 8.0 * frame.texel.x;
