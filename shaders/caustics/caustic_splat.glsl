@@ -97,47 +97,63 @@ LatticeNeighbour lattice_neighbour(ivec2 photon, CausticPhotonChunk chunk, Caust
 }
 
 // The photon's hat on both axes and the area its surface hat intercepts of the beam (m^2 normal
-// to s). Per axis and side: the neighbour one photon along that axis, or, where there is none (the
-// grid's edge) or its ray does not enter, the other side mirrored; with neither, half a texel.
-// A lattice folded past a focus (a neighbour landing on the photon's far side) keeps the distance.
+// to s). Per axis and side the neighbour is the next photon along that axis of the grid; where
+// there is none (the grid's edge) or its ray does not enter, the other side mirrored, and with
+// neither, half a texel. Along an axis where the lattice is folded over the photon (both
+// neighbours land on one side of it, where the light is a sum over the fold's branches and no hat
+// partitions it) the photon spreads over a symmetric hat as wide as its farther neighbour lands,
+// at least a texel: the tent of de la Fuente 2011's size regulation, done in light space.
 struct LatticeHat {
     HatAxis u, v;
     float intercepted;
 };
 
 LatticeHat lattice_hat(GridPhoton p, CausticPhotonChunk chunk, CausticLightSpace space, float plane) {
-    const vec2 landed = caustic_texel_coord(p.photon.hit, space) - 0.5;
+    const vec2 landed = caustic_texel_coord(p.photon.hit, space);
     const vec2 sun = caustic_sun_coord(p.photon.entry, space);
-    vec2 span_sun;  // per axis: the surface hat's integral, texels of the sun coordinates
-    float sides[4];  // u left, u right, v left, v right
+    // Per grid axis: the offsets of the neighbours before and after the photon, where they land and
+    // where the sun's rays through their entry points cross the plane.
+    vec2 landed_before[2], landed_after[2], sun_before[2], sun_after[2];
     for (int axis = 0; axis < 2; ++axis) {
         const ivec2 step = axis == 0 ? ivec2(1, 0) : ivec2(0, 1);
         const LatticeNeighbour before = lattice_neighbour(ivec2(p.index) - step, chunk, space, plane);
         const LatticeNeighbour after = lattice_neighbour(ivec2(p.index) + step, chunk, space, plane);
         const bool has_before = before.exists && before.lands, has_after = after.exists && after.lands;
-        float left = has_before ? abs(landed[axis] - (before.landed[axis] - 0.5)) : 0.0;
-        float right = has_after ? abs(after.landed[axis] - 0.5 - landed[axis]) : 0.0;
-        float sun_left = has_before ? abs(sun[axis] - before.sun[axis]) : 0.0;
-        float sun_right = has_after ? abs(after.sun[axis] - sun[axis]) : 0.0;
+        landed_before[axis] = before.landed - landed;
+        landed_after[axis] = after.landed - landed;
+        sun_before[axis] = before.sun - sun;
+        sun_after[axis] = after.sun - sun;
         if (!has_before && !has_after) {
-            left = right = 0.5;
-            sun_left = sun_right = 0.5;
+            const vec2 half_texel = axis == 0 ? vec2(0.5, 0.0) : vec2(0.0, 0.5);
+            landed_after[axis] = sun_after[axis] = half_texel;
+            landed_before[axis] = sun_before[axis] = -half_texel;
         } else if (!has_before) {
-            left = right;
-            sun_left = sun_right;
+            landed_before[axis] = -landed_after[axis];
+            sun_before[axis] = -sun_after[axis];
         } else if (!has_after) {
-            right = left;
-            sun_right = sun_left;
+            landed_after[axis] = -landed_before[axis];
+            sun_after[axis] = -sun_before[axis];
         }
-        sides[2 * axis] = clamp(left, kMinHatSide, kMaxHatSide);
-        sides[2 * axis + 1] = clamp(right, kMinHatSide, kMaxHatSide);
-        span_sun[axis] = 0.5 * (sun_left + sun_right);
+    }
+    float sides[4];  // u before, u after, v before, v after
+    for (int axis = 0; axis < 2; ++axis) {
+        // A lattice reversed along the axis (both neighbours on swapped sides, the image of a
+        // focus) still has its hats; one folded over the photon (both on one side) has none.
+        const float before = -landed_before[axis][axis], after = landed_after[axis][axis];
+        if (before * after > 0.0) {
+            sides[2 * axis] = clamp(abs(before), kMinHatSide, kMaxHatSide);
+            sides[2 * axis + 1] = clamp(abs(after), kMinHatSide, kMaxHatSide);
+        } else {
+            sides[2 * axis] = sides[2 * axis + 1] = clamp(max(abs(before), abs(after)), 1.0, kMaxHatSide);
+        }
     }
     LatticeHat hat;
-    hat.u = hat_axis(landed.x, sides[0], sides[1]);
-    hat.v = hat_axis(landed.y, sides[2], sides[3]);
-    // Sun coordinates measure the plane y = origin.y: one texel there is 1 / |det| m^2 (the map's
-    // axes restricted to it), and a horizontal area A intercepts A |s.y| of the beam.
+    hat.u = hat_axis(landed.x - 0.5, sides[0], sides[1]);
+    hat.v = hat_axis(landed.y - 0.5, sides[2], sides[3]);
+    // The surface hat's integral per axis, texels of the sun coordinates, which measure the plane
+    // y = origin.y: one texel there is 1 / |det| m^2 (the map's axes restricted to it), and a
+    // horizontal area A intercepts A |s.y| of the beam.
+    const vec2 span_sun = 0.5 * vec2(abs(sun_after[0].x) + abs(sun_before[0].x), abs(sun_after[1].y) + abs(sun_before[1].y));
     const vec3 u = space.u_axis.xyz, v = space.v_axis.xyz;
     const float texel_area = 1.0 / abs(u.x * v.z - u.z * v.x);
     hat.intercepted = span_sun.x * span_sun.y * texel_area * abs(space.sun.y);
