@@ -87,6 +87,9 @@ LatticeNeighbour lattice_neighbour(ivec2 photon, CausticPhotonChunk chunk, Caust
     LatticeNeighbour n = LatticeNeighbour(vec2(0.0), vec2(0.0), false, false);
     const int side = int(chunk.resolution * chunk.sub);
     if (any(lessThan(photon, ivec2(0))) || any(greaterThanEqual(photon, ivec2(side)))) return n;
+    // Only the chunk's cell rows and the one on each side of them are in its binding.
+    const int cell_row = photon.y / int(chunk.sub);
+    if (cell_row < int(chunk.first_row) - 1 || cell_row > int(chunk.first_row + chunk.rows)) return n;
     const GridSubCell sub_cell = grid_sub_cell(uvec2(photon), chunk);
     vec3 p, t;
     n.exists = true;
