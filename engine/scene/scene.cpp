@@ -50,7 +50,12 @@ double water_bottom(const Scene& scene) {
 glm::dmat4 projection_matrix(const Camera& camera, double aspect) {
     // Swapping near and far in a [0, 1]-depth projection gives reversed-Z, which
     // spends float precision where perspective depth needs it.
-    return glm::perspectiveRH_ZO(glm::radians(camera.fov_y_deg), aspect, camera.far_plane, camera.near_plane);
+    const glm::dmat4 projection =
+        glm::perspectiveRH_ZO(glm::radians(camera.fov_y_deg), aspect, camera.far_plane, camera.near_plane);
+    if (camera.image_shift_ndc == glm::dvec2(0.0)) return projection;
+    glm::dmat4 shift(1.0);
+    shift[3] = glm::dvec4(camera.image_shift_ndc, 0.0, 1.0);
+    return shift * projection;
 }
 
 }  // namespace vkw

@@ -33,6 +33,9 @@ struct Camera {
     double near_plane = 0.05;  // metres, 0 < near_plane < far_plane
     double far_plane = 500.0;  // metres
     double exposure = 1.0;     // linear scale on radiance before display, > 0
+    // A supersampled image's sub-pixel shift of the image plane, in NDC (2 / width per pixel along
+    // x; engine/scene/pixel_filter.hpp). Never read from a scene file: 0 is the pixel centres.
+    glm::dvec2 image_shift_ndc{0.0, 0.0};
 };
 
 struct Sun {

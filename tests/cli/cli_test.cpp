@@ -271,6 +271,44 @@ TEST(cli, ExrFilesRecordHowTheyWereMade) {
     }
 }
 
+// --spp: both renderers record their box filter; a box-filtered render is not compared with a
+// point-sampled reference (they differ by the filter alone), a point render with a box reference
+// is; a count that is not a square is refused. Nothing is written by a refused render.
+TEST(cli, SamplesPerPixelAreRecordedAndFiltersAreNotMixed) {
+    const std::string calm = std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json";
+    const fs::path point = scratch("spp_point.exr"), box = scratch("spp_box.exr"), out = scratch("spp_render.exr");
+    ASSERT_EQ(run_vkwater("reference " + calm + " --width 16 --height 12 --out " + point.string()).exit_code, 0);
+    const CommandRun boxed = run_vkwater("reference " + calm + " --width 16 --height 12 --spp 4 --out " + box.string());
+    ASSERT_EQ(boxed.exit_code, 0) << boxed.output;
+    auto filter = [](const fs::path& file) {
+        for (const vkw::ImageAttribute& a : vkw::read_exr(file).attributes) {
+            if (a.name == "vkwater/filter") return a.value;
+        }
+        return std::string("(missing)");
+    };
+    EXPECT_EQ(filter(box), "box: 4 samples per pixel (2 x 2 strata)");
+
+    fs::remove(out);
+    const CommandRun mixed = run_vkwater("render " + calm + " --width 16 --height 12 --spp 4 --out " + out.string() +
+                                         " --reference " + point.string());
+    expect_clean_failure(mixed, 1,
+                         "its pixels are 'point: one sample at each pixel centre', this render's are 'box: 4");
+    EXPECT_FALSE(fs::exists(out));
+
+    const CommandRun matched = run_vkwater("render " + calm + " --width 16 --height 12 --spp 4 --out " + out.string() +
+                                           " --reference " + box.string());
+    ASSERT_EQ(matched.exit_code, 0) << matched.output;
+    EXPECT_EQ(filter(out), "box: 4 samples per pixel (2 x 2 strata)");
+    EXPECT_NE(matched.output.find("the sum over its 4 sub-frames"), std::string::npos) << matched.output;
+    const CommandRun point_on_box = run_vkwater("render " + calm + " --width 16 --height 12 --out " + out.string() +
+                                                " --reference " + box.string());
+    EXPECT_EQ(point_on_box.exit_code, 0) << point_on_box.output;
+
+    expect_clean_failure(run_vkwater("render " + calm + " --spp 3 --out " + out.string()), 1,
+                         "--spp 3: not a square number of samples per pixel (accepted: 1, 4, 9, 16");
+    expect_clean_failure(run_vkwater("reference " + calm + " --spp 0 --out " + out.string()), 1, "--spp 0:");
+}
+
 // A wave far shorter than the reference's beam maps can resolve is refused before any work (a
 // 1e-6 m wavelength asked for a 35 GB map and crashed), naming the shortest accepted wavelength.
 TEST(cli, TheReferenceRefusesWavesItCannotResolve) {

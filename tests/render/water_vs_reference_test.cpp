@@ -4,6 +4,7 @@
 // fp32 rounding alone. Plus the water rule's culled image against its forced-on image.
 #include "engine/scene/scene_loader.hpp"
 #include "passes/frame/renderer.hpp"
+#include "passes/frame/supersampled_frame.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/metrics/metrics.hpp"
 #include "tools/reference/reference_renderer.hpp"
@@ -37,6 +38,50 @@ TEST_P(WaterAgainstReference, FlatWaterMatchesToFp32Rounding) {
     // relMSE <= (1e-5)^2 = 1e-10, and |bias| <= 1e-5.
     EXPECT_LT(rel_mse, 1e-10) << GetParam();
     EXPECT_LT(std::abs(bias), 1e-5) << GetParam();
+}
+
+// A box-filtered frame (4 sub-frames) against the mean of four reference images whose cameras are
+// shifted by the same strata's centres: the sub-frames must see exactly the rays the shifted
+// projection gives, and their mean must be taken right. Each reference pixel traces its centre
+// through the shifted camera, so the two sides sample the same four rays per pixel, and the bound
+// is the point-sampled one above: a mean of four values each within 1e-5 relative.
+TEST_P(WaterAgainstReference, SupersampledFrameSeesTheShiftedRays) {
+    const Scene scene = builtin(GetParam());
+    const PixelFilter filter = pixel_filter_from_spp(4);
+    Renderer renderer(context());
+    const RenderResult real_time =
+        render_filtered(renderer, scene, {kWidth, kHeight, true, fg::TimingMode::None}, filter);
+    ImageRGBA32F mean;
+    for (uint32_t i = 0; i < filter.samples; ++i) {
+        Scene shifted = scene;
+        shifted.camera.image_shift_ndc = image_shift_for_pixel_offset(filter.stratum_centre(i), kWidth, kHeight);
+        const ImageRGBA32F sample = ref::render_reference(shifted, {kWidth, kHeight, 0, {}});
+        if (i == 0) {
+            mean = sample;
+            for (float& v : mean.rgba) v = 0.0f;
+        }
+        for (size_t k = 0; k < mean.rgba.size(); ++k) mean.rgba[k] += sample.rgba[k] / float(filter.samples);
+    }
+    const auto pixels = metrics::counted_pixels(kWidth, kHeight, nullptr);
+    const double rel_mse = metrics::rel_mse(metrics::rgb_view(real_time.image), metrics::rgb_view(mean), pixels);
+    const double bias = metrics::mean_bias(metrics::rgb_view(real_time.image), metrics::rgb_view(mean), pixels);
+    EXPECT_LT(rel_mse, 1e-10) << GetParam();
+    EXPECT_LT(std::abs(bias), 1e-5) << GetParam();
+    // And it is not the point-sampled image: the shift moved the rays.
+    const RenderResult centres = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
+    EXPECT_GT(metrics::rel_mse(metrics::rgb_view(centres.image), metrics::rgb_view(mean), pixels),
+              1e3 * rel_mse + 1e-12)
+        << GetParam();
+}
+
+// One sample per pixel is the plain frame, bit for bit.
+TEST_P(WaterAgainstReference, OneSampleIsThePlainFrame) {
+    const Scene scene = builtin(GetParam());
+    Renderer renderer(context());
+    const RenderOptions options{kWidth, kHeight, true, fg::TimingMode::None};
+    const RenderResult plain = renderer.render(scene, options);
+    const RenderResult filtered = render_filtered(renderer, scene, options, pixel_filter_from_spp(1));
+    EXPECT_EQ(plain.image.rgba, filtered.image.rgba) << GetParam();
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, WaterAgainstReference, ::testing::Values("calm.json", "underwater.json"),

@@ -18,6 +18,28 @@ Ray camera_ray(const Camera& camera, uint32_t width, uint32_t height, double x, 
     return {camera.position, glm::normalize(point - camera.position)};
 }
 
+PixelRadiance pixel_radiance(const WaterTransport& transport, const Camera& camera, const ReferenceOptions& options,
+                             uint32_t x, uint32_t y) {
+    if (!options.filter.is_box()) {
+        return transport.trace_camera_ray(camera_ray(camera, options.width, options.height, x + 0.5, y + 0.5));
+    }
+    // The box filter: the mean over the pixel's jittered strata, accumulated in double.
+    PixelRadiance mean{};
+    for (uint32_t i = 0; i < options.filter.samples; ++i) {
+        const glm::dvec2 at = glm::dvec2(x, y) + 0.5 + options.filter.jittered_sample(x, y, i);
+        const PixelRadiance sample =
+            transport.trace_camera_ray(camera_ray(camera, options.width, options.height, at.x, at.y));
+        mean.radiance += sample.radiance;
+        mean.caustic += sample.caustic;
+        mean.in_scatter += sample.in_scatter;
+    }
+    const double n = options.filter.samples;
+    mean.radiance /= n;
+    mean.caustic /= n;
+    mean.in_scatter /= n;
+    return mean;
+}
+
 ImageRGBA32F render_reference(const Scene& scene, const ReferenceOptions& options, ReferenceReport* report) {
     const WaterTransport transport(scene, options.quality);
     if (report) {
@@ -40,8 +62,7 @@ ImageRGBA32F render_reference(const Scene& scene, const ReferenceOptions& option
     auto worker = [&](bool reports_progress) {
         for (uint32_t y = next_row++; y < options.height; y = next_row++) {
             for (uint32_t x = 0; x < options.width; ++x) {
-                const Ray ray = camera_ray(scene.camera, options.width, options.height, x + 0.5, y + 0.5);
-                const PixelRadiance pixel = transport.trace_camera_ray(ray);
+                const PixelRadiance pixel = pixel_radiance(transport, scene.camera, options, x, y);
                 float* out = image.pixel(static_cast<int>(x), static_cast<int>(y));
                 const size_t index = size_t{y} * options.width + x;
                 for (int c = 0; c < 3; ++c) {

@@ -1,12 +1,13 @@
 // The CPU reference renderer: one ray through each pixel's centre (the real-time
-// renderer also evaluates at pixel centres), traced exactly through the model in
-// double precision, on every core, deterministic (no random numbers yet: the flat-water
-// transport is closed form). The image carries two layers: `caustic`, the sun's
+// renderer also evaluates at pixel centres), or with a box filter the mean of k x k rays
+// jittered within the pixel's strata (engine/scene/pixel_filter.hpp), traced exactly through the
+// model in double precision, on every core, deterministic (the jitter is a hash of the pixel). The image carries two layers: `caustic`, the sun's
 // irradiance on the receiver each pixel sees under the water, 0 elsewhere; `inscatter`, the
 // single-scattered radiance of the pixel's primary path in the water alone (PixelRadiance).
 #pragma once
 
 #include "engine/image/image.hpp"
+#include "engine/scene/pixel_filter.hpp"
 #include "engine/scene/scene.hpp"
 #include "tools/reference/bvh.hpp"
 #include "tools/reference/water_transport.hpp"
@@ -24,6 +25,7 @@ struct ReferenceOptions {
     unsigned threads = 0;                  // 0: every hardware thread
     std::function<void(double)> progress;  // called with the finished fraction
     WaterTransport::Quality quality;       // wavy water's floor caustics (coarser: faster, for small tests)
+    PixelFilter filter;                    // a pixel's samples: its centre, or k x k jittered strata
 };
 
 // The primary ray through pixel (x, y)'s centre, row 0 at the top: the same camera
@@ -37,6 +39,11 @@ struct ReferenceReport {
     double surface_height_error_bound = 0.0;  // m: the FFT ocean's sampled series (0: exact surfaces)
     double surface_slope_error_bound = 0.0;
 };
+
+// Pixel (x, y)'s radiance and layers under options.filter: the ray through its centre, or the
+// mean of its jittered strata's rays.
+PixelRadiance pixel_radiance(const WaterTransport& transport, const Camera& camera, const ReferenceOptions& options,
+                             uint32_t x, uint32_t y);
 
 ImageRGBA32F render_reference(const Scene& scene, const ReferenceOptions& options, ReferenceReport* report = nullptr);
 

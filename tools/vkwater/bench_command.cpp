@@ -16,11 +16,13 @@
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
 #include "passes/frame/renderer.hpp"
+#include "passes/frame/supersampled_frame.hpp"
 #include "tools/benchmarks/frame_memory.hpp"
 #include "tools/benchmarks/sweep_report.hpp"
 #include "tools/metrics/downsample.hpp"
 #include "tools/metrics/reference_errors.hpp"
 #include "tools/vkwater/commands.hpp"
+#include "tools/vkwater/image_provenance.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -40,6 +42,7 @@ struct BenchArgs {
     std::vector<std::string> sweeps;        // "key=v1,v2,..."
     std::vector<std::string> alternatives;  // "key=v key=v|key=v|..."
     uint32_t frames = kRecommendedFrames;
+    int64_t spp = 1;
     std::string out_dir;
     std::vector<std::string> overrides;
     DeviceOptions device;
@@ -131,7 +134,9 @@ metrics::ReferenceErrors load_reference(const std::string& path) {
 }
 
 int run_bench(const BenchArgs& args) {
+    const PixelFilter filter = pixel_filter_from_spp(args.spp);
     const metrics::ReferenceErrors reference = load_reference(args.reference);
+    require_comparable_filters(filter, reference.reference(), args.reference);
     const uint32_t width = static_cast<uint32_t>(reference.reference().width);
     const uint32_t height = static_cast<uint32_t>(reference.reference().height);
     const std::filesystem::path out_dir =
@@ -162,10 +167,10 @@ int run_bench(const BenchArgs& args) {
         const Scene scene = load_scene(args.scene, overrides);
         Renderer renderer(*context);
         const RenderOptions options{width, height, false, fg::TimingMode::None};
-        RenderResult result = renderer.render(scene, options);  // warm-up: compiles shader variants
+        RenderResult result = render_filtered(renderer, scene, options, filter);  // warm-up: compiles shader variants
         std::vector<double> times;
         for (uint32_t frame = 0; frame < args.frames; ++frame) {
-            result = renderer.render(scene, options);
+            result = render_filtered(renderer, scene, options, filter);
             times.push_back(result.timing.total_ms);
         }
         std::sort(times.begin(), times.end());
@@ -174,7 +179,7 @@ int run_bench(const BenchArgs& args) {
         RenderOptions with_layer = options;
         with_layer.caustic_layer = true;
         with_layer.inscatter_layer = true;
-        result = renderer.render(scene, with_layer);
+        result = render_filtered(renderer, scene, with_layer, filter);
         const metrics::FrameErrors error = reference.measure(result.image);
         const bench::FrameMemory memory = bench::measure_frame_memory(renderer, scene, options);
         std::string name;
@@ -233,6 +238,11 @@ Run add_bench_command(CLI::App& app) {
                         "Also sweep over whole sets of overrides: 'key.path=v key.path=v|key.path=v|...' (repeatable; "
                         "one axis each, combined with every other axis), e.g. "
                         "'effects.godrays.mode=off|effects.godrays.grid=32'");
+    command
+        ->add_option("--spp", args->spp,
+                     "Samples per pixel for every setting, a square k^2 (render --spp): each frame's time is "
+                     "the sum of its k^2 sub-frames")
+        ->capture_default_str();
     command
         ->add_option("--frames", args->frames,
                      "Timed frames per setting (after one warm-up frame); 30 or more for a meaningful median "

@@ -1,6 +1,8 @@
 // The EXR attributes of a command's image (image_provenance.hpp).
 #include "tools/vkwater/image_provenance.hpp"
 
+#include "engine/core/errors.hpp"
+#include "engine/image/file_paths.hpp"
 #include "engine/scene/range.hpp"
 #include "tools/reference/scene_hash.hpp"
 
@@ -27,6 +29,19 @@ std::vector<ImageAttribute> image_attributes(const ImageProvenance& provenance, 
         attributes.push_back({"vkwater/overrides", joined});
     }
     return attributes;
+}
+
+void require_comparable_filters(const PixelFilter& filter, const ImageRGBA32F& reference,
+                                const std::string& reference_path) {
+    std::string text = "point: one sample at each pixel centre";
+    for (const ImageAttribute& attribute : reference.attributes) {
+        if (attribute.name == "vkwater/filter") text = attribute.value;
+    }
+    if (filter.is_box() && pixel_filter_kind(text) != "box") {
+        throw UserError("--reference " + quoted_path(reference_path) + ": its pixels are '" + text +
+                        "', this render's are '" + filter.describe() +
+                        "' (compare a box-filtered render with a box-filtered reference: vkwater reference --spp N)");
+    }
 }
 
 }  // namespace vkw::cli

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "engine/image/image.hpp"
+#include "engine/scene/pixel_filter.hpp"
 #include "engine/scene/scene.hpp"
 
 #include <string>
@@ -24,5 +25,12 @@ struct ImageProvenance {
 // vkwater/overrides (only when there are any), vkwater/renderer, vkwater/filter, vkwater/device,
 // vkwater/time.
 std::vector<ImageAttribute> image_attributes(const ImageProvenance& provenance, const Camera& camera);
+
+// Refuses (vkw::UserError naming both filters and the file) to compare a box-filtered image with a
+// point-sampled reference: the two differ by the filter alone wherever the image has detail. A
+// reference without vkwater/filter was point-sampled (it predates the attribute). A point image
+// against a box reference is what the error tables measure, and allowed.
+void require_comparable_filters(const PixelFilter& filter, const ImageRGBA32F& reference,
+                                const std::string& reference_path);
 
 }  // namespace vkw::cli

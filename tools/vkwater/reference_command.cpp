@@ -4,6 +4,7 @@
 #include "engine/image/checked_write.hpp"
 #include "engine/image/exr_io.hpp"
 #include "engine/image/file_paths.hpp"
+#include "engine/scene/pixel_filter.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "tools/reference/reference_renderer.hpp"
 #include "tools/reference/scene_hash.hpp"
@@ -35,6 +36,7 @@ struct ReferenceArgs {
     uint32_t in_scatter_texels = ref::WaterTransport::Quality{}.in_scatter_texels;
     std::vector<std::string> overrides;
     std::string manifest;
+    int64_t spp = 1;
 };
 
 // The remaining error of the reference itself, as relMSE: the flat-water transport is
@@ -62,7 +64,7 @@ void record_in_manifest(const ReferenceArgs& args, double seconds, const ref::Re
         {"height", args.height},
         {"overrides", args.overrides},
         {"seed", 0},
-        {"samples_per_pixel", 1},
+        {"samples_per_pixel", args.spp},
         {"cells_per_wavelength", args.cells_per_wavelength},
         {"in_scatter_planes", args.in_scatter_planes},
         {"in_scatter_texels", args.in_scatter_texels},
@@ -94,6 +96,7 @@ int run_reference(const ReferenceArgs& args) {
         std::printf("note: --threads %u: using %u, the hardware threads of this machine\n", args.threads, hardware);
         options.threads = hardware;
     }
+    options.filter = pixel_filter_from_spp(args.spp);
     options.quality.caustic_in_scatter = true;  // the model's godrays under waves
     options.quality.cells_per_wavelength = args.cells_per_wavelength;
     options.quality.in_scatter_levels = args.in_scatter_planes;
@@ -124,8 +127,7 @@ int run_reference(const ReferenceArgs& args) {
     std::snprintf(time, sizeof time, "%.2f s, the whole image", seconds);
     std::snprintf(device, sizeof device, "CPU, %u threads", options.threads == 0 ? hardware : options.threads);
     image.attributes = image_attributes(
-        {args.scene, args.overrides, "reference", "point: one sample at each pixel centre", device, time},
-        scene.camera);
+        {args.scene, args.overrides, "reference", options.filter.describe(), device, time}, scene.camera);
     write_exr(args.out, image);
     std::printf("wrote %s (%ux%u, reference, layers RGBA, caustic, inscatter) in %.2f s\n", args.out.c_str(),
                 args.width, args.height, seconds);
@@ -152,6 +154,11 @@ Run add_reference_command(CLI::App& app) {
                      "note)")
         ->capture_default_str();
     command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
+    command
+        ->add_option("--spp", args->spp,
+                     "Samples per pixel, a square k^2: 1 traces each pixel's centre, more a box filter of k x k "
+                     "rays jittered within their strata")
+        ->capture_default_str();
     command
         ->add_option("--cells-per-wavelength", args->cells_per_wavelength,
                      "Wavy water: surface cells per shortest wavelength of the beam-mapped caustics (the "

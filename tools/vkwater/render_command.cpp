@@ -4,10 +4,12 @@
 #include "engine/image/exr_io.hpp"
 #include "engine/image/file_paths.hpp"
 #include "engine/image/png_preview.hpp"
+#include "engine/scene/pixel_filter.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
 #include "passes/frame/frame_needs.hpp"
 #include "passes/frame/renderer.hpp"
+#include "passes/frame/supersampled_frame.hpp"
 #include "tools/metrics/metrics.hpp"
 #include "tools/metrics/reference_errors.hpp"
 #include "tools/vkwater/commands.hpp"
@@ -20,6 +22,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 namespace vkw::cli {
 namespace {
@@ -35,6 +38,7 @@ struct RenderArgs {
     bool no_caustic_layer = false;
     bool no_inscatter_layer = false;
     uint32_t repeat = 1;
+    int64_t spp = 1;
     std::string recording = "dynamic";
     std::vector<std::string> overrides;
     std::string reference;
@@ -74,6 +78,7 @@ std::string inscatter_text(const Scene& scene, const RenderOptions& options, con
 int run_render(const RenderArgs& args) {
     const auto start = std::chrono::steady_clock::now();
     const Scene scene = load_scene(args.scene, args.overrides);
+    const PixelFilter filter = pixel_filter_from_spp(args.spp);
     // Fail on an unwritable output before spending time on the render. Without --out, the scene's
     // name with .exr, in the current folder.
     const std::filesystem::path out = args.out.empty()
@@ -88,7 +93,12 @@ int run_render(const RenderArgs& args) {
         kind == OutputKind::Png ? out : std::filesystem::path(out).replace_extension(".png");
     const bool write_png = args.png || kind == OutputKind::Png;
     if (write_png) require_writable_file_path(png_path);
-    if (!args.reference.empty()) require_readable_file_path(args.reference);
+    std::optional<ImageRGBA32F> reference;
+    if (!args.reference.empty()) {
+        require_readable_file_path(args.reference);
+        reference = read_exr(args.reference);
+        require_comparable_filters(filter, *reference, args.reference);
+    }
 
     ContextOptions context_options;
     context_options.validation = args.device.validation;
@@ -104,8 +114,9 @@ int run_render(const RenderArgs& args) {
     if (context->is_cpu_device()) {
         const CpuFrameEstimate estimate = estimate_cpu_frame(
             scene, decide_frame_needs(scene, double(args.width) / args.height), args.width, args.height);
-        if (estimate.seconds * args.repeat > kSlowCpuFrameSeconds) {
-            std::printf("note: %s on this CPU device, %u frame(s)\n", estimate.describe().c_str(), args.repeat);
+        const uint32_t frames = args.repeat * filter.samples;
+        if (estimate.seconds * frames > kSlowCpuFrameSeconds) {
+            std::printf("note: %s on this CPU device, %u frame(s)\n", estimate.describe().c_str(), frames);
         }
     }
 
@@ -121,11 +132,14 @@ int run_render(const RenderArgs& args) {
     double declare_ms = 0.0;
     {
         Renderer renderer(*context);  // its pipelines must go before the device
-        for (uint32_t frame = 0; frame < args.repeat; ++frame) result = renderer.render(scene, options);
+        for (uint32_t frame = 0; frame < args.repeat; ++frame)
+            result = render_filtered(renderer, scene, options, filter);
         declare_ms = renderer.last_declare_ms();
     }
 
-    std::printf("pass times of frame %u of %u (%s):\n", args.repeat, args.repeat, result.timing.method_name().c_str());
+    std::printf(
+        "pass times of frame %u of %u (%s%s):\n", args.repeat, args.repeat, result.timing.method_name().c_str(),
+        filter.is_box() ? (", the sum over its " + std::to_string(filter.samples) + " sub-frames").c_str() : "");
     // Each pass's time and the memory of what it creates (the targets and buffers of its method).
     for (const fg::PassTime& pass : result.timing.passes) {
         if (pass.created_bytes == 0) {
@@ -152,9 +166,8 @@ int run_render(const RenderArgs& args) {
     char time[96];
     std::snprintf(time, sizeof time, "%.2f ms, frame %u of %u (%s)", result.timing.total_ms, args.repeat, args.repeat,
                   result.timing.method_name().c_str());
-    result.image.attributes = image_attributes(
-        {args.scene, args.overrides, "real-time", "point: one sample at each pixel centre", device_name, time},
-        scene.camera);
+    result.image.attributes =
+        image_attributes({args.scene, args.overrides, "real-time", filter.describe(), device_name, time}, scene.camera);
     if (kind == OutputKind::Exr) {
         const ExrWriteReport report =
             write_exr(out, result.image, args.half ? ExrPixelType::Half : ExrPixelType::Float);
@@ -168,14 +181,13 @@ int run_render(const RenderArgs& args) {
         write_png_preview(png_path, result.image, static_cast<float>(scene.camera.exposure));
         std::printf("wrote %s (preview: ACES filmic, sRGB)\n", png_path.c_str());
     }
-    if (!args.reference.empty()) {
+    if (reference) {
         // The project's two numbers for every image: its time and its error, one line each.
-        const ImageRGBA32F reference = read_exr(args.reference);
-        const metrics::Metrics error = metrics::compare_images(result.image, reference);
+        const metrics::Metrics error = metrics::compare_images(result.image, *reference);
         std::printf("time: %.2f ms per frame (%s)\n", result.timing.total_ms, result.timing.method_name().c_str());
-        const metrics::LayerRelMse caustic = metrics::layer_rel_mse(result.image, reference, metrics::kCausticLayer);
+        const metrics::LayerRelMse caustic = metrics::layer_rel_mse(result.image, *reference, metrics::kCausticLayer);
         const metrics::LayerRelMse inscatter =
-            metrics::layer_rel_mse(result.image, reference, metrics::kInScatterLayer);
+            metrics::layer_rel_mse(result.image, *reference, metrics::kInScatterLayer);
         std::printf(
             "error against %s: relMSE %.6g, FLIP %.6g, bias %.6g, L*u*v* %.6g, caustic relMSE %s, "
             "in-scatter relMSE %s\n",
@@ -211,6 +223,11 @@ Run add_render_command(CLI::App& app) {
                      "Render this many frames and report the last: the first frame includes llvmpipe's "
                      "compilation of shader variants on first use")
         ->check(CLI::Range(1u, 10000u))
+        ->capture_default_str();
+    command
+        ->add_option("--spp", args->spp,
+                     "Samples per pixel, a square k^2: 1 is each pixel's centre; more averages k^2 sub-frames "
+                     "shifted to the centres of the pixel's k x k strata (a box filter; the time is their sum)")
         ->capture_default_str();
     command->add_flag("--no-caustic-layer", args->no_caustic_layer,
                       "Leave out the EXR layer caustic.R/G/B (the sun's irradiance on the receiver each pixel sees "

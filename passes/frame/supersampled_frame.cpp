@@ -1,0 +1,43 @@
+#include "passes/frame/supersampled_frame.hpp"
+
+#include "engine/core/errors.hpp"
+
+#include <vector>
+
+namespace vkw {
+
+RenderResult render_filtered(Renderer& renderer, const Scene& scene, const RenderOptions& options,
+                             const PixelFilter& filter) {
+    if (!filter.is_box()) return renderer.render(scene, options);
+    Scene shifted = scene;
+    RenderResult sum;
+    std::vector<std::vector<float>> layers;  // the sums of the sub-frames' layers, as the first names them
+    for (uint32_t i = 0; i < filter.samples; ++i) {
+        shifted.camera.image_shift_ndc =
+            image_shift_for_pixel_offset(filter.stratum_centre(i), options.width, options.height);
+        RenderResult sub = renderer.render(shifted, options);
+        if (i == 0) {
+            sum = std::move(sub);
+            for (const ExtraLayer& layer : sum.image.layers) layers.push_back(layer.rgb);
+            continue;
+        }
+        if (sub.image.rgba.size() != sum.image.rgba.size() || sub.image.layers.size() != layers.size() ||
+            sub.timing.passes.size() != sum.timing.passes.size()) {
+            throw InternalError("supersampling: the sub-frames differ in their images or passes");
+        }
+        for (size_t k = 0; k < sum.image.rgba.size(); ++k) sum.image.rgba[k] += sub.image.rgba[k];
+        for (size_t l = 0; l < layers.size(); ++l) {
+            for (size_t k = 0; k < layers[l].size(); ++k) layers[l][k] += sub.image.layers[l].rgb[k];
+        }
+        for (size_t p = 0; p < sum.timing.passes.size(); ++p) sum.timing.passes[p].ms += sub.timing.passes[p].ms;
+        sum.timing.total_ms += sub.timing.total_ms;
+    }
+    const float scale = 1.0f / static_cast<float>(filter.samples);
+    for (float& value : sum.image.rgba) value *= scale;
+    for (size_t l = 0; l < layers.size(); ++l) {
+        for (size_t k = 0; k < layers[l].size(); ++k) sum.image.layers[l].rgb[k] = layers[l][k] * scale;
+    }
+    return sum;
+}
+
+}  // namespace vkw
