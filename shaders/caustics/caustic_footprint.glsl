@@ -7,7 +7,7 @@
 // flux / footprint area on the footprint: Tipprasert 2006's I = Phi / A_d, with T and exp(-sigma_t l) in
 // Phi, and texel values that are box averages of the irradiance (no tent blur). A footprint over
 // more than kMaxFootprintTexels texels on an axis (a sub-cell spread far out of focus) or with no
-// area (its rays cross in a point or a line) falls back to the adaptive tent.
+// area (its rays cross in a point or a line) falls back to the adaptive hat (caustic_splat.glsl).
 #ifndef VKWATER_CAUSTIC_FOOTPRINT_GLSL
 #define VKWATER_CAUSTIC_FOOTPRINT_GLSL
 
