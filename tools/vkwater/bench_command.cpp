@@ -238,11 +238,9 @@ Run add_bench_command(CLI::App& app) {
                         "Also sweep over whole sets of overrides: 'key.path=v key.path=v|key.path=v|...' (repeatable; "
                         "one axis each, combined with every other axis), e.g. "
                         "'effects.godrays.mode=off|effects.godrays.grid=32'");
-    command
-        ->add_option("--spp", args->spp,
-                     "Samples per pixel for every setting, a square k^2 (render --spp): each frame's time is "
-                     "the sum of its k^2 sub-frames")
-        ->capture_default_str();
+    add_spp_option(*command, args->spp,
+                   "more box-filter every setting's frames as render --spp does (each frame's time the sum of its k^2 "
+                   "sub-frames)");
     command
         ->add_option("--frames", args->frames,
                      "Timed frames per setting (after one warm-up frame); 30 or more for a meaningful median "

@@ -26,6 +26,10 @@ void add_device_options(CLI::App& command, DeviceOptions& options);
 // --width and --height in pixels, each 1 to 16384 (the largest image side any command takes).
 void add_image_size_options(CLI::App& command, uint32_t& width, uint32_t& height);
 
+// --spp N, samples per pixel (engine/scene/pixel_filter.hpp checks it): `how` says what this
+// command does with them.
+void add_spp_option(CLI::App& command, int64_t& spp, const std::string& how);
+
 // A check for number options that refuses NaN and infinities: CLI::Range lets NaN through, since
 // every comparison with it is false.
 inline CLI::Validator finite_number() {

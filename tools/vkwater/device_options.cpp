@@ -1,4 +1,4 @@
-// Options several subcommands share: the Vulkan device, the image size.
+// Options several subcommands share: the Vulkan device, the image size, the samples per pixel.
 #include "tools/vkwater/commands.hpp"
 
 namespace vkw::cli {
@@ -16,6 +16,11 @@ void add_image_size_options(CLI::App& command, uint32_t& width, uint32_t& height
     command.add_option("--width", width, "Image width in pixels")->check(CLI::Range(1u, 16384u))->capture_default_str();
     command.add_option("--height", height, "Image height in pixels")
         ->check(CLI::Range(1u, 16384u))
+        ->capture_default_str();
+}
+
+void add_spp_option(CLI::App& command, int64_t& spp, const std::string& how) {
+    command.add_option("--spp", spp, "Samples per pixel, a square k^2 (1: each pixel's centre); " + how)
         ->capture_default_str();
 }
 

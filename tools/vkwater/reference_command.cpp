@@ -154,11 +154,7 @@ Run add_reference_command(CLI::App& app) {
                      "note)")
         ->capture_default_str();
     command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
-    command
-        ->add_option("--spp", args->spp,
-                     "Samples per pixel, a square k^2: 1 traces each pixel's centre, more a box filter of k x k "
-                     "rays jittered within their strata")
-        ->capture_default_str();
+    add_spp_option(*command, args->spp, "more a box filter of k x k rays jittered within their strata");
     command
         ->add_option("--cells-per-wavelength", args->cells_per_wavelength,
                      "Wavy water: surface cells per shortest wavelength of the beam-mapped caustics (the "

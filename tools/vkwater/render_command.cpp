@@ -224,11 +224,9 @@ Run add_render_command(CLI::App& app) {
                      "compilation of shader variants on first use")
         ->check(CLI::Range(1u, 10000u))
         ->capture_default_str();
-    command
-        ->add_option("--spp", args->spp,
-                     "Samples per pixel, a square k^2: 1 is each pixel's centre; more averages k^2 sub-frames "
-                     "shifted to the centres of the pixel's k x k strata (a box filter; the time is their sum)")
-        ->capture_default_str();
+    add_spp_option(*command, args->spp,
+                   "more average k^2 sub-frames shifted to the centres of the pixel's k x k strata (a box filter; the "
+                   "time is their sum)");
     command->add_flag("--no-caustic-layer", args->no_caustic_layer,
                       "Leave out the EXR layer caustic.R/G/B (the sun's irradiance on the receiver each pixel sees "
                       "under the water), and the second colour target its passes write");
