@@ -199,5 +199,60 @@ TEST_F(caustics_flat, AdaptiveKernelFillsBetweenSparsePhotons) {
     }
 }
 
+// (d) The bilinear kernel keeps its fixed one-texel tent, sampled at texel centres, so off whole
+// numbers of texels per photon it does not partition the map: n = 1, flat water, vertical sun,
+// photons d = cell / texel texels apart. Its own ripple, derived: photon i lands at texel
+// coordinate u_i (its cell's centre), carries E_s cell^2, and gives texel k the weight
+// tent(k - u_i) per axis, so texel (k, l) holds E_s (d sum_i tent(k - u_i)) (d sum_j tent(l - v_j)).
+// Checked texel by texel within the rounding bound of RefractionFreeMapIsUniform (4 d^-2 taps of
+// 1e-9 and the coordinates' 8 u max|coordinate| / texel). At d = 1 (photons on texel centres) and
+// d = 2 (on texel edges, half to each side) the sums are exactly 1; at d = 1.33 and 0.67 they
+// ripple (0.80 to 1.74 of E_s), and the map must follow the prediction there.
+TEST_F(caustics_flat, BilinearKernelRipplesAsDerivedOffWholeSpacings) {
+    for (const uint32_t texels : {64u, 128u, 85u, 43u}) {  // d = 1, 2, 1.33, 0.67
+        passes::CausticInputs in = flat_caustics(0.0, 1.0);
+        in.sigma_t = glm::dvec3(0.0);
+        in.kernel = CausticKernel::Bilinear;
+        in.half_extent = kE;  // as run_caustics sets them, for the frame below
+        in.grid_resolution = kR;
+        in.map_width = in.map_height = texels + 2;
+        const CausticRun run = run_caustics(context(), flat_surface(), in);
+        const passes::CausticMapFrame frame = passes::fit_caustic_map(in);
+        const double cell = 2.0 * kE / kR, d = cell / frame.texel.x;
+        // The predicted factor of texel k along one axis: d sum_i tent(k - u_i), texel coordinates
+        // whose integers are texel centres.
+        auto factor = [&](int k, double corner) {
+            double sum = 0.0;
+            for (uint32_t i = 0; i < kR; ++i) {
+                const double u = (-kE + (i + 0.5) * cell - corner) / frame.texel.x - 0.5;
+                sum += std::max(0.0, 1.0 - std::abs(k - u));
+            }
+            return d * sum;
+        };
+        const double coord = 2.0 * kE / frame.texel.x + 2.0;
+        const double bound = 4.0 / (d * d) * 1e-9 + 4.0 * (8.0 * kUnit * coord) + 16.0 * kUnit;
+        double worst = 0.0, lo = 1e300, hi = 0.0;
+        for (uint32_t y = 0; y < frame.height; ++y) {
+            const double z = frame.corner.y + (y + 0.5) * frame.texel.y;
+            if (std::abs(z) > kE - 1.5 * std::max(cell, frame.texel.y)) continue;
+            for (uint32_t x = 0; x < frame.width; ++x) {
+                const double xw = frame.corner.x + (x + 0.5) * frame.texel.x;
+                if (std::abs(xw) > kE - 1.5 * std::max(cell, frame.texel.x)) continue;
+                const double predicted = factor(int(x), frame.corner.x) * factor(int(y), frame.corner.y);
+                const double got = run.irradiance[4 * (size_t(y) * frame.width + x)] / in.sun_irradiance[0];
+                worst = std::max(worst, std::abs(got / predicted - 1.0));
+                lo = std::min(lo, got);
+                hi = std::max(hi, got);
+            }
+        }
+        std::printf(
+            "bilinear, photons %.3f texels apart: texels %.6f .. %.6f of E_s, worst off the derived ripple "
+            "%.2e (bound %.2e)\n",
+            d, lo, hi, worst, bound);
+        EXPECT_LE(worst, bound) << "d = " << d;
+        if (texels == 85u || texels == 43u) EXPECT_GT(hi - lo, 0.05) << "the ripple should show at d = " << d;
+    }
+}
+
 }  // namespace
 }  // namespace vkw::test
