@@ -250,7 +250,9 @@ TEST_F(caustics_flat, BilinearKernelRipplesAsDerivedOffWholeSpacings) {
             "%.2e (bound %.2e)\n",
             d, lo, hi, worst, bound);
         EXPECT_LE(worst, bound) << "d = " << d;
-        if (texels == 85u || texels == 43u) EXPECT_GT(hi - lo, 0.05) << "the ripple should show at d = " << d;
+        if (texels == 85u || texels == 43u) {
+            EXPECT_GT(hi - lo, 0.05) << "the ripple should show at d = " << d;
+        }
     }
 }
 
