@@ -33,7 +33,7 @@ std::vector<ImageAttribute> image_attributes(const ImageProvenance& provenance, 
 
 void require_comparable_filters(const PixelFilter& filter, const ImageRGBA32F& reference,
                                 const std::string& reference_path) {
-    std::string text = "point: one sample at each pixel centre";
+    std::string text = PixelFilter{}.describe();  // references older than the attribute were point-sampled
     for (const ImageAttribute& attribute : reference.attributes) {
         if (attribute.name == "vkwater/filter") text = attribute.value;
     }

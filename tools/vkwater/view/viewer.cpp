@@ -2,6 +2,7 @@
 
 #include "engine/core/errors.hpp"
 #include "engine/image/file_paths.hpp"
+#include "engine/scene/pixel_filter.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
 #include "engine/vk/shader_module.hpp"
@@ -442,8 +443,8 @@ bool Viewer::render_frame() {
                           stats_.recent_frame_ms());
             const std::filesystem::path png = write_screenshot(
                 exr, static_cast<const float*>(readback.mapped()), extent.width, extent.height, tonemap_.exposure,
-                cli::image_attributes({options_.scene, overrides_, "real-time (vkwater view)",
-                                       "point: one sample at each pixel centre", context_->device_name(), time},
+                cli::image_attributes({options_.scene, overrides_, "real-time (vkwater view)", PixelFilter{}.describe(),
+                                       context_->device_name(), time},
                                       scene_->camera));
             std::printf("frame %llu: wrote %s (linear HDR, %ux%u) and %s\n", static_cast<unsigned long long>(frame_),
                         exr.c_str(), extent.width, extent.height, png.c_str());
