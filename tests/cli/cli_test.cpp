@@ -5,6 +5,8 @@
 
 #include "engine/image/exr_io.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -307,6 +309,43 @@ TEST(cli, SamplesPerPixelAreRecordedAndFiltersAreNotMixed) {
     expect_clean_failure(run_vkwater("render " + calm + " --spp 3 --out " + out.string()), 1,
                          "--spp 3: not a square number of samples per pixel (accepted: 1, 4, 9, 16");
     expect_clean_failure(run_vkwater("reference " + calm + " --spp 0 --out " + out.string()), 1, "--spp 0:");
+}
+
+// --measure-texels records the caustics' texel against the pixels: the texel is the floor's side
+// over --floor-texels, and the change on doubling it is exactly the caustic layer's relMSE
+// against a reference of half the texels (a 2 x 2 block mean is that map's texel), which the
+// estimate then carries. An odd count is refused.
+TEST(cli, TheReferenceMeasuresItsTexelsAgainstThePixels) {
+    auto reference = [](int texels) {
+        const fs::path manifest = scratch("texels_" + std::to_string(texels) + ".json");
+        const fs::path image = scratch("texels_" + std::to_string(texels) + ".exr");
+        fs::remove(manifest);
+        const CommandRun run = run_vkwater(
+            "reference " + kPool + " --width 16 --height 12 --cells-per-wavelength 8 --floor-texels " +
+            std::to_string(texels) + " --measure-texels --out " + image.string() + " --manifest " + manifest.string());
+        EXPECT_EQ(run.exit_code, 0) << run.output;
+        std::ifstream in(manifest);
+        return std::pair(image, nlohmann::json::parse(in)["pool.json"]);
+    };
+    const auto [fine_image, fine] = reference(256);
+    const auto [coarse_image, coarse] = reference(128);
+    EXPECT_EQ(fine["floor_texels"].get<int>(), 256);
+    EXPECT_DOUBLE_EQ(fine["texels"]["caustic_texel_m"].get<double>(), 20.0 / 256);  // pool's floor is 20 m wide
+    EXPECT_GT(fine["texels"]["pixels_under_water_measured"].get<int>(), 100);       // most of 15 x 11
+    const double change = fine["texels"]["caustic_texel_change_rel_mse"].get<double>();
+    const CommandRun compared =
+        run_vkwater("compare " + coarse_image.string() + " " + fine_image.string() + " --layer caustic");
+    ASSERT_EQ(compared.exit_code, 0) << compared.output;
+    const size_t at = compared.output.find("relMSE ");
+    ASSERT_NE(at, std::string::npos) << compared.output;
+    // compare prints 6 significant digits; the layers agree to the float rounding of a mean of
+    // four texels against the deposit into one (~1e-7 relative), far below that.
+    const double measured = std::stod(compared.output.substr(at + 7));
+    EXPECT_GT(change, 0.01);  // 78 mm texels under 0.5 m waves: a visible change
+    EXPECT_NEAR(change, measured, 1e-5 * measured);
+    EXPECT_GE(fine["estimated_rel_mse"].get<double>(), change);
+    expect_clean_failure(run_vkwater("reference " + kPool + " --floor-texels 33 --out " + scratch("odd.exr").string()),
+                         1, "--floor-texels: 33 is odd (accepted: an even number from 16 to 16384)");
 }
 
 // A wave far shorter than the reference's beam maps can resolve is refused before any work (a

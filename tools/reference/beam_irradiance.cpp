@@ -40,6 +40,11 @@ BeamIrradiance::BeamIrradiance(const Scene& scene, const WaterSurface& surface, 
 
 glm::dvec3 BeamIrradiance::irradiance(const glm::dvec3& point, const glm::dvec3& normal,
                                       const Visibility& visible) const {
+    return irradiance(point, normal, visible, patch_);
+}
+
+glm::dvec3 BeamIrradiance::irradiance(const glm::dvec3& point, const glm::dvec3& normal, const Visibility& visible,
+                                      double patch) const {
     glm::dvec3 total(0.0);
     if (sun_direction_.y >= 0.0 || point.y >= level_ + amplitude_) return total;
     // The flat beam through the point enters the mean level here; every beam that reaches the
@@ -51,7 +56,7 @@ glm::dvec3 BeamIrradiance::irradiance(const glm::dvec3& point, const glm::dvec3&
     const double radius =
         depth * spread_ +
         amplitude_ * (1.0 + glm::length(glm::dvec2(flat_refracted_.x, flat_refracted_.z)) / -flat_refracted_.y) +
-        2.0 * cell + patch_;
+        2.0 * cell + patch;
     auto index_of = [&](double coordinate) { return static_cast<int64_t>(std::floor((coordinate + extent_) / cell)); };
     // The patch's axes in the receiver's tangent plane.
     const glm::dvec3 axis_u = glm::normalize(
@@ -94,20 +99,20 @@ glm::dvec3 BeamIrradiance::irradiance(const glm::dvec3& point, const glm::dvec3&
                 // The share of the footprint that falls on the patch (or whether it holds the point).
                 double share = 0.0;
                 double weights[3] = {1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0};  // where the beam is followed back
-                if (patch_ > 0.0) {
+                if (patch > 0.0) {
                     Polygon footprint_2d;
                     for (const glm::dvec3& q : footprint)
                         footprint_2d.push_back({glm::dot(q - point, axis_u), glm::dot(q - point, axis_v)});
                     const double footprint_area = 0.5 * std::abs(twice_area);
-                    const double overlap = overlap_with_square(footprint_2d, glm::dvec2(-0.5 * patch_), patch_);
+                    const double overlap = overlap_with_square(footprint_2d, glm::dvec2(-0.5 * patch), patch);
                     if (footprint_area < 1e-30) {
                         // A footprint collapsed to a focus: all its flux lands where its centroid is.
                         const glm::dvec2 centre = (footprint_2d[0] + footprint_2d[1] + footprint_2d[2]) / 3.0;
-                        share = std::abs(centre.x) <= 0.5 * patch_ && std::abs(centre.y) <= 0.5 * patch_
-                                    ? 1.0 / (patch_ * patch_)
+                        share = std::abs(centre.x) <= 0.5 * patch && std::abs(centre.y) <= 0.5 * patch
+                                    ? 1.0 / (patch * patch)
                                     : 0.0;
                     } else {
-                        share = overlap / footprint_area / (patch_ * patch_);
+                        share = overlap / footprint_area / (patch * patch);
                     }
                 } else {
                     if (std::abs(twice_area) < 1e-300) continue;

@@ -34,6 +34,11 @@ public:
 
     // W m^-2 per channel on the receiver's plane (normal facing the light's side).
     glm::dvec3 irradiance(const glm::dvec3& point, const glm::dvec3& normal, const Visibility& visible) const;
+    // The same averaged over a patch of another side (the reference's estimate of its patch's
+    // error compares against twice the side).
+    glm::dvec3 irradiance(const glm::dvec3& point, const glm::dvec3& normal, const Visibility& visible,
+                          double patch) const;
+    double patch() const { return patch_; }
 
 private:
     struct Vertex {

@@ -142,6 +142,18 @@ glm::dvec3 FloorCausticMap::irradiance(double x, double z) const {
     return index >= 0 ? irradiance_[size_t(index)] : glm::dvec3(0.0);
 }
 
+glm::dvec3 FloorCausticMap::irradiance_over_double_texels(double x, double z) const {
+    const int64_t x0 = texel_of(x) & ~int64_t{1}, z0 = texel_of(z) & ~int64_t{1};
+    glm::dvec3 sum(0.0);
+    for (int64_t dz = 0; dz < 2; ++dz) {
+        for (int64_t dx = 0; dx < 2; ++dx) {
+            const int64_t index = texel_index(x0 + dx, z0 + dz);
+            if (index >= 0) sum += irradiance_[size_t(index)];
+        }
+    }
+    return 0.25 * sum;
+}
+
 glm::dvec3 FloorCausticMap::total_flux() const {
     glm::dvec3 sum(0.0);
     for (const glm::dvec3& e : irradiance_) sum += e;

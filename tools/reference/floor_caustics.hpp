@@ -43,9 +43,14 @@ public:
 
     // The texel-averaged sun irradiance at floor point (x, z), W m^-2 per channel.
     glm::dvec3 irradiance(double x, double z) const;
+    // The same averaged over the aligned 2 x 2 block of texels around (x, z): what a map of
+    // half as many texels per side would hold there (the reference's estimate of its texels'
+    // error). The map's texels per side must be even.
+    glm::dvec3 irradiance_over_double_texels(double x, double z) const;
     // Total flux that reached the floor, W per channel (for energy checks).
     glm::dvec3 total_flux() const;
     uint32_t texels_per_side() const { return texels_; }
+    double texel_size() const { return texel_size_; }  // m
     const std::vector<glm::dvec3>& texels() const { return irradiance_; }
 
     // The floor map's period, or 0 when it covers the whole floor.

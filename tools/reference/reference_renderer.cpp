@@ -32,16 +32,31 @@ PixelRadiance pixel_radiance(const WaterTransport& transport, const Camera& came
         mean.radiance += sample.radiance;
         mean.caustic += sample.caustic;
         mean.in_scatter += sample.in_scatter;
+        mean.caustic_double_texels += sample.caustic_double_texels;
     }
     const double n = options.filter.samples;
     mean.radiance /= n;
     mean.caustic /= n;
     mean.in_scatter /= n;
+    mean.caustic_double_texels /= n;
     return mean;
 }
 
 ImageRGBA32F render_reference(const Scene& scene, const ReferenceOptions& options, ReferenceReport* report) {
-    const WaterTransport transport(scene, options.quality);
+    const bool measure_texels = options.measure_texels && report;
+    WaterTransport::Quality quality = options.quality;
+    quality.estimate_texel_error = measure_texels;
+    if (measure_texels) {
+        WaterTransport::Quality geometry_only = quality;
+        geometry_only.caustics = false;
+        report->footprints = under_water_pixel_footprints(scene, WaterTransport(scene, geometry_only), options.width,
+                                                          options.height, options.threads);
+    }
+    const WaterTransport transport(scene, quality);
+    if (measure_texels) {
+        report->caustic_texel = transport.caustic_texel();
+        report->caustic_double_texels.assign(size_t{options.width} * options.height * 3, 0.0f);
+    }
     if (report) {
         report->caustic_refinement_change = transport.caustic_refinement_change();
         report->approximations = transport.approximations();
@@ -69,6 +84,9 @@ ImageRGBA32F render_reference(const Scene& scene, const ReferenceOptions& option
                     out[c] = static_cast<float>(pixel.radiance[c]);
                     caustic.rgb[3 * index + c] = static_cast<float>(pixel.caustic[c]);
                     in_scatter.rgb[3 * index + c] = static_cast<float>(pixel.in_scatter[c]);
+                    if (measure_texels)
+                        report->caustic_double_texels[3 * index + c] =
+                            static_cast<float>(pixel.caustic_double_texels[c]);
                 }
                 out[3] = 1.0f;
             }

@@ -10,6 +10,7 @@
 #include "engine/scene/pixel_filter.hpp"
 #include "engine/scene/scene.hpp"
 #include "tools/reference/bvh.hpp"
+#include "tools/reference/pixel_footprint.hpp"
 #include "tools/reference/water_transport.hpp"
 
 #include <cstdint>
@@ -26,6 +27,9 @@ struct ReferenceOptions {
     std::function<void(double)> progress;  // called with the finished fraction
     WaterTransport::Quality quality;       // wavy water's floor caustics (coarser: faster, for small tests)
     PixelFilter filter;                    // a pixel's samples: its centre, or k x k jittered strata
+    // Measure the caustics' texels against the pixels that read them: the pixels' footprints
+    // under the water and the caustic layer at twice the texel side (ReferenceReport).
+    bool measure_texels = false;
 };
 
 // The primary ray through pixel (x, y)'s centre, row 0 at the top: the same camera
@@ -38,6 +42,12 @@ struct ReferenceReport {
     std::vector<std::string> approximations;  // what the image keeps approximate, one sentence each
     double surface_height_error_bound = 0.0;  // m: the FFT ocean's sampled series (0: exact surfaces)
     double surface_slope_error_bound = 0.0;
+    // With ReferenceOptions::measure_texels: the caustics' texel (m, 0 for closed forms), the
+    // pixels' footprint widths under the water, and the caustic layer (RGB, row-major) at
+    // twice the texel side.
+    double caustic_texel = 0.0;
+    PixelFootprints footprints;
+    std::vector<float> caustic_double_texels;
 };
 
 // Pixel (x, y)'s radiance and layers under options.filter: the ray through its centre, or the

@@ -29,7 +29,8 @@ glm::dvec3 exp3(const glm::dvec3& x) { return {std::exp(x.x), std::exp(x.y), std
 
 WaterTransport::~WaterTransport() = default;
 
-WaterTransport::WaterTransport(const Scene& scene, const Quality& quality) : scene_(scene) {
+WaterTransport::WaterTransport(const Scene& scene, const Quality& quality)
+    : scene_(scene), estimate_texel_error_(quality.estimate_texel_error) {
     const bool wavy = scene.water && scene.water->waves.model != WaveModel::Flat;
     const bool ocean = wavy && scene.water->waves.model == WaveModel::FftOcean;
     // The floor joins the receivers as one more mesh.
@@ -86,7 +87,9 @@ WaterTransport::WaterTransport(const Scene& scene, const Quality& quality) : sce
         }
         const auto cells =
             static_cast<uint32_t>(std::ceil(2.0 * half_extent_ / shortest_wavelength_ * quality.cells_per_wavelength));
-        if (meshes_under_water()) {
+        if (!quality.caustics) {
+            // The view rays' geometry alone: no maps.
+        } else if (meshes_under_water()) {
             // Meshes under the waves: every receiver (the floor too, so that the meshes shadow
             // it) takes the beams averaged over a patch the size of the floor map's texel, at
             // the floor map's coarse cell density (memory: 56 bytes per vertex) and at half
@@ -101,7 +104,7 @@ WaterTransport::WaterTransport(const Scene& scene, const Quality& quality) : sce
             caustic_refinement_change_ = caustics.relative_rms_change;
         }
     }
-    if (wavy && !quality.caustic_in_scatter) {
+    if (wavy && (!quality.caustic_in_scatter || !quality.caustics)) {
         approximations_.push_back("in-scatter along view rays follows the flat surface's beam (no godray modulation)");
     } else if (wavy) {
         CausticInScatter::Settings godrays;
@@ -155,10 +158,12 @@ void WaterTransport::build_ocean(const Quality& quality) {
                         "(accepted: meshes entirely above y = " +
                         std::to_string(level_ + max_amplitude_) + ", the highest crest)");
     }
-    RefinedFloorCaustics caustics =
-        refine_floor_caustics(scene_, *surface_, quality.ocean_floor_texels, quality.ocean_cells_per_period, period);
-    floor_caustics_ = std::move(caustics.map);
-    caustic_refinement_change_ = caustics.relative_rms_change;
+    if (quality.caustics) {
+        RefinedFloorCaustics caustics = refine_floor_caustics(scene_, *surface_, quality.ocean_floor_texels,
+                                                              quality.ocean_cells_per_period, period);
+        floor_caustics_ = std::move(caustics.map);
+        caustic_refinement_change_ = caustics.relative_rms_change;
+    }
     // Beams that reach the floor near the water's edge may have entered beyond it, where the
     // periodic map still counts a surface: within the largest sideways drift of a beam
     // (refracted at the steepest sampled slope) over the water's depth, plus the amplitude.
@@ -314,12 +319,29 @@ glm::dvec3 WaterTransport::sun_irradiance_under_water(const glm::dvec3& point, c
     return e_perp0_ * cos_receiver * exp3(-scene_.medium.sigma_t() * path);
 }
 
+glm::dvec3 WaterTransport::sun_irradiance_at_double_texels(const glm::dvec3& point, const glm::dvec3& normal) const {
+    if (!sun_up_) return glm::dvec3(0.0);
+    if (floor_caustics_) return floor_caustics_->irradiance_over_double_texels(point.x, point.z);
+    if (beams_) return beams_->irradiance(point, normal, beam_visibility(), 2.0 * beams_->patch());
+    return sun_irradiance_under_water(point, normal);
+}
+
+double WaterTransport::caustic_texel() const {
+    if (floor_caustics_) return floor_caustics_->texel_size();
+    return beams_ ? beams_->patch() : 0.0;
+}
+
 glm::dvec3 WaterTransport::receiver_radiance(const glm::dvec3& point, const SurfaceHit& hit,
-                                             glm::dvec3* caustic) const {
+                                             PixelRadiance* primary) const {
     glm::dvec3 irradiance;
     if (in_water(point)) {
         const glm::dvec3 sun = sun_irradiance_under_water(point, hit.normal);
-        if (caustic) *caustic = sun;
+        if (primary) {
+            primary->caustic = sun;
+            primary->caustic_point = point;
+            if (estimate_texel_error_)
+                primary->caustic_double_texels = sun_irradiance_at_double_texels(point, hit.normal);
+        }
         const double depth = level_ - point.y;
         irradiance = sun + std::numbers::pi * sky_average_ * hemispherical_transmittance_ *
                                exp3(-scene_.medium.sigma_t() * depth);
@@ -366,14 +388,14 @@ glm::dvec3 WaterTransport::in_water_segment(const glm::dvec3& origin, double len
     return radiance;
 }
 
-glm::dvec3 WaterTransport::radiance_in_water_to_receiver(const Ray& ray, glm::dvec3* caustic,
+glm::dvec3 WaterTransport::radiance_in_water_to_receiver(const Ray& ray, PixelRadiance* primary,
                                                          glm::dvec3* in_scatter) const {
     const auto hit = closest_receiver(ray, kInfinity);
     // A ray that leaves the water body without meeting a receiver sees nothing (the
     // scenes close their water with a floor or walls).
     const double length = hit ? hit->distance : 0.0;
     const glm::dvec3 behind =
-        hit ? receiver_radiance(ray.origin + hit->distance * ray.direction, *hit, caustic) : glm::dvec3(0.0);
+        hit ? receiver_radiance(ray.origin + hit->distance * ray.direction, *hit, primary) : glm::dvec3(0.0);
     return in_water_segment(ray.origin, length, ray.direction, behind, in_scatter);
 }
 
@@ -388,8 +410,7 @@ PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray) const {
     if (!camera_in_water) {
         if (receiver || to_surface == kInfinity) {  // nothing but air on the way
             if (receiver) {
-                pixel.radiance =
-                    receiver_radiance(ray.origin + receiver->distance * ray.direction, *receiver, &pixel.caustic);
+                pixel.radiance = receiver_radiance(ray.origin + receiver->distance * ray.direction, *receiver, &pixel);
             } else {
                 pixel.radiance = radiance_in_air(ray);
             }
@@ -405,7 +426,7 @@ PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray) const {
         const glm::dvec3 l_reflected = radiance_in_air({p + kOffset * up, reflected});
         glm::dvec3 l_water(0.0), in_scatter(0.0);
         if (const auto refracted = refract(ray.direction, up, 1.0 / ior_); refracted && cos_i > 0.0) {
-            l_water = radiance_in_water_to_receiver({p - kOffset * up, *refracted}, &pixel.caustic, &in_scatter);
+            l_water = radiance_in_water_to_receiver({p - kOffset * up, *refracted}, &pixel, &in_scatter);
         }
         pixel.radiance = reflectance * l_reflected + (1.0 - reflectance) / (ior_ * ior_) * l_water;
         pixel.in_scatter = (1.0 - reflectance) / (ior_ * ior_) * in_scatter;
@@ -414,8 +435,7 @@ PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray) const {
 
     // Camera in the water.
     if (receiver) {
-        const glm::dvec3 behind =
-            receiver_radiance(ray.origin + receiver->distance * ray.direction, *receiver, &pixel.caustic);
+        const glm::dvec3 behind = receiver_radiance(ray.origin + receiver->distance * ray.direction, *receiver, &pixel);
         pixel.radiance = in_water_segment(ray.origin, receiver->distance, ray.direction, behind, &pixel.in_scatter);
         return pixel;
     }

@@ -33,6 +33,7 @@
 #include <glm/glm.hpp>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,13 @@ struct PixelRadiance {
     // receives it ((1 - F) / n^2 of it through the surface from above); not the in-scatter on the
     // paths after a reflection under the surface. 0 where the ray never enters the water.
     glm::dvec3 in_scatter{0.0};
+    // Where `caustic` was read: the receiver point under the water that the primary path
+    // meets (through the surface from above, or straight in the water); unset when the path
+    // sees no receiver under the water. For the pixel footprint (pixel_footprint.hpp).
+    std::optional<glm::dvec3> caustic_point;
+    // `caustic` at twice the caustics' texel (or beam patch) side, when Quality::
+    // estimate_texel_error asks for it: the difference estimates the texels' own error.
+    glm::dvec3 caustic_double_texels{0.0};
 };
 
 class WaterTransport {
@@ -72,6 +80,13 @@ public:
         double in_scatter_cells_per_wavelength = 16.0;
         uint32_t ocean_in_scatter_texels = 1024;
         uint32_t ocean_in_scatter_cells = 1024;
+        // Off: the view rays' geometry alone (no caustic map, no beams, no in-scatter planes;
+        // the sun under wavy water then follows the flat surface's beam), for measuring where
+        // the pixels land before the maps are sized.
+        bool caustics = true;
+        // Also read each primary path's caustic at twice the texel side
+        // (PixelRadiance::caustic_double_texels; the floor map needs an even floor_texels).
+        bool estimate_texel_error = false;
     };
 
     // Throws UserError when the scene needs what this class does not compute.
@@ -88,12 +103,17 @@ public:
     // (sampled_ocean_surface.hpp); 0 for other surfaces.
     double surface_height_error_bound() const { return surface_height_error_bound_; }
     double surface_slope_error_bound() const { return surface_slope_error_bound_; }
+    // The side over which the caustics under wavy water are averaged, m: the floor map's
+    // texel, or the beams' patch under meshes; 0 where they are closed form.
+    double caustic_texel() const;
 
     PixelRadiance trace_camera_ray(const Ray& ray) const;
 
     // The model's quantities, exposed for tests.
     bool in_water(const glm::dvec3& point) const;
     glm::dvec3 sun_irradiance_under_water(const glm::dvec3& point, const glm::dvec3& normal) const;
+    // The same with the map's texel (or the beams' patch) twice as wide; closed forms unchanged.
+    glm::dvec3 sun_irradiance_at_double_texels(const glm::dvec3& point, const glm::dvec3& normal) const;
 
 private:
     struct SurfaceHit {
@@ -113,11 +133,13 @@ private:
     // or none to come): receivers above the water, or the sky with the sun's disk.
     glm::dvec3 radiance_in_air(const Ray& ray) const;
     // Radiance of a Lambertian receiver point, in air or under the water.
-    glm::dvec3 receiver_radiance(const glm::dvec3& point, const SurfaceHit& hit, glm::dvec3* caustic) const;
+    // `primary`, when given, receives the point's sun irradiance under the water as the
+    // pixel's caustic layer, and the point.
+    glm::dvec3 receiver_radiance(const glm::dvec3& point, const SurfaceHit& hit, PixelRadiance* primary) const;
     // Radiance arriving at `start` along `ray` inside the water, up to the receiver it
     // meets (no surface event: the ray's one surface event is already spent); its in-scatter
     // alone also in `in_scatter`, when given.
-    glm::dvec3 radiance_in_water_to_receiver(const Ray& ray, glm::dvec3* caustic,
+    glm::dvec3 radiance_in_water_to_receiver(const Ray& ray, PixelRadiance* primary,
                                              glm::dvec3* in_scatter = nullptr) const;
     // Radiance arriving at `origin` in the water along `direction` over `length`, `behind` at
     // its far end: attenuation and in-scatter (closed form under flat water, modulated by the
@@ -149,6 +171,7 @@ private:
     std::unique_ptr<BeamIrradiance> beams_;            // wavy water with meshes under it
     std::unique_ptr<CausticInScatter> in_scatter_;     // wavy water: the godrays
     double caustic_refinement_change_ = 0.0;
+    bool estimate_texel_error_ = false;
     double shortest_wavelength_ = 0.0;
     double max_amplitude_ = 0.0;
     bool sun_up_ = false;

@@ -6,6 +6,7 @@
 #include "engine/image/file_paths.hpp"
 #include "engine/scene/pixel_filter.hpp"
 #include "engine/scene/scene_loader.hpp"
+#include "tools/metrics/metrics.hpp"
 #include "tools/reference/reference_renderer.hpp"
 #include "tools/reference/scene_hash.hpp"
 #include "tools/vkwater/commands.hpp"
@@ -20,6 +21,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <thread>
 
 namespace vkw::cli {
@@ -37,6 +39,8 @@ struct ReferenceArgs {
     std::vector<std::string> overrides;
     std::string manifest;
     int64_t spp = 1;
+    uint32_t floor_texels = ref::WaterTransport::Quality{}.floor_texels;
+    bool measure_texels = false;
 };
 
 // The remaining error of the reference itself, as relMSE: the flat-water transport is
@@ -45,9 +49,39 @@ struct ReferenceArgs {
 // refinement (squared: a relative RMS change r is a relMSE of about r^2).
 constexpr double kClosedFormRelMse = 1e-18;
 
+// How far the caustic layer moves when its texel doubles, as the caustic layer's relMSE
+// (tools/metrics): the texels' share of the reference's error, over-estimated (a box average's
+// error grows with its side, so the change to twice the side exceeds the error at the side).
+double texel_change_rel_mse(const ImageRGBA32F& image, const ref::ReferenceReport& report) {
+    const metrics::RgbView caustic = metrics::layer_view(image, "caustic");
+    metrics::RgbView doubled = caustic;
+    doubled.values = report.caustic_double_texels.data();
+    const std::vector<size_t> pixels = metrics::counted_pixels(image.width, image.height, nullptr);
+    double mean = 0.0;
+    for (size_t p = 0; p < caustic.pixel_count(); ++p) mean += caustic.channel(p, 0);
+    return mean > 0.0 ? metrics::rel_mse(doubled, caustic, pixels) : 0.0;
+}
+
+// The caustics' texel against the pixels that read it (ReferenceOptions::measure_texels).
+nlohmann::ordered_json texel_record(const ImageRGBA32F& image, const ref::ReferenceReport& report) {
+    const ref::PixelFootprints& footprints = report.footprints;
+    return {{"caustic_texel_m", report.caustic_texel},
+            {"pixels_under_water_measured", footprints.widths.size()},
+            {"pixel_footprint_width_m",
+             {{"quantile_0.01", footprints.quantile(0.01)},
+              {"quantile_0.1", footprints.quantile(0.1)},
+              {"median", footprints.quantile(0.5)}}},
+            // The fraction of those pixels whose footprint is at least 4 texels wide (the
+            // texel at most a quarter of the pixel).
+            {"pixels_at_least_4_texels_wide",
+             report.caustic_texel > 0.0 ? footprints.fraction_at_least(4.0 * report.caustic_texel) : 1.0},
+            {"caustic_texel_change_rel_mse", texel_change_rel_mse(image, report)}};
+}
+
 // Adds or replaces this reference's entry in the manifest (tests/references/manifest.json):
 // the scene file's hash, the settings, the seed, the estimated error and the time taken.
-void record_in_manifest(const ReferenceArgs& args, double seconds, const ref::ReferenceReport& report) {
+void record_in_manifest(const ReferenceArgs& args, double seconds, const ImageRGBA32F& image,
+                        const ref::ReferenceReport& report) {
     nlohmann::ordered_json manifest = nlohmann::ordered_json::object();
     if (std::filesystem::exists(args.manifest)) {
         std::ifstream in(args.manifest);
@@ -55,28 +89,36 @@ void record_in_manifest(const ReferenceArgs& args, double seconds, const ref::Re
         if (manifest.is_discarded()) throw UserError(args.manifest + ": not valid JSON");
     }
     const std::filesystem::path scene = args.scene;
+    // With the texels measured, their change on doubling joins the estimate (the caustic
+    // layer's, an upper bound for the image's, whose caustic is one term of its radiance).
+    const std::optional<nlohmann::ordered_json> texels =
+        args.measure_texels ? std::optional(texel_record(image, report)) : std::nullopt;
+    const double estimated_rel_mse = kClosedFormRelMse +
+                                     report.caustic_refinement_change * report.caustic_refinement_change +
+                                     (texels ? (*texels)["caustic_texel_change_rel_mse"].get<double>() : 0.0);
     const std::filesystem::path base = std::filesystem::path(args.manifest).parent_path();
-    nlohmann::ordered_json entry = {
-        {"scene", std::filesystem::relative(scene, base).generic_string()},
-        {"scene_hash", ref::scene_file_hash(scene)},
-        {"reference", std::filesystem::relative(args.out, base).generic_string()},
-        {"width", args.width},
-        {"height", args.height},
-        {"overrides", args.overrides},
-        {"seed", 0},
-        {"samples_per_pixel", args.spp},
-        {"cells_per_wavelength", args.cells_per_wavelength},
-        {"in_scatter_planes", args.in_scatter_planes},
-        {"in_scatter_texels", args.in_scatter_texels},
-        {"estimated_rel_mse", kClosedFormRelMse + report.caustic_refinement_change * report.caustic_refinement_change},
-        {"caustic_refinement_change", report.caustic_refinement_change},
-        {"approximations", report.approximations},
-        {"seconds", seconds}};
+    nlohmann::ordered_json entry = {{"scene", std::filesystem::relative(scene, base).generic_string()},
+                                    {"scene_hash", ref::scene_file_hash(scene)},
+                                    {"reference", std::filesystem::relative(args.out, base).generic_string()},
+                                    {"width", args.width},
+                                    {"height", args.height},
+                                    {"overrides", args.overrides},
+                                    {"seed", 0},
+                                    {"samples_per_pixel", args.spp},
+                                    {"cells_per_wavelength", args.cells_per_wavelength},
+                                    {"in_scatter_planes", args.in_scatter_planes},
+                                    {"in_scatter_texels", args.in_scatter_texels},
+                                    {"floor_texels", args.floor_texels},
+                                    {"estimated_rel_mse", estimated_rel_mse},
+                                    {"caustic_refinement_change", report.caustic_refinement_change},
+                                    {"approximations", report.approximations},
+                                    {"seconds", seconds}};
     if (report.surface_height_error_bound > 0.0) {
         // The FFT ocean's sampled surface: its error bound (the surface is not exact).
         entry["surface_height_error_bound_m"] = report.surface_height_error_bound;
         entry["surface_slope_error_bound"] = report.surface_slope_error_bound;
     }
+    if (texels) entry["texels"] = *texels;
     manifest[scene.filename().string()] = std::move(entry);
     write_file_checked(args.manifest, manifest.dump(2) + "\n");
 }
@@ -101,6 +143,9 @@ int run_reference(const ReferenceArgs& args) {
     options.quality.cells_per_wavelength = args.cells_per_wavelength;
     options.quality.in_scatter_levels = args.in_scatter_planes;
     options.quality.in_scatter_texels = args.in_scatter_texels;
+    options.quality.floor_texels = args.floor_texels;
+    options.quality.ocean_floor_texels = args.floor_texels;
+    options.measure_texels = args.measure_texels;
     // A progress bar on a terminal; elsewhere (logs, CI) a line at every tenth, so that a long
     // reference is never silent.
     if (::isatty(STDERR_FILENO)) {
@@ -132,7 +177,7 @@ int run_reference(const ReferenceArgs& args) {
     std::printf("wrote %s (%ux%u, reference, layers RGBA, caustic, inscatter) in %.2f s\n", args.out.c_str(),
                 args.width, args.height, seconds);
     if (!args.manifest.empty()) {
-        record_in_manifest(args, seconds, report);
+        record_in_manifest(args, seconds, image, report);
         std::printf("recorded in %s\n", args.manifest.c_str());
     }
     return kExitOk;
@@ -173,6 +218,23 @@ Run add_reference_command(CLI::App& app) {
                      "Wavy water: texels per side of each in-scatter plane's map over the floor")
         ->check(CLI::Range(16u, 8192u))
         ->capture_default_str();
+    command
+        ->add_option("--floor-texels", args->floor_texels,
+                     "Wavy water: texels per side of the floor's caustic map (the FFT ocean's: per period) and the "
+                     "side of the beams' averaging patch under meshes (the floor's side over it); even, since "
+                     "--measure-texels compares against 2 x 2 blocks; memory 48 bytes per texel while it is built")
+        ->check(CLI::Range(16u, 16384u) &
+                CLI::Validator(
+                    [](std::string& value) {
+                        return std::stoul(value) % 2 == 0
+                                   ? std::string()
+                                   : value + " is odd (accepted: an even number from 16 to 16384)";
+                    },
+                    "EVEN"))
+        ->capture_default_str();
+    command->add_flag("--measure-texels", args->measure_texels,
+                      "Measure the caustics' texel against the pixels that read it (their footprints under the "
+                      "water; the caustic layer at twice the texel) and record it with --manifest");
     command->add_option("--manifest", args->manifest,
                         "Record this reference (scene hash, settings, estimated error, time) in a JSON manifest");
     return [args] { return run_reference(*args); };
