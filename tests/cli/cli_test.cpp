@@ -332,7 +332,7 @@ TEST(cli, TheReferenceMeasuresItsTexelsAgainstThePixels) {
     EXPECT_EQ(fine["floor_texels"].get<int>(), 256);
     EXPECT_DOUBLE_EQ(fine["texels"]["caustic_texel_m"].get<double>(), 20.0 / 256);  // pool's floor is 20 m wide
     EXPECT_GT(fine["texels"]["pixels_under_water_measured"].get<int>(), 100);       // most of 15 x 11
-    const double change = fine["texels"]["caustic_texel_change_rel_mse"].get<double>();
+    const double change = fine["texels"]["caustic_coarser_change_rel_mse"].get<double>();
     const CommandRun compared =
         run_vkwater("compare " + coarse_image.string() + " " + fine_image.string() + " --layer caustic");
     ASSERT_EQ(compared.exit_code, 0) << compared.output;

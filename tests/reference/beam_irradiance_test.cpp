@@ -93,6 +93,33 @@ TEST(reference_beam_irradiance, FloorAverageUnderASineEqualsTheBeamMappedFloorMa
     }
 }
 
+TEST(reference_beam_irradiance, AParallelogramPatchAveragesAsTheFloorMapsTexels) {
+    // The beams and the floor map cut the same surface into the same triangles and spread each
+    // footprint's flux by exact overlap, so a patch that is one texel holds that texel's value,
+    // and a patch of two texels side by side (its edges given in either order, along z first)
+    // their mean, to the clipping's rounding.
+    const Scene scene = sine_scene(0.02, 60.0);
+    const auto surface = make_surface(scene.water->waves, 0.0, 0.0);
+    const FloorCausticMap map(scene, *surface, 256, 256);
+    const BeamIrradiance beams(scene, *surface, 256, 0.0);
+    const double texel = 8.0 / 256;  // the floor is 8 m wide
+    double lit = 0.0;
+    for (int i = 100; i < 156; i += 3) {
+        const double x = -4.0 + (i + 0.5) * texel, z = -4.0 + (130 + 0.5) * texel;
+        const glm::dvec3 one = beams.irradiance({x, -1.0, z}, {0.0, 1.0, 0.0}, kEverythingVisible,
+                                                BeamIrradiance::Patch{{texel, 0.0, 0.0}, {0.0, 0.0, texel}});
+        const glm::dvec3 two = beams.irradiance({x, -1.0, z + 0.5 * texel}, {0.0, 1.0, 0.0}, kEverythingVisible,
+                                                BeamIrradiance::Patch{{0.0, 0.0, 2.0 * texel}, {texel, 0.0, 0.0}});
+        const glm::dvec3 expected_two = 0.5 * (map.irradiance(x, z) + map.irradiance(x, z + texel));
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(one[c], map.irradiance(x, z)[c], 1e-9 * (1.0 + one[c])) << "x " << x;
+            EXPECT_NEAR(two[c], expected_two[c], 1e-9 * (1.0 + two[c])) << "x " << x;
+        }
+        lit = std::max(lit, one.x);
+    }
+    EXPECT_GT(lit, 1.0);
+}
+
 TEST(reference_beam_irradiance, MeshesUnderTheWavesRender) {
     // A box under the waves (refused before) renders finite and non-negative, its shadow
     // leaving the floor under it darker than the open floor.

@@ -38,6 +38,13 @@ BeamIrradiance::BeamIrradiance(const Scene& scene, const WaterSurface& surface, 
     }
 }
 
+BeamIrradiance::Patch BeamIrradiance::square_patch(const glm::dvec3& normal, double side) {
+    // Any two perpendicular axes of the receiver's tangent plane.
+    const glm::dvec3 axis_u = glm::normalize(
+        glm::cross(std::abs(normal.y) < 0.9 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(1.0, 0.0, 0.0), normal));
+    return {side * axis_u, side * glm::cross(normal, axis_u)};
+}
+
 glm::dvec3 BeamIrradiance::irradiance(const glm::dvec3& point, const glm::dvec3& normal,
                                       const Visibility& visible) const {
     return irradiance(point, normal, visible, patch_);
@@ -45,10 +52,26 @@ glm::dvec3 BeamIrradiance::irradiance(const glm::dvec3& point, const glm::dvec3&
 
 glm::dvec3 BeamIrradiance::irradiance(const glm::dvec3& point, const glm::dvec3& normal, const Visibility& visible,
                                       double patch) const {
+    return patch > 0.0 ? irradiance(point, normal, visible, square_patch(normal, patch))
+                       : irradiance(point, normal, visible, Patch{});
+}
+
+glm::dvec3 BeamIrradiance::irradiance(const glm::dvec3& point, const glm::dvec3& normal, const Visibility& visible,
+                                      const Patch& patch) const {
     glm::dvec3 total(0.0);
     if (sun_direction_.y >= 0.0 || point.y >= level_ + amplitude_) return total;
+    // The patch's coordinates: a point q of the tangent plane is point + s u + t v, (s, t) from
+    // the inverse of the 2 x 2 Gram system; the patch is (s, t) in [-1/2, 1/2]^2.
+    const double uu = glm::dot(patch.u, patch.u), uv = glm::dot(patch.u, patch.v), vv = glm::dot(patch.v, patch.v);
+    const double gram = uu * vv - uv * uv;
+    const double patch_area = std::sqrt(std::max(0.0, gram));
+    const bool averaged = patch_area > 0.0;
+    auto patch_coordinates = [&](const glm::dvec3& q) {
+        const double qu = glm::dot(q - point, patch.u), qv = glm::dot(q - point, patch.v);
+        return glm::dvec2((vv * qu - uv * qv) / gram, (uu * qv - uv * qu) / gram);
+    };
     // The flat beam through the point enters the mean level here; every beam that reaches the
-    // point entered within `radius` of it (its drift differs by at most spread_ per metre of
+    // patch entered within `radius` of it (its drift differs by at most spread_ per metre of
     // depth; the surface moves by at most the amplitude vertically and, displaced, sideways).
     const double depth = level_ + amplitude_ - point.y;
     const glm::dvec3 flat_entry = point - ((level_ - point.y) / -flat_refracted_.y) * flat_refracted_;
@@ -56,12 +79,8 @@ glm::dvec3 BeamIrradiance::irradiance(const glm::dvec3& point, const glm::dvec3&
     const double radius =
         depth * spread_ +
         amplitude_ * (1.0 + glm::length(glm::dvec2(flat_refracted_.x, flat_refracted_.z)) / -flat_refracted_.y) +
-        2.0 * cell + patch;
+        2.0 * cell + glm::length(patch.u) + glm::length(patch.v);
     auto index_of = [&](double coordinate) { return static_cast<int64_t>(std::floor((coordinate + extent_) / cell)); };
-    // The patch's axes in the receiver's tangent plane.
-    const glm::dvec3 axis_u = glm::normalize(
-        glm::cross(std::abs(normal.y) < 0.9 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(1.0, 0.0, 0.0), normal));
-    const glm::dvec3 axis_v = glm::cross(normal, axis_u);
     const int64_t i0 = std::max<int64_t>(0, index_of(flat_entry.x - radius));
     const int64_t i1 = std::min<int64_t>(cells_ - 1, index_of(flat_entry.x + radius));
     const int64_t j0 = std::max<int64_t>(0, index_of(flat_entry.z - radius));
@@ -99,20 +118,21 @@ glm::dvec3 BeamIrradiance::irradiance(const glm::dvec3& point, const glm::dvec3&
                 // The share of the footprint that falls on the patch (or whether it holds the point).
                 double share = 0.0;
                 double weights[3] = {1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0};  // where the beam is followed back
-                if (patch > 0.0) {
-                    Polygon footprint_2d;
-                    for (const glm::dvec3& q : footprint)
-                        footprint_2d.push_back({glm::dot(q - point, axis_u), glm::dot(q - point, axis_v)});
+                if (averaged) {
+                    const glm::dvec2 st[3] = {patch_coordinates(footprint[0]), patch_coordinates(footprint[1]),
+                                              patch_coordinates(footprint[2])};
+                    const glm::dvec2 lo = glm::min(st[0], glm::min(st[1], st[2]));
+                    const glm::dvec2 hi = glm::max(st[0], glm::max(st[1], st[2]));
+                    if (lo.x > 0.5 || lo.y > 0.5 || hi.x < -0.5 || hi.y < -0.5) continue;  // misses the patch
+                    const Polygon footprint_st{st[0], st[1], st[2]};
                     const double footprint_area = 0.5 * std::abs(twice_area);
-                    const double overlap = overlap_with_square(footprint_2d, glm::dvec2(-0.5 * patch), patch);
                     if (footprint_area < 1e-30) {
                         // A footprint collapsed to a focus: all its flux lands where its centroid is.
-                        const glm::dvec2 centre = (footprint_2d[0] + footprint_2d[1] + footprint_2d[2]) / 3.0;
-                        share = std::abs(centre.x) <= 0.5 * patch && std::abs(centre.y) <= 0.5 * patch
-                                    ? 1.0 / (patch * patch)
-                                    : 0.0;
+                        const glm::dvec2 centre = (footprint_st[0] + footprint_st[1] + footprint_st[2]) / 3.0;
+                        share = std::abs(centre.x) <= 0.5 && std::abs(centre.y) <= 0.5 ? 1.0 / patch_area : 0.0;
                     } else {
-                        share = overlap / footprint_area / (patch * patch);
+                        // The overlap in (s, t) is a fraction of the patch; times its area, of the footprint.
+                        share = overlap_with_square(footprint_st, glm::dvec2(-0.5), 1.0) / footprint_area;
                     }
                 } else {
                     if (std::abs(twice_area) < 1e-300) continue;

@@ -34,10 +34,18 @@ public:
 
     // W m^-2 per channel on the receiver's plane (normal facing the light's side).
     glm::dvec3 irradiance(const glm::dvec3& point, const glm::dvec3& normal, const Visibility& visible) const;
-    // The same averaged over a patch of another side (the reference's estimate of its patch's
-    // error compares against twice the side).
+    // The same averaged over a square patch of another side (the reference's estimate of its
+    // patch's error compares against twice the side; 0: at the point).
     glm::dvec3 irradiance(const glm::dvec3& point, const glm::dvec3& normal, const Visibility& visible,
                           double patch) const;
+    // A parallelogram of the receiver's tangent plane centred on the point: point + s u + t v,
+    // s and t in [-1/2, 1/2] (a share of a pixel's footprint; u = v = 0: at the point).
+    struct Patch {
+        glm::dvec3 u{0.0}, v{0.0};
+    };
+    glm::dvec3 irradiance(const glm::dvec3& point, const glm::dvec3& normal, const Visibility& visible,
+                          const Patch& patch) const;
+    static Patch square_patch(const glm::dvec3& normal, double side);
     double patch() const { return patch_; }
 
 private:

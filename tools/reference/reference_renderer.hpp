@@ -43,17 +43,20 @@ struct ReferenceReport {
     double surface_height_error_bound = 0.0;  // m: the FFT ocean's sampled series (0: exact surfaces)
     double surface_slope_error_bound = 0.0;
     // With ReferenceOptions::measure_texels: the caustics' texel (m, 0 for closed forms), the
-    // pixels' footprint widths under the water, and the caustic layer (RGB, row-major) at
-    // twice the texel side.
-    double caustic_texel = 0.0;
+    // pixels' footprint widths under the water, and the caustic layer (RGB, row-major) one
+    // level coarser.
+    double caustic_texel = 0.0;    // 0 also over footprints (Quality::caustics_over_footprints)
+    std::string coarser_caustics;  // what caustic_coarser is (WaterTransport::coarser_caustics)
     PixelFootprints footprints;
-    std::vector<float> caustic_double_texels;
+    std::vector<float> caustic_coarser;
 };
 
 // Pixel (x, y)'s radiance and layers under options.filter: the ray through its centre, or the
 // mean of its jittered strata's rays.
-PixelRadiance pixel_radiance(const WaterTransport& transport, const Camera& camera, const ReferenceOptions& options,
-                             uint32_t x, uint32_t y);
+// `geometry` (a transport of the same scene with Quality::caustics off), when given, traces the
+// rays that measure each sample's footprint for Quality::caustics_over_footprints.
+PixelRadiance pixel_radiance(const WaterTransport& transport, const WaterTransport* geometry, const Camera& camera,
+                             const ReferenceOptions& options, uint32_t x, uint32_t y);
 
 ImageRGBA32F render_reference(const Scene& scene, const ReferenceOptions& options, ReferenceReport* report = nullptr);
 

@@ -30,7 +30,7 @@ glm::dvec3 exp3(const glm::dvec3& x) { return {std::exp(x.x), std::exp(x.y), std
 WaterTransport::~WaterTransport() = default;
 
 WaterTransport::WaterTransport(const Scene& scene, const Quality& quality)
-    : scene_(scene), estimate_texel_error_(quality.estimate_texel_error) {
+    : scene_(scene), estimate_caustic_resolution_(quality.estimate_caustic_resolution) {
     const bool wavy = scene.water && scene.water->waves.model != WaveModel::Flat;
     const bool ocean = wavy && scene.water->waves.model == WaveModel::FftOcean;
     // The floor joins the receivers as one more mesh.
@@ -89,15 +89,26 @@ WaterTransport::WaterTransport(const Scene& scene, const Quality& quality)
             static_cast<uint32_t>(std::ceil(2.0 * half_extent_ / shortest_wavelength_ * quality.cells_per_wavelength));
         if (!quality.caustics) {
             // The view rays' geometry alone: no maps.
-        } else if (meshes_under_water()) {
-            // Meshes under the waves: every receiver (the floor too, so that the meshes shadow
-            // it) takes the beams averaged over a patch the size of the floor map's texel, at
-            // the floor map's coarse cell density (memory: 56 bytes per vertex) and at half
-            // of it for the error estimate.
+        } else if (meshes_under_water() || quality.caustics_over_footprints) {
+            // Meshes under the waves, or caustics over footprints: every receiver (the floor
+            // too, so that the meshes shadow it) takes the beams averaged over a patch the size
+            // of the floor map's texel (or over the footprint its ray is given), at the floor
+            // map's coarse cell density (memory: 56 bytes per vertex) and at half of it for the
+            // error estimate (kept, over footprints, for the per-pixel one).
             const double patch = 2.0 * scene.floor.half_extent / quality.floor_texels;  // the floor map's texel
             beams_ = std::make_unique<BeamIrradiance>(scene, *surface_, cells, patch);
-            caustic_refinement_change_ =
-                estimate_beam_refinement(BeamIrradiance(scene, *surface_, std::max(1u, cells / 2), patch));
+            auto coarser = std::make_unique<BeamIrradiance>(scene, *surface_, std::max(1u, cells / 2), patch);
+            caustic_refinement_change_ = estimate_beam_refinement(*coarser);
+            if (quality.caustics_over_footprints && quality.estimate_caustic_resolution)
+                coarser_beams_ = std::move(coarser);
+            approximations_.push_back(
+                quality.caustics_over_footprints
+                    ? "caustics under waves: the beams of " + std::to_string(cells) +
+                          " surface cells per side averaged over each sample's share of its pixel's footprint on "
+                          "the receiver (the parallelogram of the neighbouring strata's rays; over a " +
+                          std::to_string(patch) + " m square for paths after a reflection)"
+                    : "caustics under waves: the beams of " + std::to_string(cells) +
+                          " surface cells per side averaged over a " + std::to_string(patch) + " m square");
         } else {
             RefinedFloorCaustics caustics = refine_floor_caustics(scene, *surface_, quality.floor_texels, cells);
             floor_caustics_ = std::move(caustics.map);
@@ -157,6 +168,12 @@ void WaterTransport::build_ocean(const Quality& quality) {
                         ": receivers: the reference renderer does not compute receiver meshes under an FFT ocean yet "
                         "(accepted: meshes entirely above y = " +
                         std::to_string(level_ + max_amplitude_) + ", the highest crest)");
+    }
+    if (quality.caustics_over_footprints) {
+        throw UserError(scene_.source.string() +
+                        ": water.waves.model: the reference averages the FFT ocean's caustics over its periodic floor "
+                        "map's texels, not over pixel footprints (accepted: footprints under the model sum; for "
+                        "fft, a finer map with --floor-texels)");
     }
     if (quality.caustics) {
         RefinedFloorCaustics caustics = refine_floor_caustics(scene_, *surface_, quality.ocean_floor_texels,
@@ -303,9 +320,11 @@ bool WaterTransport::sun_blocked_in_air(const glm::dvec3& point) const {
     return bvh_->any_hit({point, -scene_.sun.direction}, kInfinity);
 }
 
-glm::dvec3 WaterTransport::sun_irradiance_under_water(const glm::dvec3& point, const glm::dvec3& normal) const {
+glm::dvec3 WaterTransport::sun_irradiance_under_water(const glm::dvec3& point, const glm::dvec3& normal,
+                                                      const BeamIrradiance::Patch* footprint) const {
     if (!sun_up_) return glm::dvec3(0.0);
     if (floor_caustics_) return floor_caustics_->irradiance(point.x, point.z);  // only the floor is under wavy water
+    if (beams_ && footprint) return beams_->irradiance(point, normal, beam_visibility(), *footprint);
     if (beams_) return beams_->irradiance(point, normal, beam_visibility());
     const double cos_receiver = std::max(0.0, -glm::dot(refracted_sun_, normal));
     if (cos_receiver == 0.0) return glm::dvec3(0.0);
@@ -319,11 +338,23 @@ glm::dvec3 WaterTransport::sun_irradiance_under_water(const glm::dvec3& point, c
     return e_perp0_ * cos_receiver * exp3(-scene_.medium.sigma_t() * path);
 }
 
-glm::dvec3 WaterTransport::sun_irradiance_at_double_texels(const glm::dvec3& point, const glm::dvec3& normal) const {
+glm::dvec3 WaterTransport::sun_irradiance_one_level_coarser(const glm::dvec3& point, const glm::dvec3& normal,
+                                                            const BeamIrradiance::Patch* footprint) const {
     if (!sun_up_) return glm::dvec3(0.0);
     if (floor_caustics_) return floor_caustics_->irradiance_over_double_texels(point.x, point.z);
+    if (coarser_beams_) {
+        return footprint ? coarser_beams_->irradiance(point, normal, beam_visibility(), *footprint)
+                         : coarser_beams_->irradiance(point, normal, beam_visibility());
+    }
     if (beams_) return beams_->irradiance(point, normal, beam_visibility(), 2.0 * beams_->patch());
     return sun_irradiance_under_water(point, normal);
+}
+
+std::string WaterTransport::coarser_caustics() const {
+    if (floor_caustics_) return "the floor map's texel twice as wide";
+    if (coarser_beams_) return "the beams from half the surface cells per side";
+    if (beams_) return "the beams' patch twice as wide";
+    return "";
 }
 
 double WaterTransport::caustic_texel() const {
@@ -331,16 +362,17 @@ double WaterTransport::caustic_texel() const {
     return beams_ ? beams_->patch() : 0.0;
 }
 
-glm::dvec3 WaterTransport::receiver_radiance(const glm::dvec3& point, const SurfaceHit& hit,
-                                             PixelRadiance* primary) const {
+glm::dvec3 WaterTransport::receiver_radiance(const glm::dvec3& point, const SurfaceHit& hit, PixelRadiance* primary,
+                                             const BeamIrradiance::Patch* footprint) const {
     glm::dvec3 irradiance;
     if (in_water(point)) {
-        const glm::dvec3 sun = sun_irradiance_under_water(point, hit.normal);
+        const glm::dvec3 sun = sun_irradiance_under_water(point, hit.normal, primary ? footprint : nullptr);
         if (primary) {
             primary->caustic = sun;
             primary->caustic_point = point;
-            if (estimate_texel_error_)
-                primary->caustic_double_texels = sun_irradiance_at_double_texels(point, hit.normal);
+            primary->caustic_normal = hit.normal;
+            if (estimate_caustic_resolution_)
+                primary->caustic_coarser = sun_irradiance_one_level_coarser(point, hit.normal, footprint);
         }
         const double depth = level_ - point.y;
         irradiance = sun + std::numbers::pi * sky_average_ * hemispherical_transmittance_ *
@@ -388,18 +420,18 @@ glm::dvec3 WaterTransport::in_water_segment(const glm::dvec3& origin, double len
     return radiance;
 }
 
-glm::dvec3 WaterTransport::radiance_in_water_to_receiver(const Ray& ray, PixelRadiance* primary,
-                                                         glm::dvec3* in_scatter) const {
+glm::dvec3 WaterTransport::radiance_in_water_to_receiver(const Ray& ray, PixelRadiance* primary, glm::dvec3* in_scatter,
+                                                         const BeamIrradiance::Patch* footprint) const {
     const auto hit = closest_receiver(ray, kInfinity);
     // A ray that leaves the water body without meeting a receiver sees nothing (the
     // scenes close their water with a floor or walls).
     const double length = hit ? hit->distance : 0.0;
     const glm::dvec3 behind =
-        hit ? receiver_radiance(ray.origin + hit->distance * ray.direction, *hit, primary) : glm::dvec3(0.0);
+        hit ? receiver_radiance(ray.origin + hit->distance * ray.direction, *hit, primary, footprint) : glm::dvec3(0.0);
     return in_water_segment(ray.origin, length, ray.direction, behind, in_scatter);
 }
 
-PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray) const {
+PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray, const BeamIrradiance::Patch* footprint) const {
     PixelRadiance pixel;
     const bool camera_in_water = in_water(ray.origin);
     const std::optional<WaterHit> water_hit = water_surface_hit(ray);
@@ -426,7 +458,7 @@ PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray) const {
         const glm::dvec3 l_reflected = radiance_in_air({p + kOffset * up, reflected});
         glm::dvec3 l_water(0.0), in_scatter(0.0);
         if (const auto refracted = refract(ray.direction, up, 1.0 / ior_); refracted && cos_i > 0.0) {
-            l_water = radiance_in_water_to_receiver({p - kOffset * up, *refracted}, &pixel, &in_scatter);
+            l_water = radiance_in_water_to_receiver({p - kOffset * up, *refracted}, &pixel, &in_scatter, footprint);
         }
         pixel.radiance = reflectance * l_reflected + (1.0 - reflectance) / (ior_ * ior_) * l_water;
         pixel.in_scatter = (1.0 - reflectance) / (ior_ * ior_) * in_scatter;
@@ -435,7 +467,8 @@ PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray) const {
 
     // Camera in the water.
     if (receiver) {
-        const glm::dvec3 behind = receiver_radiance(ray.origin + receiver->distance * ray.direction, *receiver, &pixel);
+        const glm::dvec3 behind =
+            receiver_radiance(ray.origin + receiver->distance * ray.direction, *receiver, &pixel, footprint);
         pixel.radiance = in_water_segment(ray.origin, receiver->distance, ray.direction, behind, &pixel.in_scatter);
         return pixel;
     }

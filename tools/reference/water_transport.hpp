@@ -50,9 +50,11 @@ struct PixelRadiance {
     // meets (through the surface from above, or straight in the water); unset when the path
     // sees no receiver under the water. For the pixel footprint (pixel_footprint.hpp).
     std::optional<glm::dvec3> caustic_point;
-    // `caustic` at twice the caustics' texel (or beam patch) side, when Quality::
-    // estimate_texel_error asks for it: the difference estimates the texels' own error.
-    glm::dvec3 caustic_double_texels{0.0};
+    glm::dvec3 caustic_normal{0.0};  // the receiver's normal there (unit, toward the light's side)
+    // `caustic` one level coarser, when Quality::estimate_caustic_resolution asks for it (the
+    // floor map's texel or the beams' patch twice as wide; over footprints, the beams from half
+    // the surface cells per side): the difference estimates the caustics' own error.
+    glm::dvec3 caustic_coarser{0.0};
 };
 
 class WaterTransport {
@@ -84,9 +86,13 @@ public:
         // the sun under wavy water then follows the flat surface's beam), for measuring where
         // the pixels land before the maps are sized.
         bool caustics = true;
-        // Also read each primary path's caustic at twice the texel side
-        // (PixelRadiance::caustic_double_texels; the floor map needs an even floor_texels).
-        bool estimate_texel_error = false;
+        // Also read each primary path's caustic one level coarser (PixelRadiance::caustic_coarser;
+        // the floor map needs an even floor_texels).
+        bool estimate_caustic_resolution = false;
+        // Wavy water (not the FFT ocean): every receiver, the floor too, takes its caustics
+        // from the beams, averaged over the footprint that trace_camera_ray is given (a share of
+        // its pixel) instead of a fixed texel; where none is given, over the floor map's texel.
+        bool caustics_over_footprints = false;
     };
 
     // Throws UserError when the scene needs what this class does not compute.
@@ -107,13 +113,19 @@ public:
     // texel, or the beams' patch under meshes; 0 where they are closed form.
     double caustic_texel() const;
 
-    PixelRadiance trace_camera_ray(const Ray& ray) const;
+    // `footprint`: the part of the receiver the ray stands for (a pixel's stratum), over which
+    // the caustics it sees are averaged under Quality::caustics_over_footprints.
+    PixelRadiance trace_camera_ray(const Ray& ray, const BeamIrradiance::Patch* footprint = nullptr) const;
 
     // The model's quantities, exposed for tests.
     bool in_water(const glm::dvec3& point) const;
-    glm::dvec3 sun_irradiance_under_water(const glm::dvec3& point, const glm::dvec3& normal) const;
-    // The same with the map's texel (or the beams' patch) twice as wide; closed forms unchanged.
-    glm::dvec3 sun_irradiance_at_double_texels(const glm::dvec3& point, const glm::dvec3& normal) const;
+    glm::dvec3 sun_irradiance_under_water(const glm::dvec3& point, const glm::dvec3& normal,
+                                          const BeamIrradiance::Patch* footprint = nullptr) const;
+    // The same one level coarser (PixelRadiance::caustic_coarser); closed forms unchanged.
+    glm::dvec3 sun_irradiance_one_level_coarser(const glm::dvec3& point, const glm::dvec3& normal,
+                                                const BeamIrradiance::Patch* footprint) const;
+    // What "one level coarser" is for this scene's caustics, for the manifest ("" if closed form).
+    std::string coarser_caustics() const;
 
 private:
     struct SurfaceHit {
@@ -135,12 +147,13 @@ private:
     // Radiance of a Lambertian receiver point, in air or under the water.
     // `primary`, when given, receives the point's sun irradiance under the water as the
     // pixel's caustic layer, and the point.
-    glm::dvec3 receiver_radiance(const glm::dvec3& point, const SurfaceHit& hit, PixelRadiance* primary) const;
+    glm::dvec3 receiver_radiance(const glm::dvec3& point, const SurfaceHit& hit, PixelRadiance* primary,
+                                 const BeamIrradiance::Patch* footprint = nullptr) const;
     // Radiance arriving at `start` along `ray` inside the water, up to the receiver it
     // meets (no surface event: the ray's one surface event is already spent); its in-scatter
     // alone also in `in_scatter`, when given.
-    glm::dvec3 radiance_in_water_to_receiver(const Ray& ray, PixelRadiance* primary,
-                                             glm::dvec3* in_scatter = nullptr) const;
+    glm::dvec3 radiance_in_water_to_receiver(const Ray& ray, PixelRadiance* primary, glm::dvec3* in_scatter = nullptr,
+                                             const BeamIrradiance::Patch* footprint = nullptr) const;
     // Radiance arriving at `origin` in the water along `direction` over `length`, `behind` at
     // its far end: attenuation and in-scatter (closed form under flat water, modulated by the
     // caustics under waves); the in-scatter term alone also in `in_scatter`, when given.
@@ -168,10 +181,11 @@ private:
     std::vector<std::string> approximations_;
     double surface_height_error_bound_ = 0.0, surface_slope_error_bound_ = 0.0;
     std::unique_ptr<FloorCausticMap> floor_caustics_;  // wavy water over the floor alone
-    std::unique_ptr<BeamIrradiance> beams_;            // wavy water with meshes under it
+    std::unique_ptr<BeamIrradiance> beams_;            // wavy water with meshes under it, or over footprints
+    std::unique_ptr<BeamIrradiance> coarser_beams_;    // over footprints: half the cells, for the estimate
     std::unique_ptr<CausticInScatter> in_scatter_;     // wavy water: the godrays
     double caustic_refinement_change_ = 0.0;
-    bool estimate_texel_error_ = false;
+    bool estimate_caustic_resolution_ = false;
     double shortest_wavelength_ = 0.0;
     double max_amplitude_ = 0.0;
     bool sun_up_ = false;

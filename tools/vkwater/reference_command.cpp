@@ -41,6 +41,7 @@ struct ReferenceArgs {
     int64_t spp = 1;
     uint32_t floor_texels = ref::WaterTransport::Quality{}.floor_texels;
     bool measure_texels = false;
+    bool footprint_caustics = false;
 };
 
 // The remaining error of the reference itself, as relMSE: the flat-water transport is
@@ -49,13 +50,15 @@ struct ReferenceArgs {
 // refinement (squared: a relative RMS change r is a relMSE of about r^2).
 constexpr double kClosedFormRelMse = 1e-18;
 
-// How far the caustic layer moves when its texel doubles, as the caustic layer's relMSE
-// (tools/metrics): the texels' share of the reference's error, over-estimated (a box average's
-// error grows with its side, so the change to twice the side exceeds the error at the side).
-double texel_change_rel_mse(const ImageRGBA32F& image, const ref::ReferenceReport& report) {
+// How far the caustic layer moves one level coarser (its texel doubled, or half the beam cells),
+// as the caustic layer's relMSE (tools/metrics): the estimate of that resolution's share of the
+// reference's error, once the resolution is in its converging range (the change to twice the
+// texel then exceeds the error at the texel; a texel wider than the caustics' features changes
+// little on doubling, and the estimate says nothing there).
+double coarser_change_rel_mse(const ImageRGBA32F& image, const ref::ReferenceReport& report) {
     const metrics::RgbView caustic = metrics::layer_view(image, "caustic");
     metrics::RgbView doubled = caustic;
-    doubled.values = report.caustic_double_texels.data();
+    doubled.values = report.caustic_coarser.data();
     const std::vector<size_t> pixels = metrics::counted_pixels(image.width, image.height, nullptr);
     double mean = 0.0;
     for (size_t p = 0; p < caustic.pixel_count(); ++p) mean += caustic.channel(p, 0);
@@ -65,23 +68,51 @@ double texel_change_rel_mse(const ImageRGBA32F& image, const ref::ReferenceRepor
 // The caustics' texel against the pixels that read it (ReferenceOptions::measure_texels).
 nlohmann::ordered_json texel_record(const ImageRGBA32F& image, const ref::ReferenceReport& report) {
     const ref::PixelFootprints& footprints = report.footprints;
-    return {{"caustic_texel_m", report.caustic_texel},
+    return {{"caustic_texel_m", report.caustic_texel},  // 0: closed form, or averaged over footprints
             {"pixels_under_water_measured", footprints.widths.size()},
             {"pixel_footprint_width_m",
              {{"quantile_0.01", footprints.quantile(0.01)},
               {"quantile_0.1", footprints.quantile(0.1)},
               {"median", footprints.quantile(0.5)}}},
             // The fraction of those pixels whose footprint is at least 4 texels wide (the
-            // texel at most a quarter of the pixel).
+            // texel at most a quarter of the pixel); over footprints every sample averages over
+            // its stratum's own, 1/k of its pixel's.
             {"pixels_at_least_4_texels_wide",
              report.caustic_texel > 0.0 ? footprints.fraction_at_least(4.0 * report.caustic_texel) : 1.0},
-            {"caustic_texel_change_rel_mse", texel_change_rel_mse(image, report)}};
+            {"coarser", report.coarser_caustics},
+            {"caustic_coarser_change_rel_mse", coarser_change_rel_mse(image, report)}};
+}
+
+// The image and caustic layer's relMSE against the same reference at half the strata per side:
+// the box filter's own share of the error (the integration over the pixel converging).
+struct FilterChange {
+    uint32_t samples = 0;
+    double rel_mse = 0.0, caustic_rel_mse = 0.0, seconds = 0.0;
+};
+
+FilterChange measure_filter_change(const Scene& scene, const ref::ReferenceOptions& options,
+                                   const ImageRGBA32F& image) {
+    ref::ReferenceOptions coarser = options;
+    coarser.filter = pixel_filter_from_spp(int64_t{options.filter.samples} / 4);
+    coarser.measure_texels = false;
+    const auto start = std::chrono::steady_clock::now();
+    const ImageRGBA32F other = ref::render_reference(scene, coarser);
+    FilterChange change;
+    change.samples = coarser.filter.samples;
+    change.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::vector<size_t> pixels = metrics::counted_pixels(image.width, image.height, nullptr);
+    change.rel_mse = metrics::rel_mse(metrics::rgb_view(other), metrics::rgb_view(image), pixels);
+    const metrics::RgbView caustic = metrics::layer_view(image, "caustic");
+    double lit = 0.0;
+    for (size_t p = 0; p < caustic.pixel_count(); ++p) lit += caustic.channel(p, 0);
+    change.caustic_rel_mse = lit > 0.0 ? metrics::rel_mse(metrics::layer_view(other, "caustic"), caustic, pixels) : 0.0;
+    return change;
 }
 
 // Adds or replaces this reference's entry in the manifest (tests/references/manifest.json):
 // the scene file's hash, the settings, the seed, the estimated error and the time taken.
 void record_in_manifest(const ReferenceArgs& args, double seconds, const ImageRGBA32F& image,
-                        const ref::ReferenceReport& report) {
+                        const ref::ReferenceReport& report, const std::optional<FilterChange>& filter_change) {
     nlohmann::ordered_json manifest = nlohmann::ordered_json::object();
     if (std::filesystem::exists(args.manifest)) {
         std::ifstream in(args.manifest);
@@ -89,13 +120,15 @@ void record_in_manifest(const ReferenceArgs& args, double seconds, const ImageRG
         if (manifest.is_discarded()) throw UserError(args.manifest + ": not valid JSON");
     }
     const std::filesystem::path scene = args.scene;
-    // With the texels measured, their change on doubling joins the estimate (the caustic
-    // layer's, an upper bound for the image's, whose caustic is one term of its radiance).
+    // With the texels measured, the caustics' change one level coarser joins the estimate (the
+    // caustic layer's, an upper bound for the image's, whose caustic is one term of its
+    // radiance), and so does the image's change at a quarter of the samples per pixel.
     const std::optional<nlohmann::ordered_json> texels =
         args.measure_texels ? std::optional(texel_record(image, report)) : std::nullopt;
     const double estimated_rel_mse = kClosedFormRelMse +
                                      report.caustic_refinement_change * report.caustic_refinement_change +
-                                     (texels ? (*texels)["caustic_texel_change_rel_mse"].get<double>() : 0.0);
+                                     (texels ? (*texels)["caustic_coarser_change_rel_mse"].get<double>() : 0.0) +
+                                     (filter_change ? filter_change->rel_mse : 0.0);
     const std::filesystem::path base = std::filesystem::path(args.manifest).parent_path();
     nlohmann::ordered_json entry = {{"scene", std::filesystem::relative(scene, base).generic_string()},
                                     {"scene_hash", ref::scene_file_hash(scene)},
@@ -109,6 +142,7 @@ void record_in_manifest(const ReferenceArgs& args, double seconds, const ImageRG
                                     {"in_scatter_planes", args.in_scatter_planes},
                                     {"in_scatter_texels", args.in_scatter_texels},
                                     {"floor_texels", args.floor_texels},
+                                    {"footprint_caustics", args.footprint_caustics},
                                     {"estimated_rel_mse", estimated_rel_mse},
                                     {"caustic_refinement_change", report.caustic_refinement_change},
                                     {"approximations", report.approximations},
@@ -119,6 +153,12 @@ void record_in_manifest(const ReferenceArgs& args, double seconds, const ImageRG
         entry["surface_slope_error_bound"] = report.surface_slope_error_bound;
     }
     if (texels) entry["texels"] = *texels;
+    if (filter_change) {
+        entry["filter_change"] = {{"samples_per_pixel", filter_change->samples},
+                                  {"rel_mse", filter_change->rel_mse},
+                                  {"caustic_rel_mse", filter_change->caustic_rel_mse},
+                                  {"seconds", filter_change->seconds}};
+    }
     manifest[scene.filename().string()] = std::move(entry);
     write_file_checked(args.manifest, manifest.dump(2) + "\n");
 }
@@ -146,6 +186,7 @@ int run_reference(const ReferenceArgs& args) {
     options.quality.floor_texels = args.floor_texels;
     options.quality.ocean_floor_texels = args.floor_texels;
     options.measure_texels = args.measure_texels;
+    options.quality.caustics_over_footprints = args.footprint_caustics;
     // A progress bar on a terminal; elsewhere (logs, CI) a line at every tenth, so that a long
     // reference is never silent.
     if (::isatty(STDERR_FILENO)) {
@@ -168,6 +209,13 @@ int run_reference(const ReferenceArgs& args) {
     ImageRGBA32F image = ref::render_reference(scene, options, &report);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     require_finite_image(image, "the reference image");
+    std::optional<FilterChange> filter_change;
+    if (args.measure_texels && options.filter.side() % 2 == 0) {
+        filter_change = measure_filter_change(scene, options, image);
+        std::printf("the box filter's change from %u to %u samples per pixel: relMSE %.3g (caustic layer %.3g)\n",
+                    filter_change->samples, options.filter.samples, filter_change->rel_mse,
+                    filter_change->caustic_rel_mse);
+    }
     char time[64], device[64];
     std::snprintf(time, sizeof time, "%.2f s, the whole image", seconds);
     std::snprintf(device, sizeof device, "CPU, %u threads", options.threads == 0 ? hardware : options.threads);
@@ -177,7 +225,7 @@ int run_reference(const ReferenceArgs& args) {
     std::printf("wrote %s (%ux%u, reference, layers RGBA, caustic, inscatter) in %.2f s\n", args.out.c_str(),
                 args.width, args.height, seconds);
     if (!args.manifest.empty()) {
-        record_in_manifest(args, seconds, image, report);
+        record_in_manifest(args, seconds, image, report, filter_change);
         std::printf("recorded in %s\n", args.manifest.c_str());
     }
     return kExitOk;
@@ -232,6 +280,10 @@ Run add_reference_command(CLI::App& app) {
                     },
                     "EVEN"))
         ->capture_default_str();
+    command->add_flag("--footprint-caustics", args->footprint_caustics,
+                      "Wavy water (not the FFT ocean): average the caustics each sample sees over its share of its "
+                      "pixel's footprint on the receiver (the exact beams, --cells-per-wavelength of them), not over "
+                      "a texel of the floor's map; the box-filtered references use it");
     command->add_flag("--measure-texels", args->measure_texels,
                       "Measure the caustics' texel against the pixels that read it (their footprints under the "
                       "water; the caustic layer at twice the texel) and record it with --manifest");
