@@ -8,12 +8,7 @@
 # slope between neighbouring points and the least-squares slope over the points; where the error
 # stops halving, the last value is the series' floor (the part the knob does not remove). Prints
 # Markdown (docs/accuracy.md keeps the tables). Minutes on 2 cores per scene.
-set -euo pipefail
-scene=$1
-reference=$2
-vkwater=${3:-build/tools/vkwater/vkwater}
-out=$(mktemp -d)
-trap 'rm -rf "$out"' EXIT
+source "$(dirname "$0")/scene_against_reference.sh"
 
 # render N ARGS...: prints "relMSE causticRelMSE" of one render against the reference.
 measure() {

@@ -8,12 +8,7 @@
 # sum of its sub-frames). BOX_REFERENCE: `vkwater reference SCENE --width 400 --height 300 --spp 16`.
 # Prints a Markdown table (docs/accuracy.md keeps one per scene). The times are one frame each
 # on a shared machine: read them as rough.
-set -euo pipefail
-scene=$1
-reference=$2
-vkwater=${3:-build/tools/vkwater/vkwater}
-out=$(mktemp -d)
-trap 'rm -rf "$out"' EXIT
+source "$(dirname "$0")/scene_against_reference.sh"
 echo "| kernel | map_scale | spp | relMSE | caustic relMSE | frame ms |"
 echo "| --- | --- | --- | --- | --- | --- |"
 settings=("adaptive 1 1" "adaptive 1 16" "adaptive 2 1" "adaptive 2 16" "adaptive 4 1" "adaptive 4 16"
