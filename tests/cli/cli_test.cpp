@@ -346,6 +346,10 @@ TEST(cli, TheReferenceMeasuresItsTexelsAgainstThePixels) {
     EXPECT_GE(fine["estimated_rel_mse"].get<double>(), change);
     expect_clean_failure(run_vkwater("reference " + kPool + " --floor-texels 33 --out " + scratch("odd.exr").string()),
                          1, "--floor-texels: 33 is odd (accepted: an even number from 16 to 16384)");
+    expect_clean_failure(
+        run_vkwater("reference " + kPool + " --footprint-caustics --out " + scratch("point.exr").string()), 1,
+        "--footprint-caustics: integrates over each stratum of a box filter (accepted: with --spp 4 or more, not "
+        "--spp 1)");
 }
 
 // A wave far shorter than the reference's beam maps can resolve is refused before any work (a

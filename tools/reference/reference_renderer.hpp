@@ -1,9 +1,11 @@
-// The CPU reference renderer: one ray through each pixel's centre (the real-time
-// renderer also evaluates at pixel centres), or with a box filter the mean of k x k rays
-// jittered within the pixel's strata (engine/scene/pixel_filter.hpp), traced exactly through the
-// model in double precision, on every core, deterministic (the jitter is a hash of the pixel). The image carries two layers: `caustic`, the sun's
-// irradiance on the receiver each pixel sees under the water, 0 elsewhere; `inscatter`, the
-// single-scattered radiance of the pixel's primary path in the water alone (PixelRadiance).
+// The CPU reference renderer: one ray through each pixel's centre (the real-time renderer also
+// evaluates at pixel centres), or with a box filter the mean of k x k rays jittered within the
+// pixel's strata by a hash of the pixel (engine/scene/pixel_filter.hpp; with
+// Quality::caustics_over_footprints the strata's centres, their caustics integrated over their
+// footprints), traced exactly through the model in double precision, on every core,
+// deterministic. The image carries two layers: `caustic`, the sun's irradiance on the receiver
+// each pixel sees under the water, 0 elsewhere; `inscatter`, the single-scattered radiance of
+// the pixel's primary path in the water alone (PixelRadiance).
 #pragma once
 
 #include "engine/image/image.hpp"

@@ -179,6 +179,14 @@ int run_reference(const ReferenceArgs& args) {
         options.threads = hardware;
     }
     options.filter = pixel_filter_from_spp(args.spp);
+    if (args.footprint_caustics && !options.filter.is_box()) {
+        // Over one sample the footprint would be the whole pixel's: a box-filtered caustic in a
+        // point-sampled image, which no comparison could name.
+        throw UserError(
+            "--footprint-caustics: integrates over each stratum of a box filter (accepted: with --spp 4 "
+            "or more, not --spp " +
+            std::to_string(args.spp) + ")");
+    }
     options.quality.caustic_in_scatter = true;  // the model's godrays under waves
     options.quality.cells_per_wavelength = args.cells_per_wavelength;
     options.quality.in_scatter_levels = args.in_scatter_planes;
