@@ -50,19 +50,25 @@ struct ReferenceArgs {
 // refinement (squared: a relative RMS change r is a relMSE of about r^2).
 constexpr double kClosedFormRelMse = 1e-18;
 
+// The relMSE of `test` against `reference`'s caustic layer; 0 where that layer is dark (the
+// flat scenes seen from above the water's reach), which relMSE, scaled by its mean, refuses.
+double caustic_layer_rel_mse(const metrics::RgbView& test, const ImageRGBA32F& reference) {
+    const metrics::RgbView caustic = metrics::layer_view(reference, "caustic");
+    double lit = 0.0;
+    for (size_t p = 0; p < caustic.pixel_count(); ++p) lit += caustic.channel(p, 0);
+    if (!(lit > 0.0)) return 0.0;
+    return metrics::rel_mse(test, caustic, metrics::counted_pixels(reference.width, reference.height, nullptr));
+}
+
 // How far the caustic layer moves one level coarser (its texel doubled, or half the beam cells),
 // as the caustic layer's relMSE (tools/metrics): the estimate of that resolution's share of the
 // reference's error, once the resolution is in its converging range (the change to twice the
 // texel then exceeds the error at the texel; a texel wider than the caustics' features changes
 // little on doubling, and the estimate says nothing there).
 double coarser_change_rel_mse(const ImageRGBA32F& image, const ref::ReferenceReport& report) {
-    const metrics::RgbView caustic = metrics::layer_view(image, "caustic");
-    metrics::RgbView doubled = caustic;
-    doubled.values = report.caustic_coarser.data();
-    const std::vector<size_t> pixels = metrics::counted_pixels(image.width, image.height, nullptr);
-    double mean = 0.0;
-    for (size_t p = 0; p < caustic.pixel_count(); ++p) mean += caustic.channel(p, 0);
-    return mean > 0.0 ? metrics::rel_mse(doubled, caustic, pixels) : 0.0;
+    metrics::RgbView coarser = metrics::layer_view(image, "caustic");
+    coarser.values = report.caustic_coarser.data();
+    return caustic_layer_rel_mse(coarser, image);
 }
 
 // The caustics' texel against the pixels that read it (ReferenceOptions::measure_texels).
@@ -102,10 +108,7 @@ FilterChange measure_filter_change(const Scene& scene, const ref::ReferenceOptio
     change.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::vector<size_t> pixels = metrics::counted_pixels(image.width, image.height, nullptr);
     change.rel_mse = metrics::rel_mse(metrics::rgb_view(other), metrics::rgb_view(image), pixels);
-    const metrics::RgbView caustic = metrics::layer_view(image, "caustic");
-    double lit = 0.0;
-    for (size_t p = 0; p < caustic.pixel_count(); ++p) lit += caustic.channel(p, 0);
-    change.caustic_rel_mse = lit > 0.0 ? metrics::rel_mse(metrics::layer_view(other, "caustic"), caustic, pixels) : 0.0;
+    change.caustic_rel_mse = caustic_layer_rel_mse(metrics::layer_view(other, "caustic"), image);
     return change;
 }
 
