@@ -16,6 +16,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "engine/core/errors.hpp"
+#include "engine/scene/json_text.hpp"
 
 namespace vkw {
 namespace {
@@ -150,10 +151,18 @@ private:
         const auto size = std::size_t(tinygltf::GetComponentSizeInBytes(uint32_t(accessor.componentType)));
         const std::size_t element = size * std::size_t(width);
         const std::size_t stride = view.byteStride != 0 ? view.byteStride : element;
-        const std::size_t end = accessor.count == 0 ? 0 : accessor.byteOffset + stride * (accessor.count - 1) + element;
-        if (end > view.byteLength || view.byteOffset + view.byteLength > data.size()) {
-            fail(what + ": " + name + " reaches past the end of its buffer");
-        }
+        // The view within its buffer and the accessor's last element within the view, in
+        // arithmetic that cannot wrap (a count or an offset near 2^64 once read outside the buffer).
+        const auto fits = [](uint64_t offset, uint64_t length, uint64_t limit) {
+            return offset <= limit && length <= limit - offset;
+        };
+        uint64_t span = 0;
+        const bool inside =
+            fits(view.byteOffset, view.byteLength, data.size()) &&
+            (accessor.count == 0 || (!__builtin_mul_overflow(uint64_t(stride), uint64_t(accessor.count - 1), &span) &&
+                                     !__builtin_add_overflow(span, uint64_t(element), &span) &&
+                                     fits(accessor.byteOffset, span, view.byteLength)));
+        if (!inside) fail(what + ": " + name + " reaches past the end of its buffer");
         std::vector<double> values;
         values.reserve(accessor.count * std::size_t(width));
         const unsigned char* base = data.data() + view.byteOffset + accessor.byteOffset;
@@ -209,6 +218,7 @@ private:
         if (!normals.empty() && normals.size() != positions.size()) fail(where + ": NORMAL and POSITION counts differ");
         if (!uvs.empty() && uvs.size() / 2 != count) fail(where + ": TEXCOORD_0 and POSITION counts differ");
         const std::vector<uint32_t> triangles = triangle_list(mode, vertex_order(primitive, count, where));
+        const auto first_index = uint32_t(mesh.indices.size());
 
         const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(transform)));
         const bool mirrored = glm::determinant(glm::dmat3(transform)) < 0.0;  // flips the winding
@@ -245,17 +255,45 @@ private:
                 push_vertex(i, n);
             }
         }
-        if (!material_found_ && primitive.material >= 0) take_material(mesh, primitive.material, where);
+        add_part(mesh, first_index, base_color(primitive.material, where));
+        if (!texture_found_ && primitive.material >= 0) take_texture(mesh, primitive.material, where);
     }
 
-    void take_material(Mesh& mesh, int index, const std::string& where) {
+    // The primitive's indices as a part of its material's colour, joined to the previous part
+    // when that has the same colour (a file of many primitives but few colours draws few parts).
+    static void add_part(Mesh& mesh, uint32_t first_index, const glm::dvec3& color) {
+        const auto count = uint32_t(mesh.indices.size()) - first_index;
+        if (count == 0) return;
+        if (!mesh.parts.empty() && mesh.parts.back().base_color == color) {
+            mesh.parts.back().index_count += count;
+            return;
+        }
+        mesh.parts.push_back({first_index, count, color});
+    }
+
+    // The metallic-roughness base colour factor of material `index` (glTF's default material,
+    // white, for a primitive without one): the Lambertian albedo the renderers apply once.
+    glm::dvec3 base_color(int index, const std::string& where) const {
+        if (index < 0) return glm::dvec3(1.0);
         if (std::size_t(index) >= model_.materials.size()) fail(where + ": no material " + std::to_string(index));
-        material_found_ = true;
+        const std::vector<double>& factor = model_.materials[std::size_t(index)].pbrMetallicRoughness.baseColorFactor;
+        if (factor.size() != 4) return glm::dvec3(1.0);
+        const glm::dvec3 color(factor[0], factor[1], factor[2]);
+        if (!(glm::all(glm::greaterThanEqual(color, glm::dvec3(0.0))) &&
+              glm::all(glm::lessThanEqual(color, glm::dvec3(1.0))))) {
+            fail("materials[" + std::to_string(index) + "].pbrMetallicRoughness.baseColorFactor [" +
+                 std::to_string(color.r) + ", " + std::to_string(color.g) + ", " + std::to_string(color.b) +
+                 "] is not a valid albedo (accepted: each of r, g, b in [0, 1])");
+        }
+        return color;
+    }
+
+    void take_texture(Mesh& mesh, int index, const std::string& where) {
+        if (std::size_t(index) >= model_.materials.size()) fail(where + ": no material " + std::to_string(index));
         const tinygltf::PbrMetallicRoughness& pbr = model_.materials[std::size_t(index)].pbrMetallicRoughness;
-        const std::vector<double>& factor = pbr.baseColorFactor;
-        if (factor.size() == 4) mesh.base_color = {factor[0], factor[1], factor[2], factor[3]};
         const int texture = pbr.baseColorTexture.index;
         if (texture < 0) return;
+        texture_found_ = true;
         if (std::size_t(texture) >= model_.textures.size()) fail(where + ": no texture " + std::to_string(texture));
         const int image = model_.textures[std::size_t(texture)].source;
         if (image < 0 || std::size_t(image) >= model_.images.size()) fail(where + ": texture without image");
@@ -267,7 +305,7 @@ private:
 
     const std::filesystem::path& file_;
     const tinygltf::Model& model_;
-    bool material_found_ = false;
+    bool texture_found_ = false;
     bool any_uvs_ = false;
 };
 
@@ -292,6 +330,49 @@ std::string read_bytes(const std::filesystem::path& file) {
     return bytes;
 }
 
+// The JSON of a .glb: its 12-byte header (magic "glTF", version 2, total length) and its first
+// chunk, which must be the JSON one; lengths are checked in 64 bits against the file's size, so
+// that no header can make a reader look outside the bytes.
+std::string_view glb_json(const std::string& bytes, const GltfReader& reader) {
+    const auto word = [&](std::size_t at) {
+        uint32_t value = 0;
+        std::memcpy(&value, bytes.data() + at, sizeof value);  // little-endian, as glTF and x86/ARM are
+        return value;
+    };
+    if (bytes.size() < 20) reader.fail("a .glb shorter than its 12-byte header and first chunk header");
+    if (word(4) != 2) reader.fail(".glb version " + std::to_string(word(4)) + " (accepted: 2)");
+    const uint64_t length = word(8), json_length = word(12);
+    if (length > bytes.size()) {
+        reader.fail(".glb header says " + std::to_string(length) + " bytes, the file has " +
+                    std::to_string(bytes.size()));
+    }
+    if (word(16) != 0x4E4F534Au) reader.fail(".glb's first chunk is not JSON");
+    if (20 + json_length > length) reader.fail(".glb's JSON chunk reaches past the file's length");
+    return std::string_view(bytes).substr(20, json_length);
+}
+
+// Checks the file's JSON before tinygltf parses it: tinygltf's parser recurses (deep nesting in
+// `extras` overflowed the stack), and it answers a required extension it lacks with a misleading
+// error about the data that extension would have decoded.
+void prescan_json(std::string_view json, const GltfReader& reader) {
+    const std::size_t depth = json_nesting_depth(json);
+    if (depth > kMaxJsonNesting) {
+        reader.fail("JSON nested " + std::to_string(depth) + " levels deep (accepted: at most " +
+                    std::to_string(kMaxJsonNesting) + ")");
+    }
+    const nlohmann::json document = nlohmann::json::parse(json, nullptr, false);
+    if (document.is_discarded() || !document.is_object()) return;  // tinygltf names the syntax error
+    const auto required = document.find("extensionsRequired");
+    if (required == document.end() || !required->is_array()) return;
+    for (const nlohmann::json& name : *required) {
+        // Every required extension changes how data is read (Draco and meshopt compress it); the
+        // loader implements none, and the specification asks a loader to refuse such a file.
+        const std::string text = name.is_string() ? name.get<std::string>() : std::string("?");
+        reader.fail("needs the glTF extension '" + text.substr(0, 64) +
+                    "' (extensionsRequired), which vkwater does not support");
+    }
+}
+
 }  // namespace
 
 Mesh load_gltf_mesh(const std::filesystem::path& file) {
@@ -301,12 +382,13 @@ Mesh load_gltf_mesh(const std::filesystem::path& file) {
     tinygltf::Model model;
     std::string error, warning;
     const std::string base_dir = file.parent_path().string();
+    GltfReader reader(file, model);
+    const bool binary = bytes.starts_with("glTF");  // the .glb magic
+    prescan_json(binary ? glb_json(bytes, reader) : std::string_view(bytes), reader);
     const auto length = static_cast<unsigned int>(bytes.size());
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-    const bool loaded = bytes.starts_with("glTF")  // the .glb magic
-                            ? loader.LoadBinaryFromMemory(&model, &error, &warning, data, length, base_dir)
-                            : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), length, base_dir);
-    GltfReader reader(file, model);
+    const bool loaded = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning, data, length, base_dir)
+                               : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), length, base_dir);
     if (!loaded) {
         // tinygltf's messages may span lines; a UserError is one line.
         const std::string reason = error.empty() ? "tinygltf refused it" : error.substr(0, error.find('\n'));

@@ -13,8 +13,9 @@ namespace vkw {
 // every mesh when the file has no scenes), with node transforms applied, merged into one Mesh
 // in the file's coordinates. Triangle lists, strips and fans are accepted (strips and fans become
 // lists); POINTS and LINES modes are refused. Missing normals are computed flat, as the glTF
-// specification asks. base_color and base_color_texture come from the material of the first
-// primitive that has one (one material per receiver). Texture images are not decoded here.
+// specification asks. Each primitive keeps its material's base colour factor (Mesh::parts;
+// glTF's default white without a material). base_color_texture comes from the first primitive
+// whose material has one; texture images are not decoded here, and no renderer samples them yet.
 //
 // Throws vkw::UserError naming the file for a file that cannot be read, malformed glTF,
 // unsupported content and out-of-bounds data: "glTF file '<path>': <what>".

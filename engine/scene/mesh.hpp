@@ -13,6 +13,14 @@
 
 namespace vkw {
 
+// Triangles that share one material: indices [first_index, first_index + index_count) of the
+// mesh, with their base colour (linear RGB, each in [0, 1]).
+struct MeshPart {
+    uint32_t first_index = 0;
+    uint32_t index_count = 0;
+    glm::dvec3 base_color{1.0};
+};
+
 struct Mesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;  // unit, one per position
@@ -20,8 +28,9 @@ struct Mesh {
     std::vector<uint32_t> indices;   // three per triangle
     glm::dvec3 bounds_min{0.0};
     glm::dvec3 bounds_max{0.0};
-    // glTF baseColorFactor (linear RGBA); white for the built-in shapes.
-    glm::dvec4 base_color{1.0, 1.0, 1.0, 1.0};
+    // A glTF file's materials: one part per primitive, in index order, covering every index;
+    // empty for the built-in shapes (the receiver's albedo colours them whole).
+    std::vector<MeshPart> parts;
     // The base colour texture: a path (an external image, resolved against the glTF file's
     // folder) or "<gltf path>#images[i]" for an image embedded in the glTF; empty for none.
     std::string base_color_texture;

@@ -30,7 +30,7 @@ constexpr std::array<Named<bool>, 2> kTextureUse = {{{"material", true}, {"none"
 constexpr std::array<std::string_view, 8> kShapeFields = {"half_size", "radius", "size", "resolution",
                                                           "height",    "seed",   "file", "texture"};
 
-Mesh read_gltf(FieldReader& fields, const std::filesystem::path& base_dir, std::optional<glm::dvec3>& albedo) {
+Mesh read_gltf(FieldReader& fields, const std::filesystem::path& base_dir, const std::optional<glm::dvec3>& albedo) {
     const auto file = fields.optional_string("file");
     const bool use_texture = fields.choice("texture", kTextureUse, true);
     fields.finish();
@@ -42,18 +42,13 @@ Mesh read_gltf(FieldReader& fields, const std::filesystem::path& base_dir, std::
         fields.fail("file", error.what());
     }
     if (!use_texture) mesh.base_color_texture.clear();
-    const glm::dvec3 base_color(mesh.base_color);
-    if (glm::any(glm::lessThan(base_color, glm::dvec3(0.0))) ||
-        glm::any(glm::greaterThan(base_color, glm::dvec3(1.0)))) {
-        fields.fail("file", "the material's baseColorFactor " + format_vec3(base_color) + " is not a valid albedo",
-                    "each component in [0, 1]");
-    }
-    if (!albedo) albedo = base_color;
+    // A given albedo replaces the materials' base colours (it does not multiply them).
+    if (albedo) mesh.parts.clear();
     return mesh;
 }
 
 Mesh read_shape(FieldReader& fields, ReceiverType type, const std::filesystem::path& base_dir,
-                std::optional<glm::dvec3>& albedo) {
+                const std::optional<glm::dvec3>& albedo) {
     switch (type) {
         case ReceiverType::Plane: return make_plane_mesh(fields.vec2("half_size", Range::positive_length()));
         case ReceiverType::Box: return make_box_mesh(fields.vec3("half_size", Range::positive_length()));
@@ -81,7 +76,7 @@ Receiver read_receiver(FieldReader& fields, const std::filesystem::path& base_di
     Receiver receiver;
     receiver.name = fields.string("name", fields.path_of(""));
     const auto type = fields.required_choice("type", kTypes);
-    std::optional<glm::dvec3> albedo = fields.optional_vec3("albedo", Range::closed(0.0, 1.0));
+    const std::optional<glm::dvec3> albedo = fields.optional_vec3("albedo", Range::closed(0.0, 1.0));
     const glm::dvec3 translation = fields.vec3("translation", Range::length(), glm::dvec3(0.0));
     const glm::dvec3 rotation = fields.vec3("rotation_deg", Range::closed(-360.0, 360.0, "degrees"), glm::dvec3(0.0));
     const glm::dvec3 scale =

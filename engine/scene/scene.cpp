@@ -11,6 +11,11 @@
 
 namespace vkw {
 
+std::vector<MeshPart> receiver_albedo_parts(const Receiver& receiver) {
+    if (!receiver.mesh.parts.empty()) return receiver.mesh.parts;
+    return {{0, static_cast<uint32_t>(receiver.mesh.indices.size()), receiver.albedo}};
+}
+
 uint32_t Water::drawn_mesh_resolution() const {
     return mesh_resolution.value_or(std::min(kDefaultWaterMeshResolution, grid_resolution));
 }

@@ -96,12 +96,17 @@ enum class ReceiverType : uint8_t { Plane, Box, Sphere, Terrain, Gltf };
 struct Receiver {
     std::string name;  // from the file; default: its field path, "receivers[2]"
     ReceiverType type = ReceiverType::Plane;
-    // Lambertian albedo in [0, 1]; multiplies the base colour texture when the mesh has one.
-    // Default: 0.5 grey, or the glTF material's baseColorFactor for a glTF mesh.
+    // Lambertian albedo in [0, 1] of the whole mesh where it has no parts: the built-in shapes
+    // (default 0.5 grey), and a glTF mesh given an `albedo`, which replaces its materials' base
+    // colours. A glTF mesh without one keeps its materials' colours (mesh.parts).
     glm::dvec3 albedo{0.5, 0.5, 0.5};
     glm::dmat4 object_to_world{1.0};  // translation * rotation * scale, as in the file
     Mesh mesh;                        // world space
 };
+
+// The receiver's triangles grouped by their Lambertian albedo, as both renderers shade them: the
+// mesh's material parts, or one part of `albedo` over every index.
+std::vector<MeshPart> receiver_albedo_parts(const Receiver& receiver);
 
 // effects.<name>.mode: auto lets the frame's needs decide; on and off force the decision.
 enum class EffectMode : uint8_t { Auto, On, Off };

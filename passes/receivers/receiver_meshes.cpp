@@ -22,9 +22,11 @@ ReceiverMeshes::ReceiverMeshes(const Context& context, const std::vector<Receive
     for (const Receiver& receiver : receivers) {
         const Mesh& mesh = receiver.mesh;
         if (mesh.indices.empty()) continue;
-        draws_.push_back({static_cast<uint32_t>(indices.size()), static_cast<uint32_t>(mesh.indices.size()),
-                          static_cast<int32_t>(vertices.size()),
-                          glm::vec3(receiver.albedo * glm::dvec3(mesh.base_color))});
+        // One draw per part: each with its own albedo, the mesh's vertices shared.
+        for (const MeshPart& part : receiver_albedo_parts(receiver)) {
+            draws_.push_back({static_cast<uint32_t>(indices.size()) + part.first_index, part.index_count,
+                              static_cast<int32_t>(vertices.size()), glm::vec3(part.base_color)});
+        }
         for (size_t i = 0; i < mesh.positions.size(); ++i) vertices.push_back({mesh.positions[i], mesh.normals[i]});
         indices.insert(indices.end(), mesh.indices.begin(), mesh.indices.end());
     }

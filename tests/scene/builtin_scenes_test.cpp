@@ -94,7 +94,9 @@ TEST(scene_builtin, LakeHasEveryReceiverType) {
     EXPECT_EQ(rock.type, ReceiverType::Gltf);
     EXPECT_EQ(rock.mesh.positions.size(), 240u);  // 80 flat-shaded triangles
     EXPECT_EQ(rock.mesh.indices.size(), 240u);
-    EXPECT_EQ(rock.albedo, glm::dvec3(0.45, 0.4, 0.35));  // the glTF material's base colour
+    ASSERT_EQ(rock.mesh.parts.size(), 1u);  // the glTF material's base colour, applied once
+    EXPECT_EQ(rock.mesh.parts[0].base_color, glm::dvec3(0.45 * 0.45, 0.4 * 0.4, 0.35 * 0.35));
+    EXPECT_EQ(rock.mesh.parts[0].index_count, 240u);
     EXPECT_LT(rock.mesh.bounds_min.y, level);
     EXPECT_GT(rock.mesh.bounds_max.y, level);
     EXPECT_EQ(scene.effects[Effect::CausticBlur].mode, EffectMode::On);

@@ -33,7 +33,10 @@ TEST(scene_gltf, IndexedMeshKeepsCountsAndBounds) {
     EXPECT_EQ(mesh.bounds_min, glm::dvec3(-1.0, 0.0, -1.0));
     EXPECT_EQ(mesh.bounds_max, glm::dvec3(1.0, 2.0, 1.0));
     EXPECT_EQ(mesh.normals[3], glm::vec3(0.0f, 1.0f, 0.0f));
-    EXPECT_EQ(mesh.base_color, glm::dvec4(1.0));  // no material: glTF's default white
+    ASSERT_EQ(mesh.parts.size(), 1u);  // no material: glTF's default white, over every index
+    EXPECT_EQ(mesh.parts[0].base_color, glm::dvec3(1.0));
+    EXPECT_EQ(mesh.parts[0].first_index, 0u);
+    EXPECT_EQ(mesh.parts[0].index_count, 18u);
     EXPECT_EQ(mesh.base_color_texture, "");
 }
 
@@ -78,8 +81,99 @@ TEST(scene_gltf, NodeTransformAndMaterialAreApplied) {
     const Mesh mesh = load_gltf_mesh(file);
     EXPECT_EQ(mesh.bounds_min, glm::dvec3(8.0, 0.0, -2.0));
     EXPECT_EQ(mesh.bounds_max, glm::dvec3(12.0, 4.0, 2.0));
-    EXPECT_EQ(mesh.base_color, glm::dvec4(0.25, 0.5, 0.75, 1.0));
+    ASSERT_EQ(mesh.parts.size(), 1u);
+    EXPECT_EQ(mesh.parts[0].base_color, glm::dvec3(0.25, 0.5, 0.75));
     EXPECT_EQ(mesh.base_color_texture, (file.parent_path() / "stone.png").string());
+}
+
+// Each primitive keeps its own material's base colour, applied once; primitives of one colour
+// share a part.
+TEST(scene_gltf, EachPrimitiveKeepsItsMaterialsColour) {
+    const std::filesystem::path dir = test::scratch_dir("two_materials");
+    const std::string grey = R"({ "pbrMetallicRoughness": { "baseColorFactor": [0.5, 0.5, 0.5, 1] } })";
+    const std::string blue = R"({ "pbrMetallicRoughness": { "baseColorFactor": [0.2, 0.4, 0.8, 1] } })";
+    const Mesh two = load_gltf_mesh(test::write_text(dir / "two.gltf", test::two_material_squares(grey + ", " + blue)));
+    ASSERT_EQ(two.parts.size(), 2u);
+    EXPECT_EQ(two.parts[0].first_index, 0u);
+    EXPECT_EQ(two.parts[0].index_count, 6u);
+    EXPECT_EQ(two.parts[0].base_color, glm::dvec3(0.5));
+    EXPECT_EQ(two.parts[1].first_index, 6u);
+    EXPECT_EQ(two.parts[1].index_count, 6u);
+    EXPECT_EQ(two.parts[1].base_color, glm::dvec3(0.2, 0.4, 0.8));
+    // Flat normals: every triangle's three vertices are its own, and the parts still cover them.
+    EXPECT_EQ(two.indices.size(), 12u);
+
+    const Mesh same =
+        load_gltf_mesh(test::write_text(dir / "same.gltf", test::two_material_squares(grey + ", " + grey)));
+    ASSERT_EQ(same.parts.size(), 1u);
+    EXPECT_EQ(same.parts[0].index_count, 12u);
+
+    const std::string bright = R"({ "pbrMetallicRoughness": { "baseColorFactor": [1.5, 0.4, 0.8, 1] } })";
+    const std::filesystem::path bad =
+        test::write_text(dir / "bad.gltf", test::two_material_squares(grey + ", " + bright));
+    EXPECT_EQ(load_error(bad),
+              "glTF file '" + bad.string() +
+                  "': materials[1].pbrMetallicRoughness.baseColorFactor [1.500000, 0.400000, 0.800000] "
+                  "is not a valid albedo (accepted: each of r, g, b in [0, 1])");
+}
+
+// A .glb of `json` (padded with spaces to 4 bytes, as the format asks) and no binary chunk,
+// declaring `version`.
+std::filesystem::path write_glb(const std::string& test_name, std::string json, uint32_t version) {
+    while (json.size() % 4 != 0) json += ' ';
+    std::string bytes = "glTF";
+    const auto word = [&](uint32_t value) { bytes.append(reinterpret_cast<const char*>(&value), 4); };
+    word(version);
+    word(uint32_t(20 + json.size()));
+    word(uint32_t(json.size()));
+    word(0x4E4F534Au);  // "JSON"
+    bytes += json;
+    return test::write_text(test::scratch_dir(test_name) / "mesh.glb", bytes);
+}
+
+TEST(scene_gltf, AGlbLoadsAndItsHeaderIsChecked) {
+    const std::string json = test::gltf_text(test::pyramid());
+    EXPECT_EQ(load_gltf_mesh(write_glb("glb", json, 2)).indices.size(), 18u);
+    for (const uint32_t version : {1u, 99u}) {
+        const std::filesystem::path file = write_glb("glb_version", json, version);
+        EXPECT_EQ(load_error(file),
+                  "glTF file '" + file.string() + "': .glb version " + std::to_string(version) + " (accepted: 2)");
+    }
+}
+
+// Nesting that overflowed tinygltf's recursive parser (10^5 arrays in `extras`) is refused before
+// it parses anything.
+TEST(scene_gltf, DeepNestingIsRefusedBeforeParsing) {
+    GltfSpec spec = test::pyramid();
+    constexpr int kDepth = 100000;
+    spec.top_extra = " \"extras\": " + std::string(kDepth, '[') + std::string(kDepth, ']') + ",";
+    const std::filesystem::path file = write_gltf("deep", spec);
+    EXPECT_EQ(load_error(file), "glTF file '" + file.string() + "': JSON nested " + std::to_string(kDepth + 1) +
+                                    " levels deep (accepted: at most 64)");
+}
+
+// A required extension is named, not reported as the broken data it would have decoded.
+TEST(scene_gltf, ARequiredExtensionIsRefusedByName) {
+    GltfSpec spec = test::pyramid();
+    spec.top_extra = R"( "extensionsUsed": ["KHR_draco_mesh_compression"],
+                         "extensionsRequired": ["KHR_draco_mesh_compression"],)";
+    const std::filesystem::path file = write_gltf("draco", spec);
+    EXPECT_EQ(load_error(file), "glTF file '" + file.string() +
+                                    "': needs the glTF extension 'KHR_draco_mesh_compression' (extensionsRequired), "
+                                    "which vkwater does not support");
+}
+
+// Sizes whose products or sums wrap around 2^64 are refused, not read outside the buffer (an
+// accessor count of 2^61 + 1 once read far past it; ASan saw the read).
+TEST(scene_gltf, AccessorSizesThatWrapAreRefused) {
+    std::string text = test::gltf_text(test::pyramid());
+    const std::string count = R"("count": 5,)";
+    ASSERT_NE(text.find(count), std::string::npos);
+    text.replace(text.find(count), count.size(), R"("count": 2305843009213693953,)");
+    const std::filesystem::path file = test::write_text(test::scratch_dir("wrap") / "mesh.gltf", text);
+    const std::string message = load_error(file);
+    EXPECT_TRUE(message.starts_with("glTF file '" + file.string() + "': ")) << message;
+    EXPECT_NE(message.find("reaches past the end of its buffer"), std::string::npos) << message;
 }
 
 TEST(scene_gltf, PointsAndLinesAreRefusedNamingFileMeshAndMode) {
@@ -126,7 +220,12 @@ TEST(scene_gltf, ReceiverFileIsRelativeToTheSceneFile) {
     ASSERT_EQ(scene.receivers.size(), 1u);
     const Receiver& receiver = scene.receivers[0];
     EXPECT_EQ(receiver.name, "receivers[0]");
-    EXPECT_EQ(receiver.albedo, glm::dvec3(0.2, 0.3, 0.4));  // given: overrides the material's white
+    EXPECT_EQ(receiver.albedo, glm::dvec3(0.2, 0.3, 0.4));  // given: replaces the material's white
+    EXPECT_TRUE(receiver.mesh.parts.empty());
+    const std::vector<MeshPart> parts = receiver_albedo_parts(receiver);
+    ASSERT_EQ(parts.size(), 1u);
+    EXPECT_EQ(parts[0].base_color, glm::dvec3(0.2, 0.3, 0.4));
+    EXPECT_EQ(parts[0].index_count, 18u);
     EXPECT_EQ(receiver.mesh.bounds_min, glm::dvec3(-1.0, -1.0, -1.0));
     EXPECT_EQ(receiver.mesh.bounds_max, glm::dvec3(1.0, 1.0, 1.0));
 }

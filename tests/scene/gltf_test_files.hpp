@@ -97,6 +97,28 @@ inline std::string gltf_text(const GltfSpec& spec) {
            R"(" }] })";
 }
 
+// Two squares in y = 0 facing +y, side by side: x in [-1, 0] (primitive 0, material 0) and
+// x in [0, 1] (primitive 1, material 1), z in [-1, 1]; `materials` is the materials array's
+// contents (two objects). Six indices per primitive, in one buffer of positions then indices.
+inline std::string two_material_squares(const std::string& materials) {
+    std::vector<unsigned char> data;
+    append_bytes(data, std::vector<float>{-1, 0, -1, -1, 0, 1, 0, 0, 1, 0, 0, -1,    // left square
+                                          0,  0, -1, 0,  0, 1, 1, 0, 1, 1, 0, -1});  // right square
+    append_bytes(data, std::vector<uint16_t>{0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7});
+    return R"({ "asset": { "version": "2.0" }, "scene": 0, "scenes": [{ "nodes": [0] }], "nodes": [{ "mesh": 0 }],
+  "meshes": [{ "primitives": [{ "attributes": { "POSITION": 0 }, "indices": 1, "material": 0 },
+                              { "attributes": { "POSITION": 0 }, "indices": 2, "material": 1 }] }],
+  "materials": [)" +
+           materials + R"(],
+  "accessors": [{ "bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
+                  "min": [-1, 0, -1], "max": [1, 0, 1] },
+                { "bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR" },
+                { "bufferView": 1, "byteOffset": 12, "componentType": 5123, "count": 6, "type": "SCALAR" }],
+  "bufferViews": [{ "buffer": 0, "byteOffset": 0, "byteLength": 96 }, { "buffer": 0, "byteOffset": 96, "byteLength": 24 }],
+  "buffers": [{ "byteLength": 120, "uri": "data:application/octet-stream;base64,)" +
+           base64(data) + R"(" }] })";
+}
+
 // A fresh folder for one test's files.
 inline std::filesystem::path scratch_dir(const std::string& name) {
     const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / ("vkwater_scene_" + name);

@@ -51,7 +51,8 @@ TriangleBvh::TriangleBvh(const std::vector<const Mesh*>& meshes) {
             const uint32_t ia = mesh.indices[i], ib = mesh.indices[i + 1], ic = mesh.indices[i + 2];
             triangles_.push_back({glm::dvec3(mesh.positions[ia]), glm::dvec3(mesh.positions[ib]),
                                   glm::dvec3(mesh.positions[ic]), glm::dvec3(mesh.normals[ia]),
-                                  glm::dvec3(mesh.normals[ib]), glm::dvec3(mesh.normals[ic]), receiver});
+                                  glm::dvec3(mesh.normals[ib]), glm::dvec3(mesh.normals[ic]), receiver,
+                                  static_cast<uint32_t>(i / 3)});
         }
     }
     if (!triangles_.empty()) build(0, static_cast<uint32_t>(triangles_.size()));
@@ -120,7 +121,7 @@ std::optional<TriangleHit> TriangleBvh::closest_hit(const Ray& ray, double max_d
         const double u = hit.y, v = hit.z;
         glm::dvec3 normal = glm::normalize((1.0 - u - v) * tri.na + u * tri.nb + v * tri.nc);
         if (glm::dot(normal, ray.direction) > 0.0) normal = -normal;
-        best = TriangleHit{hit.x, tri.receiver, normal};
+        best = TriangleHit{hit.x, tri.receiver, tri.triangle, normal};
         return false;
     });
     return best;

@@ -21,6 +21,7 @@ struct Ray {
 struct TriangleHit {
     double distance;
     uint32_t receiver;  // index of the mesh it belongs to
+    uint32_t triangle;  // its index in that mesh (indices 3 triangle .. 3 triangle + 2)
     glm::dvec3 normal;  // interpolated shading normal, unit, facing the ray
 };
 
@@ -38,6 +39,7 @@ private:
         glm::dvec3 a, b, c;     // positions
         glm::dvec3 na, nb, nc;  // vertex normals
         uint32_t receiver;
+        uint32_t triangle;
     };
     struct Node {
         glm::dvec3 lo, hi;

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 #include <numbers>
 
@@ -38,10 +39,10 @@ WaterTransport::WaterTransport(const Scene& scene, const Quality& quality)
     transform_mesh(floor, glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, scene.floor.height, 0.0)));
     extra_meshes_.push_back(std::move(floor));
     std::vector<const Mesh*> meshes{&extra_meshes_[0]};
-    albedo_.push_back(scene.floor.albedo);
+    albedo_parts_.push_back({{0, static_cast<uint32_t>(extra_meshes_[0].indices.size()), scene.floor.albedo}});
     for (const Receiver& receiver : scene.receivers) {
         meshes.push_back(&receiver.mesh);
-        albedo_.push_back(receiver.albedo * glm::dvec3(receiver.mesh.base_color));
+        albedo_parts_.push_back(receiver_albedo_parts(receiver));
     }
     bvh_ = std::make_unique<TriangleBvh>(meshes);
 
@@ -313,7 +314,16 @@ bool WaterTransport::in_water(const glm::dvec3& p) const {
 std::optional<WaterTransport::SurfaceHit> WaterTransport::closest_receiver(const Ray& ray, double max_distance) const {
     const auto hit = bvh_->closest_hit(ray, max_distance);
     if (!hit) return std::nullopt;
-    return SurfaceHit{hit->distance, albedo_[hit->receiver], hit->normal};
+    return SurfaceHit{hit->distance, albedo_of(hit->receiver, hit->triangle), hit->normal};
+}
+
+glm::dvec3 WaterTransport::albedo_of(uint32_t receiver, uint32_t triangle) const {
+    const std::vector<MeshPart>& parts = albedo_parts_[receiver];
+    const uint32_t index = 3 * triangle;
+    // The last part that starts at or before the triangle's first index (parts are in index order).
+    const auto after = std::upper_bound(parts.begin(), parts.end(), index,
+                                        [](uint32_t i, const MeshPart& part) { return i < part.first_index; });
+    return after == parts.begin() ? parts.front().base_color : std::prev(after)->base_color;
 }
 
 bool WaterTransport::sun_blocked_in_air(const glm::dvec3& point) const {

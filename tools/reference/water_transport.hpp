@@ -170,7 +170,9 @@ private:
 
     const Scene& scene_;
     std::vector<Mesh> extra_meshes_;  // the floor as a mesh
-    std::vector<glm::dvec3> albedo_;  // per receiver index of the BVH
+    // Per receiver index of the BVH, its triangles' albedo by index range (receiver_albedo_parts).
+    std::vector<std::vector<MeshPart>> albedo_parts_;
+    glm::dvec3 albedo_of(uint32_t receiver, uint32_t triangle) const;
     std::unique_ptr<TriangleBvh> bvh_;
     double level_ = 0.0, half_extent_ = 0.0, bottom_ = 0.0, ior_ = 1.0;
     bool has_water_ = false;
