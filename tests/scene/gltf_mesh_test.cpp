@@ -164,7 +164,7 @@ TEST(scene_gltf, ARequiredExtensionIsRefusedByName) {
 }
 
 // Sizes whose products or sums wrap around 2^64 are refused, not read outside the buffer (an
-// accessor count of 2^61 + 1 once read far past it; ASan saw the read).
+// accessor count of 2^61 + 1 once read far past it; ASan saw the read), and so are offsets.
 TEST(scene_gltf, AccessorSizesThatWrapAreRefused) {
     std::string text = test::gltf_text(test::pyramid());
     const std::string count = R"("count": 5,)";
@@ -174,6 +174,16 @@ TEST(scene_gltf, AccessorSizesThatWrapAreRefused) {
     const std::string message = load_error(file);
     EXPECT_TRUE(message.starts_with("glTF file '" + file.string() + "': ")) << message;
     EXPECT_NE(message.find("reaches past the end of its buffer"), std::string::npos) << message;
+
+    // A bufferView offset of 2^64 - 16 once read 16 bytes before the buffer and exited 0.
+    text = test::gltf_text(test::pyramid());
+    const std::string offset = R"("byteOffset": 0, "byteLength")";
+    ASSERT_NE(text.find(offset), std::string::npos);
+    text.replace(text.find(offset), offset.size(), R"("byteOffset": 18446744073709551600, "byteLength")");
+    const std::filesystem::path before = test::write_text(test::scratch_dir("wrap_offset") / "mesh.gltf", text);
+    const std::string before_message = load_error(before);
+    EXPECT_TRUE(before_message.starts_with("glTF file '" + before.string() + "': ")) << before_message;
+    EXPECT_NE(before_message.find("reaches past the end of its buffer"), std::string::npos) << before_message;
 }
 
 TEST(scene_gltf, PointsAndLinesAreRefusedNamingFileMeshAndMode) {
