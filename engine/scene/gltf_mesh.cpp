@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -351,6 +352,36 @@ std::string_view glb_json(const std::string& bytes, const GltfReader& reader) {
     return std::string_view(bytes).substr(20, json_length);
 }
 
+// Buffers embedded as data URIs: the two MIME types glTF names for them and whole base64
+// (tinygltf took a wrong type and a payload without its padding).
+void check_data_uris(const nlohmann::json& document, const GltfReader& reader) {
+    const auto buffers = document.find("buffers");
+    if (buffers == document.end() || !buffers->is_array()) return;
+    for (std::size_t i = 0; i < buffers->size(); ++i) {
+        const nlohmann::json& buffer = (*buffers)[i];
+        if (!buffer.is_object() || !buffer.contains("uri") || !buffer["uri"].is_string()) continue;
+        const std::string& uri = buffer["uri"].get_ref<const std::string&>();
+        if (!uri.starts_with("data:")) continue;
+        const std::string name = "buffers[" + std::to_string(i) + "].uri";
+        const std::size_t comma = uri.find(',');
+        const std::string header = uri.substr(0, std::min(comma, std::size_t(64)));
+        if (comma == std::string::npos ||
+            (header != "data:application/octet-stream;base64" && header != "data:application/gltf-buffer;base64")) {
+            reader.fail(name + ": a data URI starting '" + header +
+                        "' (accepted: data:application/octet-stream;base64, or data:application/gltf-buffer;base64,)");
+        }
+        const std::string_view payload = std::string_view(uri).substr(comma + 1);
+        const std::size_t text = payload.find_last_not_of('=') + 1;
+        const bool digits = std::all_of(payload.begin(), payload.begin() + std::ptrdiff_t(text), [](char c) {
+            return std::isalnum(static_cast<unsigned char>(c)) || c == '+' || c == '/';
+        });
+        if (payload.size() % 4 != 0 || payload.size() - text > 2 || !digits) {
+            reader.fail(name + ": the data URI's base64 is malformed (" + std::to_string(payload.size()) +
+                        " characters; accepted: A-Z a-z 0-9 + /, padded with = to a multiple of 4)");
+        }
+    }
+}
+
 // Checks the file's JSON before tinygltf parses it: tinygltf's parser recurses (deep nesting in
 // `extras` overflowed the stack), and it answers a required extension it lacks with a misleading
 // error about the data that extension would have decoded.
@@ -360,8 +391,13 @@ void prescan_json(std::string_view json, const GltfReader& reader) {
         reader.fail("JSON nested " + std::to_string(depth) + " levels deep (accepted: at most " +
                     std::to_string(kMaxJsonNesting) + ")");
     }
+    const std::size_t nul = json.find('\0');
+    if (nul != std::string_view::npos) {
+        reader.fail("a NUL byte at byte " + std::to_string(nul) + " of the JSON (glTF JSON is UTF-8 text)");
+    }
     const nlohmann::json document = nlohmann::json::parse(json, nullptr, false);
     if (document.is_discarded() || !document.is_object()) return;  // tinygltf names the syntax error
+    check_data_uris(document, reader);
     const auto required = document.find("extensionsRequired");
     if (required == document.end() || !required->is_array()) return;
     for (const nlohmann::json& name : *required) {

@@ -186,6 +186,36 @@ TEST(scene_gltf, AccessorSizesThatWrapAreRefused) {
     EXPECT_NE(before_message.find("reaches past the end of its buffer"), std::string::npos) << before_message;
 }
 
+// What tinygltf accepted: a NUL byte after the JSON, a data URI of another MIME type, base64
+// without its padding.
+TEST(scene_gltf, NulBytesAndMalformedDataUrisAreRefused) {
+    const std::string text = test::gltf_text(test::pyramid());
+    const std::filesystem::path dir = test::scratch_dir("data_uris");
+    const std::filesystem::path nul = test::write_text(dir / "nul.gltf", text + std::string(1, '\0'));
+    EXPECT_EQ(load_error(nul), "glTF file '" + nul.string() + "': a NUL byte at byte " + std::to_string(text.size()) +
+                                   " of the JSON (glTF JSON is UTF-8 text)");
+
+    std::string mime = text;
+    const std::string type = "data:application/octet-stream;base64,";
+    ASSERT_NE(mime.find(type), std::string::npos);
+    mime.replace(mime.find(type), type.size(), "data:text/plain;base64,");
+    const std::filesystem::path wrong_type = test::write_text(dir / "mime.gltf", mime);
+    EXPECT_EQ(load_error(wrong_type),
+              "glTF file '" + wrong_type.string() +
+                  "': buffers[0].uri: a data URI starting 'data:text/plain;base64' (accepted: "
+                  "data:application/octet-stream;base64, or data:application/gltf-buffer;base64,)");
+
+    // The pyramid's buffer is 60 + 36 = 96 bytes, 128 base64 digits with no padding: drop one.
+    std::string unpadded = text;
+    const std::size_t end = unpadded.find("\" }] }");
+    ASSERT_NE(end, std::string::npos);
+    unpadded.erase(end - 1, 1);
+    const std::filesystem::path short_payload = test::write_text(dir / "unpadded.gltf", unpadded);
+    EXPECT_EQ(load_error(short_payload), "glTF file '" + short_payload.string() +
+                                             "': buffers[0].uri: the data URI's base64 is malformed (127 characters; "
+                                             "accepted: A-Z a-z 0-9 + /, padded with = to a multiple of 4)");
+}
+
 TEST(scene_gltf, PointsAndLinesAreRefusedNamingFileMeshAndMode) {
     GltfSpec spec = test::pyramid();
     spec.mode = 0;
