@@ -18,6 +18,7 @@
 
 #include "engine/core/errors.hpp"
 #include "engine/scene/json_text.hpp"
+#include "engine/scene/range.hpp"
 
 namespace vkw {
 namespace {
@@ -282,9 +283,8 @@ private:
         const glm::dvec3 color(factor[0], factor[1], factor[2]);
         if (!(glm::all(glm::greaterThanEqual(color, glm::dvec3(0.0))) &&
               glm::all(glm::lessThanEqual(color, glm::dvec3(1.0))))) {
-            fail("materials[" + std::to_string(index) + "].pbrMetallicRoughness.baseColorFactor [" +
-                 std::to_string(color.r) + ", " + std::to_string(color.g) + ", " + std::to_string(color.b) +
-                 "] is not a valid albedo (accepted: each of r, g, b in [0, 1])");
+            fail("materials[" + std::to_string(index) + "].pbrMetallicRoughness.baseColorFactor " + format_vec3(color) +
+                 " is not a valid albedo (accepted: each of r, g, b in [0, 1])");
         }
         return color;
     }

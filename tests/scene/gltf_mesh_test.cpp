@@ -111,10 +111,9 @@ TEST(scene_gltf, EachPrimitiveKeepsItsMaterialsColour) {
     const std::string bright = R"({ "pbrMetallicRoughness": { "baseColorFactor": [1.5, 0.4, 0.8, 1] } })";
     const std::filesystem::path bad =
         test::write_text(dir / "bad.gltf", test::two_material_squares(grey + ", " + bright));
-    EXPECT_EQ(load_error(bad),
-              "glTF file '" + bad.string() +
-                  "': materials[1].pbrMetallicRoughness.baseColorFactor [1.500000, 0.400000, 0.800000] "
-                  "is not a valid albedo (accepted: each of r, g, b in [0, 1])");
+    EXPECT_EQ(load_error(bad), "glTF file '" + bad.string() +
+                                   "': materials[1].pbrMetallicRoughness.baseColorFactor [1.5, 0.4, 0.8] "
+                                   "is not a valid albedo (accepted: each of r, g, b in [0, 1])");
 }
 
 // A .glb of `json` (padded with spaces to 4 bytes, as the format asks) and no binary chunk,
