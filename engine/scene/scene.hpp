@@ -190,7 +190,7 @@ struct CausticSettings {
 struct CausticBlurSettings {
     // r0, texels of the caustic map: the blur's radius where photons are as dense as under flat
     // water; it grows as sqrt(E_flat / E) where they are sparser, up to 4 (passes/caustics/caustics_blur.hpp).
-    // 0 (the default): no blur, and the rule leaves the passes out. Measured on pool (README,
+    // 0 (the default): no blur, and the rule leaves the passes out. Measured on pool (docs/methods.md,
     // Caustics): with the adaptive splat kernel any blur adds error (relMSE 0.0489 -> 0.0505 at
     // 0.5); with the bilinear kernel 0.5 helps (0.0572 -> 0.0511).
     double radius = 0.0;

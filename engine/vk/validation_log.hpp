@@ -12,11 +12,11 @@ namespace vkw {
 
 struct AcceptedWarning {
     const char* message_id;  // the layer's VUID / message id name
-    const char* reason;      // why it is harmless for vkwater (also listed in the README)
+    const char* reason;      // why it is harmless for vkwater (also listed in docs/testing.md)
 };
 
 // Empty today: no performance warning is accepted. Add one only with its reason,
-// and list it in the README's "Validation" section too.
+// and list it in docs/testing.md, "Validation", too.
 inline constexpr std::array<AcceptedWarning, 0> kAcceptedPerformanceWarnings{};
 
 class ValidationLog {
