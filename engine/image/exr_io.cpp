@@ -4,6 +4,7 @@
 
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfCheckFile.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
@@ -35,6 +36,11 @@ using ChannelNames = std::span<const char* const>;
 
 constexpr std::array<const char*, 4> kRgba = {"R", "G", "B", "A"};
 constexpr std::array<const char*, 3> kRgb = {"R", "G", "B"};
+
+// The largest side read: the largest image any vkwater command writes (--width, --height). A
+// larger declared size is refused before a pixel is allocated (a 20000 x 20000 header would
+// otherwise take 6.4 GB of float RGBA).
+constexpr std::int64_t kMaxReadSide = 16384;
 
 // Largest finite half; anything bigger would become infinity when converted.
 constexpr float kHalfMax = 65504.0f;
@@ -171,6 +177,10 @@ ImageRGBA32F read_pixels(const std::filesystem::path& path, Imf::InputFile& file
     if (width <= 0 || height <= 0 || width > INT_MAX || height > INT_MAX) {
         fail("invalid data window " + std::to_string(width) + "x" + std::to_string(height));
     }
+    if (width > kMaxReadSide || height > kMaxReadSide) {
+        fail("declares " + std::to_string(width) + "x" + std::to_string(height) +
+             " pixels (accepted: each side at most " + std::to_string(kMaxReadSide) + ")");
+    }
 
     const Imf::ChannelList& channels = file.header().channels();
     for (const char* name : kRgb) {
@@ -217,6 +227,11 @@ ImageRGBA32F read_exr(const std::filesystem::path& path) {
     // Checking the magic number first gives "not an OpenEXR file" instead of a library message.
     if (!Imf::isOpenExrFile(path.c_str())) {
         throw UserError("cannot read " + quoted_path(path) + ": not an OpenEXR file");
+    }
+    // OpenEXR's own validator reads every part of the file with bounded memory and time; the
+    // library's readers trust what a header declares, so a corrupt file is refused here first.
+    if (Imf::checkOpenEXRFile(path.c_str(), /*reduceMemory=*/true, /*reduceTime=*/true)) {
+        throw UserError("cannot read " + quoted_path(path) + ": a corrupt or truncated OpenEXR file");
     }
     try {
         Imf::InputFile file(path.c_str());

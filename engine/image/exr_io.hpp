@@ -29,7 +29,8 @@ ExrWriteReport write_exr(const std::filesystem::path& path, const ImageRGBA32F& 
 // that has any of "<name>.R/G/B" (missing ones read as 0); layers come back sorted by name, and
 // the header's string attributes as attributes, sorted by name.
 // The data window's top-left corner becomes pixel (0, 0).
-// Throws UserError (one line naming the path) for a missing, unreadable or malformed file.
+// Throws UserError (one line naming the path) for a missing, unreadable, corrupt or truncated file,
+// and for one that declares more than 16384 pixels a side (refused before any pixel is allocated).
 ImageRGBA32F read_exr(const std::filesystem::path& path);
 
 }  // namespace vkw

@@ -17,6 +17,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "engine/core/errors.hpp"
+#include "engine/scene/file_scope.hpp"
 #include "engine/scene/json_text.hpp"
 #include "engine/scene/range.hpp"
 
@@ -382,10 +383,35 @@ void check_data_uris(const nlohmann::json& document, const GltfReader& reader) {
     }
 }
 
+// Every buffer and image URI that names a file must stay inside the scene's folder tree (tinygltf
+// would open "../../etc/passwd" as readily as "rock.bin"). Checked as written and decoded, since
+// tinygltf decodes %XX escapes before it opens the file.
+void check_file_uris(const nlohmann::json& document, const std::filesystem::path& file, const FileScope& scope,
+                     const GltfReader& reader) {
+    for (const char* array : {"buffers", "images"}) {
+        const auto entries = document.find(array);
+        if (entries == document.end() || !entries->is_array()) continue;
+        for (std::size_t i = 0; i < entries->size(); ++i) {
+            const nlohmann::json& entry = (*entries)[i];
+            if (!entry.is_object() || !entry.contains("uri") || !entry["uri"].is_string()) continue;
+            const std::string& uri = entry["uri"].get_ref<const std::string&>();
+            if (uri.starts_with("data:")) continue;
+            const std::string name = std::string(array) + "[" + std::to_string(i) + "].uri";
+            try {
+                scope.resolve(file.parent_path(), uri, name);
+                scope.resolve(file.parent_path(), decode_uri_escapes(uri), name, uri);
+            } catch (const UserError& error) {
+                reader.fail(error.what());
+            }
+        }
+    }
+}
+
 // Checks the file's JSON before tinygltf parses it: tinygltf's parser recurses (deep nesting in
 // `extras` overflowed the stack), and it answers a required extension it lacks with a misleading
 // error about the data that extension would have decoded.
-void prescan_json(std::string_view json, const GltfReader& reader) {
+void prescan_json(std::string_view json, const std::filesystem::path& file, const FileScope& scope,
+                  const GltfReader& reader) {
     const std::size_t depth = json_nesting_depth(json);
     if (depth > kMaxJsonNesting) {
         reader.fail("JSON nested " + std::to_string(depth) + " levels deep (accepted: at most " +
@@ -398,6 +424,7 @@ void prescan_json(std::string_view json, const GltfReader& reader) {
     const nlohmann::json document = nlohmann::json::parse(json, nullptr, false);
     if (document.is_discarded() || !document.is_object()) return;  // tinygltf names the syntax error
     check_data_uris(document, reader);
+    check_file_uris(document, file, scope, reader);
     const auto required = document.find("extensionsRequired");
     if (required == document.end() || !required->is_array()) return;
     for (const nlohmann::json& name : *required) {
@@ -411,7 +438,9 @@ void prescan_json(std::string_view json, const GltfReader& reader) {
 
 }  // namespace
 
-Mesh load_gltf_mesh(const std::filesystem::path& file) {
+Mesh load_gltf_mesh(const std::filesystem::path& file) { return load_gltf_mesh(file, FileScope(file, false)); }
+
+Mesh load_gltf_mesh(const std::filesystem::path& file, const FileScope& scope) {
     const std::string bytes = read_bytes(file);
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&skip_image, nullptr);
@@ -420,7 +449,7 @@ Mesh load_gltf_mesh(const std::filesystem::path& file) {
     const std::string base_dir = file.parent_path().string();
     GltfReader reader(file, model);
     const bool binary = bytes.starts_with("glTF");  // the .glb magic
-    prescan_json(binary ? glb_json(bytes, reader) : std::string_view(bytes), reader);
+    prescan_json(binary ? glb_json(bytes, reader) : std::string_view(bytes), file, scope, reader);
     const auto length = static_cast<unsigned int>(bytes.size());
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
     const bool loaded = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning, data, length, base_dir)

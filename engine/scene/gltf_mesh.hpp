@@ -9,6 +9,8 @@
 
 namespace vkw {
 
+class FileScope;
+
 // Every mesh instanced by the nodes of the default scene (the first scene when none is named,
 // every mesh when the file has no scenes), with node transforms applied, merged into one Mesh
 // in the file's coordinates. Triangle lists, strips and fans are accepted (strips and fans become
@@ -18,7 +20,10 @@ namespace vkw {
 // whose material has one; texture images are not decoded here, and no renderer samples them yet.
 //
 // Throws vkw::UserError naming the file for a file that cannot be read, malformed glTF,
-// unsupported content and out-of-bounds data: "glTF file '<path>': <what>".
+// unsupported content and out-of-bounds data: "glTF file '<path>': <what>". The buffers and
+// images the file names must resolve inside `scope` (the scene's folder tree, file_scope.hpp);
+// without a scope, inside the glTF file's own folder tree.
+Mesh load_gltf_mesh(const std::filesystem::path& file, const FileScope& scope);
 Mesh load_gltf_mesh(const std::filesystem::path& file);
 
 }  // namespace vkw

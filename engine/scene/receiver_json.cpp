@@ -9,6 +9,7 @@
 #include "engine/core/errors.hpp"
 #include "engine/scene/angles.hpp"
 #include "engine/scene/builtin_meshes.hpp"
+#include "engine/scene/file_scope.hpp"
 #include "engine/scene/gltf_mesh.hpp"
 #include "engine/scene/scene_json.hpp"
 
@@ -30,14 +31,14 @@ constexpr std::array<Named<bool>, 2> kTextureUse = {{{"material", true}, {"none"
 constexpr std::array<std::string_view, 8> kShapeFields = {"half_size", "radius", "size", "resolution",
                                                           "height",    "seed",   "file", "texture"};
 
-Mesh read_gltf(FieldReader& fields, const std::filesystem::path& base_dir, const std::optional<glm::dvec3>& albedo) {
+Mesh read_gltf(FieldReader& fields, const FileScope& scope, const std::optional<glm::dvec3>& albedo) {
     const auto file = fields.optional_string("file");
     const bool use_texture = fields.choice("texture", kTextureUse, true);
     fields.finish();
     if (!file) fields.fail("file", "missing required field", "a glTF 2.0 file (.gltf or .glb), relative to the scene");
     Mesh mesh;
     try {
-        mesh = load_gltf_mesh(base_dir / *file);
+        mesh = load_gltf_mesh(scope.resolve(scope.scene_folder(), *file, "the glTF file"), scope);
     } catch (const UserError& error) {
         fields.fail("file", error.what());
     }
@@ -47,7 +48,7 @@ Mesh read_gltf(FieldReader& fields, const std::filesystem::path& base_dir, const
     return mesh;
 }
 
-Mesh read_shape(FieldReader& fields, ReceiverType type, const std::filesystem::path& base_dir,
+Mesh read_shape(FieldReader& fields, ReceiverType type, const FileScope& scope,
                 const std::optional<glm::dvec3>& albedo) {
     switch (type) {
         case ReceiverType::Plane: return make_plane_mesh(fields.vec2("half_size", Range::positive_length()));
@@ -65,14 +66,14 @@ Mesh read_shape(FieldReader& fields, ReceiverType type, const std::filesystem::p
             fields.finish();  // no mesh from placeholders of missing fields
             return make_terrain_mesh(shape);
         }
-        case ReceiverType::Gltf: return read_gltf(fields, base_dir, albedo);
+        case ReceiverType::Gltf: return read_gltf(fields, scope, albedo);
     }
     return {};
 }
 
 }  // namespace
 
-Receiver read_receiver(FieldReader& fields, const std::filesystem::path& base_dir) {
+Receiver read_receiver(FieldReader& fields, const FileScope& scope) {
     Receiver receiver;
     receiver.name = fields.string("name", fields.path_of(""));
     const auto type = fields.required_choice("type", kTypes);
@@ -86,7 +87,7 @@ Receiver read_receiver(FieldReader& fields, const std::filesystem::path& base_di
         fields.finish();  // reports a misspelt type, or the missing one
     }
     receiver.type = *type;
-    receiver.mesh = read_shape(fields, receiver.type, base_dir, albedo);
+    receiver.mesh = read_shape(fields, receiver.type, scope, albedo);
     fields.finish();
     receiver.albedo = albedo.value_or(receiver.albedo);
 

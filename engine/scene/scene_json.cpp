@@ -3,7 +3,8 @@
 
 namespace vkw {
 
-Scene scene_from_json(const nlohmann::json& root, const ErrorContext& errors, const std::filesystem::path& source) {
+Scene scene_from_json(const nlohmann::json& root, const ErrorContext& errors, const std::filesystem::path& source,
+                      const FileScope& scope) {
     if (!root.is_object()) {
         errors.fail("", "expected a JSON object, got " + describe_value(root),
                     "an object with camera, sun, sky and optional floor, water, medium, receivers, effects");
@@ -19,9 +20,8 @@ Scene scene_from_json(const nlohmann::json& root, const ErrorContext& errors, co
     // Absent water means no water, not default water.
     if (fields.has("water")) scene.water = fields.object("water", Presence::required, read_water);
     scene.medium = fields.object("medium", Presence::optional, read_medium);
-    const std::filesystem::path base_dir = source.parent_path();
     scene.receivers =
-        fields.objects("receivers", [&](FieldReader& receiver) { return read_receiver(receiver, base_dir); });
+        fields.objects("receivers", [&](FieldReader& receiver) { return read_receiver(receiver, scope); });
     scene.effects = fields.object("effects", Presence::optional, read_effects);
     fields.finish();
 

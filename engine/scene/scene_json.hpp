@@ -9,11 +9,14 @@
 
 #include "engine/scene/error_context.hpp"
 #include "engine/scene/field_reader.hpp"
+#include "engine/scene/file_scope.hpp"
 #include "engine/scene/scene.hpp"
 
 namespace vkw {
 
-Scene scene_from_json(const nlohmann::json& root, const ErrorContext& errors, const std::filesystem::path& source);
+// `scope`: where the files the scene names may be, and the folder they are relative to.
+Scene scene_from_json(const nlohmann::json& root, const ErrorContext& errors, const std::filesystem::path& source,
+                      const FileScope& scope);
 
 Camera read_camera(FieldReader& fields);                     // camera_json.cpp
 Sun read_sun(FieldReader& fields);                           // light_json.cpp
@@ -27,7 +30,7 @@ GodraySettings read_godray_settings(FieldReader& fields);    // godrays_json.cpp
 CausticSettings read_caustic_settings(FieldReader& fields);  // caustics_json.cpp: effects.caustics but its mode
 CausticBlurSettings read_caustic_blur_settings(
     FieldReader& fields);  // caustics_json.cpp: effects.caustic_blur but its mode
-// `base_dir`: the scene file's folder, against which glTF file names are resolved.
-Receiver read_receiver(FieldReader& fields, const std::filesystem::path& base_dir);  // receiver_json.cpp
+// glTF file names are resolved against `scope`'s folder, and must stay inside its tree.
+Receiver read_receiver(FieldReader& fields, const FileScope& scope);  // receiver_json.cpp
 
 }  // namespace vkw

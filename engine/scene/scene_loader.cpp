@@ -35,15 +35,16 @@ std::string read_file(const std::filesystem::path& file) {
 }  // namespace
 
 Scene parse_scene(std::string_view json_text, const std::filesystem::path& name_for_messages,
-                  const std::vector<std::string>& overrides) {
+                  const std::vector<std::string>& overrides, const SceneLoadOptions& options) {
     ErrorContext errors(name_for_messages.string());
     nlohmann::json root = parse_json_text(json_text, errors);
     apply_overrides(root, overrides, errors);
-    return scene_from_json(root, errors, name_for_messages);
+    return scene_from_json(root, errors, name_for_messages, FileScope(name_for_messages, options.allow_outside_paths));
 }
 
-Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-    return parse_scene(read_file(file), file, overrides);
+Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides,
+                 const SceneLoadOptions& options) {
+    return parse_scene(read_file(file), file, overrides, options);
 }
 
 }  // namespace vkw

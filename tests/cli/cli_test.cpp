@@ -134,6 +134,23 @@ TEST(cli, UnwritableOutputPath) {
                          "/nonexistent-dir/out.exr");
 }
 
+// A scene reads files only inside its own folder tree: one naming lake's rock from elsewhere is
+// refused in one line naming the field and the flag, and --allow-outside-paths renders it.
+TEST(cli, FilesOutsideTheScenesFolderNeedAFlag) {
+    const fs::path scene = scratch("outside_rock.json");
+    std::ofstream(scene) << R"({ "camera": { "position": [0, 1, 3], "target": [0, 0, 0] },
+        "sun": { "elevation_deg": 45 }, "sky": { "radiance": [1, 1, 1] },
+        "receivers": [{ "type": "gltf", "file": ")"
+                         << VKWATER_SOURCE_DIR << R"(/scenes/assets/rock.gltf" }] })";
+    const std::string passes = "passes " + scene.string() + " --width 64 --height 48";
+    const CommandRun refused = run_vkwater(passes);
+    expect_clean_failure(refused, 1, scene.string() + ": receivers[0].file: the glTF file '");
+    EXPECT_NE(refused.output.find("--allow-outside-paths"), std::string::npos) << refused.output;
+    EXPECT_EQ(std::count(refused.output.begin(), refused.output.end(), '\n'), 1) << refused.output;
+    const CommandRun allowed = run_vkwater(passes + " --allow-outside-paths");
+    EXPECT_EQ(allowed.exit_code, 0) << allowed.output;
+}
+
 // A write that fails at its end (a full disk: /dev/full fails every write with ENOSPC) is a user
 // error naming the path, not a success.
 TEST(cli, AFailedWriteIsAUserError) {

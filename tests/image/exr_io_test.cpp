@@ -10,9 +10,11 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfOutputFile.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
@@ -222,7 +224,31 @@ TEST(image_exr_io, TruncatedExrIsUserError) {
     write_exr(dir / "full.exr", make_test_image(64, 64));
     const auto bytes = test::read_bytes(dir / "full.exr");
     test::write_text(dir / "cut.exr", std::string(bytes.begin(), bytes.begin() + bytes.size() / 2));
-    expect_user_error([&] { read_exr(dir / "cut.exr"); }, dir / "cut.exr", "");
+    expect_user_error([&] { read_exr(dir / "cut.exr"); }, dir / "cut.exr", "a corrupt or truncated OpenEXR file");
+}
+
+// A header's declared size is bounded before any pixel is allocated: a side over 16384 (the
+// largest image vkwater writes) is refused even in a valid file, and a header patched to declare
+// 20000 x 20000 over a 4 x 4 file's data is refused too (it used to allocate 6.4 GB first).
+TEST(image_exr_io, DeclaredSizesAreBoundedBeforeAllocating) {
+    ScratchDir dir;
+    write_foreign_exr(dir / "wide.exr", 0, 0, 16385, 1, {"R", "G", "B"});
+    expect_user_error([&] { read_exr(dir / "wide.exr"); }, dir / "wide.exr",
+                      "declares 16385x1 pixels (accepted: each side at most 16384)");
+    write_foreign_exr(dir / "widest.exr", 0, 0, 16384, 1, {"R", "G", "B"});
+    EXPECT_EQ(read_exr(dir / "widest.exr").width, 16384);
+
+    write_exr(dir / "small.exr", make_test_image(4, 4));
+    std::vector<unsigned char> bytes = test::read_bytes(dir / "small.exr");
+    const std::string name("dataWindow\0box2i\0", 17);
+    const auto at = std::search(bytes.begin(), bytes.end(), name.begin(), name.end());
+    ASSERT_NE(at, bytes.end());
+    // After the name and type: the size (16), then x_min, y_min, x_max, y_max as 32-bit integers.
+    const std::int32_t last = 19999;
+    std::memcpy(&*at + name.size() + 4 + 8, &last, 4);
+    std::memcpy(&*at + name.size() + 4 + 12, &last, 4);
+    test::write_text(dir / "patched.exr", std::string(bytes.begin(), bytes.end()));
+    expect_user_error([&] { read_exr(dir / "patched.exr"); }, dir / "patched.exr", "");
 }
 
 TEST(image_exr_io, MissingInputIsUserError) {

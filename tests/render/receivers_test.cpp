@@ -65,10 +65,10 @@ TEST_F(ReceiverPass, EachGltfMaterialIsItsOwnAlbedoInBothRenderers) {
               "receivers": [)" + receiver +
                                    R"(]
             })",
-                               "squares.json");
+                               dir / "squares.json");
         };
         const Scene gltf =
-            scene_with(R"({"type": "gltf", "file": ")" + file.string() + R"(", "translation": [0, 1, 0]})");
+            scene_with(R"({"type": "gltf", "file": ")" + file.filename().string() + R"(", "translation": [0, 1, 0]})");
         const Scene box = scene_with(R"({"type": "box", "half_size": [0.5, 0.5, 1], "translation": [)" + centre +
                                      R"(, 0.5, 0], "albedo": )" + albedo + "}");
         Renderer renderer(context());

@@ -45,6 +45,16 @@ void append_bytes(std::vector<unsigned char>& out, const std::vector<T>& values)
     if (!values.empty()) std::memcpy(out.data() + at, values.data(), values.size() * sizeof(T));
 }
 
+// The spec's one buffer: positions, normals, then indices, padded to a multiple of 4 bytes.
+inline std::vector<unsigned char> gltf_buffer(const GltfSpec& spec) {
+    std::vector<unsigned char> data;
+    append_bytes(data, spec.positions);
+    append_bytes(data, spec.normals);
+    append_bytes(data, spec.indices);
+    while (data.size() % 4 != 0) data.push_back(0);
+    return data;
+}
+
 inline std::string gltf_text(const GltfSpec& spec) {
     std::vector<unsigned char> data;
     append_bytes(data, spec.positions);
@@ -95,6 +105,18 @@ inline std::string gltf_text(const GltfSpec& spec) {
   "buffers": [{ "byteLength": )" +
            std::to_string(data.size()) + R"(, "uri": "data:application/octet-stream;base64,)" + base64(data) +
            R"(" }] })";
+}
+
+// gltf_text with the buffer in a file of its own: `uri` as the glTF names it, `bin_file` where
+// the test writes the bytes.
+inline std::string gltf_text_with_buffer_file(const GltfSpec& spec, const std::string& uri,
+                                              const std::filesystem::path& bin_file) {
+    const std::vector<unsigned char> data = gltf_buffer(spec);
+    std::ofstream(bin_file, std::ios::binary)
+        .write(reinterpret_cast<const char*>(data.data()), std::streamsize(data.size()));
+    std::string text = gltf_text(spec);
+    const std::size_t begin = text.find("data:application/octet-stream");
+    return text.replace(begin, text.find('"', begin) - begin, uri);
 }
 
 // Two squares in y = 0 facing +y, side by side: x in [-1, 0] (primitive 0, material 0) and

@@ -45,6 +45,7 @@ struct BenchArgs {
     int64_t spp = 1;
     std::string out_dir;
     std::vector<std::string> overrides;
+    bool allow_outside_paths = false;
     DeviceOptions device;
 };
 
@@ -164,7 +165,7 @@ int run_bench(const BenchArgs& args) {
     for (const std::vector<std::string>& setting : combinations(axes)) {
         std::vector<std::string> overrides = args.overrides;
         overrides.insert(overrides.end(), setting.begin(), setting.end());
-        const Scene scene = load_scene(args.scene, overrides);
+        const Scene scene = load_scene(args.scene, overrides, {.allow_outside_paths = args.allow_outside_paths});
         Renderer renderer(*context);
         const RenderOptions options{width, height, false, fg::TimingMode::None};
         RenderResult result = render_filtered(renderer, scene, options, filter);  // warm-up: compiles shader variants
@@ -249,6 +250,7 @@ Run add_bench_command(CLI::App& app) {
         ->capture_default_str();
     command->add_option("--out-dir", args->out_dir, "Folder for sweep.csv and sweep.svg (default bench-<scene>)");
     command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
+    add_outside_paths_option(*command, args->allow_outside_paths);
     add_device_options(*command, args->device);
     return [args] { return run_bench(*args); };
 }

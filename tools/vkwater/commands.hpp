@@ -23,6 +23,9 @@ struct DeviceOptions {
 };
 void add_device_options(CLI::App& command, DeviceOptions& options);
 
+// --allow-outside-paths: let the scene read files outside its own folder tree (file_scope.hpp).
+void add_outside_paths_option(CLI::App& command, bool& allow);
+
 // --width and --height in pixels, each 1 to 16384 (the largest image side any command takes).
 void add_image_size_options(CLI::App& command, uint32_t& width, uint32_t& height);
 

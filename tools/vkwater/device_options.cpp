@@ -1,4 +1,5 @@
-// Options several subcommands share: the Vulkan device, the image size, the samples per pixel.
+// Options several subcommands share: the Vulkan device, the scene's file scope, the image size, the
+// samples per pixel.
 #include "tools/vkwater/commands.hpp"
 
 namespace vkw::cli {
@@ -10,6 +11,12 @@ void add_device_options(CLI::App& command, DeviceOptions& options) {
     command.add_flag("--validation", options.validation,
                      "Run with VK_LAYER_KHRONOS_validation and synchronization validation; any error or "
                      "warning fails the run (exit 2)");
+}
+
+void add_outside_paths_option(CLI::App& command, bool& allow) {
+    command.add_flag("--allow-outside-paths", allow,
+                     "Let the scene read files outside its own folder tree (glTF files, their buffers and "
+                     "images); by default such a name is refused");
 }
 
 void add_image_size_options(CLI::App& command, uint32_t& width, uint32_t& height) {

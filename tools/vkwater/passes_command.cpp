@@ -28,10 +28,11 @@ struct PassesArgs {
     std::string dot;
     bool barriers = false;
     std::vector<std::string> overrides;
+    bool allow_outside_paths = false;
 };
 
 int run_passes(const PassesArgs& args) {
-    const Scene scene = load_scene(args.scene, args.overrides);
+    const Scene scene = load_scene(args.scene, args.overrides, {.allow_outside_paths = args.allow_outside_paths});
     fg::FrameGraph graph(decide_frame_needs(scene, double(args.width) / double(args.height)));
     const FrameConstants constants = make_frame_constants(scene, args.width, args.height);
     // An FFT ocean's passes import its spectrum buffer, which only a device can hold:
@@ -74,6 +75,7 @@ Run add_passes_command(CLI::App& app) {
     command->add_option("--dot", args->dot, "Also write the graph as Graphviz to this file");
     command->add_flag("--barriers", args->barriers, "Also print every derived barrier");
     command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
+    add_outside_paths_option(*command, args->allow_outside_paths);
     return [args] { return run_passes(*args); };
 }
 

@@ -18,13 +18,14 @@ struct PovrayArgs {
     std::string scene;
     std::string out;
     std::vector<std::string> overrides;
+    bool allow_outside_paths = false;
     std::vector<double> window;
     double side = 1.0;
     pov::PovrayOptions options;
 };
 
 int run_povray(const PovrayArgs& args) {
-    const Scene scene = load_scene(args.scene, args.overrides);
+    const Scene scene = load_scene(args.scene, args.overrides, {.allow_outside_paths = args.allow_outside_paths});
     require_writable_file_path(args.out);
     pov::PovrayOptions options = args.options;
     options.window = args.window.empty()
@@ -49,6 +50,7 @@ Run add_povray_command(CLI::App& app) {
     command->add_option("scene", args->scene, "Scene file (JSON, see scenes/README.md)")->required();
     command->add_option("--out,-o", args->out, "Output POV-Ray file")->required();
     command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
+    add_outside_paths_option(*command, args->allow_outside_paths);
     command
         ->add_option("--window", args->window,
                      "Floor window x0 z0 x1 z1 in metres (default: a square of --side around the middle of "

@@ -37,6 +37,7 @@ struct ReferenceArgs {
     uint32_t in_scatter_planes = ref::WaterTransport::Quality{}.in_scatter_levels;
     uint32_t in_scatter_texels = ref::WaterTransport::Quality{}.in_scatter_texels;
     std::vector<std::string> overrides;
+    bool allow_outside_paths = false;
     std::string manifest;
     int64_t spp = 1;
     uint32_t floor_texels = ref::WaterTransport::Quality{}.floor_texels;
@@ -167,7 +168,7 @@ void record_in_manifest(const ReferenceArgs& args, double seconds, const ImageRG
 }
 
 int run_reference(const ReferenceArgs& args) {
-    const Scene scene = load_scene(args.scene, args.overrides);
+    const Scene scene = load_scene(args.scene, args.overrides, {.allow_outside_paths = args.allow_outside_paths});
     require_writable_file_path(args.out);
     if (!args.manifest.empty()) require_writable_file_path(args.manifest);
     ref::ReferenceOptions options;
@@ -258,6 +259,7 @@ Run add_reference_command(CLI::App& app) {
                      "note)")
         ->capture_default_str();
     command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
+    add_outside_paths_option(*command, args->allow_outside_paths);
     add_spp_option(*command, args->spp, "more a box filter of k x k rays jittered within their strata");
     command
         ->add_option("--cells-per-wavelength", args->cells_per_wavelength,

@@ -41,6 +41,7 @@ struct RenderArgs {
     int64_t spp = 1;
     std::string recording = "dynamic";
     std::vector<std::string> overrides;
+    bool allow_outside_paths = false;
     std::string reference;
     DeviceOptions device;
 };
@@ -77,7 +78,7 @@ std::string inscatter_text(const Scene& scene, const RenderOptions& options, con
 
 int run_render(const RenderArgs& args) {
     const auto start = std::chrono::steady_clock::now();
-    const Scene scene = load_scene(args.scene, args.overrides);
+    const Scene scene = load_scene(args.scene, args.overrides, {.allow_outside_paths = args.allow_outside_paths});
     const PixelFilter filter = pixel_filter_from_spp(args.spp);
     // Fail on an unwritable output before spending time on the render. Without --out, the scene's
     // name with .exr, in the current folder.
@@ -239,6 +240,7 @@ Run add_render_command(CLI::App& app) {
         ->check(CLI::IsMember({"dynamic", "renderpass"}))
         ->capture_default_str();
     command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
+    add_outside_paths_option(*command, args->allow_outside_paths);
     command->add_option("--reference", args->reference,
                         "Also print the frame's error against this reference EXR (vkwater reference), next to "
                         "its time");

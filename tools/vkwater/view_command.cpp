@@ -58,6 +58,7 @@ Run add_view_command(CLI::App& app) {
                         "Run the commands of this file by frame (FRAME: camera|move|resize|set|screenshot|pause|"
                         "resume|time|mode|reload-shaders|wait-file ...; tools/vkwater/view/view_script.hpp)");
     command->add_option("--set", args->viewer.overrides, "Override a scene field: key.path=value (repeatable)");
+    add_outside_paths_option(*command, args->viewer.allow_outside_paths);
     command
         ->add_option("--pass-timing-every", args->viewer.timing_every,
                      "Run the scene graph alone every N frames for per-pass times (fence-timed on CPU "

@@ -176,7 +176,8 @@ Viewer::~Viewer() {
 }
 
 void Viewer::load_scene_state() {
-    auto next = std::make_unique<Scene>(load_scene(options_.scene, overrides_));
+    auto next = std::make_unique<Scene>(
+        load_scene(options_.scene, overrides_, {.allow_outside_paths = options_.allow_outside_paths}));
     const bool first = !scene_;
     // A set that moved the file's camera or clock moves the viewer's; any other keeps them.
     if (first || next->camera.position != loaded_camera_.position || next->camera.target != loaded_camera_.target) {

@@ -20,6 +20,7 @@ namespace vkw::window {
 struct ViewerOptions {
     std::filesystem::path scene;
     std::vector<std::string> overrides;  // --set, applied in order when loading the scene
+    bool allow_outside_paths = false;    // --allow-outside-paths
     uint32_t width = 800, height = 600;  // the window's initial framebuffer size
     PresentMode present = PresentMode::Fifo;
     uint32_t frames = 0;                             // stop after this many frames; 0: when the window closes
