@@ -33,13 +33,15 @@ void ErrorContext::fail(std::string_view where, std::string_view what, std::stri
     const auto note = std::find_if(overrides_.rbegin(), overrides_.rend(), [&](const OverrideNote& n) {
         return !where.empty() && paths_overlap(n.path, where);
     });
-    if (note != overrides_.rend()) message += " [from override '" + shortened_input(note->text, 80) + "']";
+    if (note != overrides_.rend()) message += " [from override '" + shortened_input(note->text, 40) + "']";
     throw UserError(one_line(std::move(message)));
 }
 
 std::string field_path(std::string_view parent, std::string_view key) {
-    if (parent.empty()) return std::string(key);
-    return std::string(parent) + "." + std::string(key);
+    // A key can be any string (an unknown key of 5000 characters came back whole): cut it.
+    const std::string shown = shortened_input(key, 40);
+    if (parent.empty()) return shown;
+    return std::string(parent) + "." + shown;
 }
 
 std::string element_path(std::string_view parent, std::size_t index) {

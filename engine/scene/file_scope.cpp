@@ -41,7 +41,7 @@ std::filesystem::path FileScope::resolve(const std::filesystem::path& from_folde
     if (!is_inside(real_path(path), root)) {
         throw UserError(what + " '" + shortened_input(one_line(written_as.empty() ? name : written_as), 80) +
                         "' resolves outside the scene's folder '" + root.string() +
-                        "' (accepted: a file inside that folder tree; pass --allow-outside-paths to read it anyway)");
+                        "' (accepted: a path inside it, or --allow-outside-paths)");
     }
     return path;
 }

@@ -17,6 +17,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "engine/core/errors.hpp"
+#include "engine/core/message_text.hpp"
 #include "engine/scene/file_scope.hpp"
 #include "engine/scene/json_text.hpp"
 #include "engine/scene/range.hpp"
@@ -456,8 +457,14 @@ Mesh load_gltf_mesh(const std::filesystem::path& file, const FileScope& scope) {
                                : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), length, base_dir);
     if (!loaded) {
         // tinygltf's messages may span lines; a UserError is one line.
-        const std::string reason = error.empty() ? "tinygltf refused it" : error.substr(0, error.find('\n'));
-        reader.fail("malformed glTF: " + reason);
+        // tinygltf passes nlohmann's syntax errors on, with the whole token last read (a data URI).
+        std::string reason =
+            error.empty() ? "tinygltf refused it" : without_last_read(error.substr(0, error.find('\n')));
+        const std::string nlohmann_prefix = "parse error at ";  // after "[json.exception.parse_error.101] "
+        if (const std::size_t at = reason.find(nlohmann_prefix); at != std::string::npos) {
+            reason = reason.substr(at + nlohmann_prefix.size());
+        }
+        reader.fail("malformed glTF: " + shortened_input(reason, 160));
     }
     Mesh mesh;
     if (model.scenes.empty()) {

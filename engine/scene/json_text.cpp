@@ -22,7 +22,7 @@ std::string describe_position(std::string_view text, std::size_t offset) {
 // nlohmann's what() reads "[json.exception.parse_error.101] parse error at line 1, column 2:
 // syntax error while parsing ..."; its position is replaced by ours, so keep only the reason.
 std::string parse_reason(const json::exception& error) {
-    const std::string what = error.what();
+    const std::string what = without_last_read(error.what());
     const std::size_t reason = what.find("syntax error");
     return reason == std::string::npos ? what : what.substr(reason);
 }
@@ -108,7 +108,11 @@ private:
 
     bool open(json container) {
         if (frames_.size() >= kMaxJsonNesting) {
-            errors_.fail(path_through(frames_.size()), "nested too deeply",
+            // The path of 64 levels of [0] is 190 characters: name where it starts and its depth.
+            std::string where = path_through(frames_.size());
+            if (where.size() > 60)
+                where = where.substr(0, 40) + "... (" + std::to_string(frames_.size() + 1) + " levels)";
+            errors_.fail(where, "nested too deeply",
                          "at most " + std::to_string(kMaxJsonNesting) + " levels of objects and arrays");
         }
         json* node = slot();
@@ -145,6 +149,17 @@ private:
 };
 
 }  // namespace
+
+std::string without_last_read(std::string message) {
+    const std::string marker = "; last read: '";
+    const std::size_t begin = message.find(marker);
+    if (begin == std::string::npos) return message;
+    // The token ends at the quote before "; expected ...", or at the message's last quote.
+    std::size_t end = message.find("'; expected", begin + marker.size());
+    if (end == std::string::npos) end = message.rfind('\'');
+    if (end == std::string::npos || end < begin + marker.size()) return message.substr(0, begin);
+    return message.erase(begin, end + 1 - begin);
+}
 
 TextPosition text_position(std::string_view text, std::size_t offset) {
     TextPosition at;
@@ -189,6 +204,10 @@ std::size_t json_nesting_depth(std::string_view text) {
 nlohmann::json parse_json_text(std::string_view text, const ErrorContext& errors) {
     if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
         errors.fail("", "empty (no JSON value)", "a JSON object");
+    }
+    // A UTF-16 file (as some Windows editors save) would otherwise be "invalid literal" at line 1.
+    if (text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF")) {
+        errors.fail("", "UTF-16 text (it starts with a UTF-16 byte order mark)", "UTF-8 JSON text");
     }
     DocumentBuilder builder(text, errors);
     json::sax_parse(text.begin(), text.end(), &builder);

@@ -52,5 +52,6 @@ Run add_compare_command(CLI::App& app);
 Run add_bench_command(CLI::App& app);
 Run add_povray_command(CLI::App& app);
 Run add_view_command(CLI::App& app);
+Run add_check_command(CLI::App& app);
 
 }  // namespace vkw::cli

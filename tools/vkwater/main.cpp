@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
     add(vkw::cli::add_bench_command);
     add(vkw::cli::add_povray_command);
     add(vkw::cli::add_view_command);
+    add(vkw::cli::add_check_command);
     // vkwater help [COMMAND]: the same text as --help, for the habit of git and cargo.
     std::string help_topic;
     CLI::App* help = app.add_subcommand("help", "Print this help, or a command's: vkwater help COMMAND");
@@ -51,7 +52,7 @@ int main(int argc, char** argv) {
         }
         std::fprintf(stderr,
                      "vkwater: help: no command '%s' (accepted: render, passes, reference, compare, bench, "
-                     "povray, view)\n",
+                     "povray, view, check)\n",
                      help_topic.c_str());
         return vkw::kExitUserError;
     }
