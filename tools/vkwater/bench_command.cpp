@@ -226,7 +226,7 @@ int run_bench(const BenchArgs& args) {
 Run add_bench_command(CLI::App& app) {
     auto args = std::make_shared<BenchArgs>();
     CLI::App* command = app.add_subcommand("bench", "Time and error of a scene over a sweep of quality settings");
-    command->add_option("scene", args->scene, "Scene file (JSON)")->required();
+    add_scene_options(*command, args->scene, args->overrides, args->allow_outside_paths);
     command->add_option("--reference", args->reference, "Reference EXR (vkwater reference) at the bench's size")
         ->required();
     command->add_option("--grids", args->grids, "Water (and photon) grid resolutions to sweep")
@@ -249,8 +249,6 @@ Run add_bench_command(CLI::App& app) {
         ->check(CLI::Range(1u, 100000u))
         ->capture_default_str();
     command->add_option("--out-dir", args->out_dir, "Folder for sweep.csv and sweep.svg (default bench-<scene>)");
-    command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
-    add_outside_paths_option(*command, args->allow_outside_paths);
     add_device_options(*command, args->device);
     return [args] { return run_bench(*args); };
 }

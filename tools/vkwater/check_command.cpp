@@ -46,9 +46,7 @@ Run add_check_command(CLI::App& app) {
     auto args = std::make_shared<CheckArgs>();
     CLI::App* command =
         app.add_subcommand("check", "Read and validate a scene without a device: exit 0 if valid, else 1 and why");
-    command->add_option("scene", args->scene, "Scene file (JSON, see scenes/README.md)")->required();
-    command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
-    add_outside_paths_option(*command, args->allow_outside_paths);
+    add_scene_options(*command, args->scene, args->overrides, args->allow_outside_paths);
     return [args] { return run_check(*args); };
 }
 

@@ -23,8 +23,11 @@ struct DeviceOptions {
 };
 void add_device_options(CLI::App& command, DeviceOptions& options);
 
-// --allow-outside-paths: let the scene read files outside its own folder tree (file_scope.hpp).
-void add_outside_paths_option(CLI::App& command, bool& allow);
+// What every command that loads a scene takes: the SCENE argument, --set overrides (repeatable),
+// and --allow-outside-paths (the scene may read files outside its own folder tree,
+// engine/scene/file_scope.hpp).
+void add_scene_options(CLI::App& command, std::string& scene, std::vector<std::string>& overrides,
+                       bool& allow_outside_paths);
 
 // --width and --height in pixels, each 1 to 16384 (the largest image side any command takes).
 void add_image_size_options(CLI::App& command, uint32_t& width, uint32_t& height);

@@ -13,8 +13,11 @@ void add_device_options(CLI::App& command, DeviceOptions& options) {
                      "warning fails the run (exit 2)");
 }
 
-void add_outside_paths_option(CLI::App& command, bool& allow) {
-    command.add_flag("--allow-outside-paths", allow,
+void add_scene_options(CLI::App& command, std::string& scene, std::vector<std::string>& overrides,
+                       bool& allow_outside_paths) {
+    command.add_option("scene", scene, "Scene file (JSON, see scenes/README.md)")->required();
+    command.add_option("--set", overrides, "Override a scene field: key.path=value (repeatable)");
+    command.add_flag("--allow-outside-paths", allow_outside_paths,
                      "Let the scene read files outside its own folder tree (glTF files, their buffers and "
                      "images); by default such a name is refused");
 }

@@ -70,12 +70,10 @@ int run_passes(const PassesArgs& args) {
 Run add_passes_command(CLI::App& app) {
     auto args = std::make_shared<PassesArgs>();
     CLI::App* command = app.add_subcommand("passes", "Print the frame graph a scene compiles to, and why");
-    command->add_option("scene", args->scene, "Scene file (JSON)")->required();
+    add_scene_options(*command, args->scene, args->overrides, args->allow_outside_paths);
     add_image_size_options(*command, args->width, args->height);
     command->add_option("--dot", args->dot, "Also write the graph as Graphviz to this file");
     command->add_flag("--barriers", args->barriers, "Also print every derived barrier");
-    command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
-    add_outside_paths_option(*command, args->allow_outside_paths);
     return [args] { return run_passes(*args); };
 }
 

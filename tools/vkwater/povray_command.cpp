@@ -47,10 +47,8 @@ Run add_povray_command(CLI::App& app) {
     auto args = std::make_shared<PovrayArgs>();
     CLI::App* command = app.add_subcommand(
         "povray", "Write the scene's floor irradiance as POV-Ray 3.7 input (photons, media absorption)");
-    command->add_option("scene", args->scene, "Scene file (JSON, see scenes/README.md)")->required();
+    add_scene_options(*command, args->scene, args->overrides, args->allow_outside_paths);
     command->add_option("--out,-o", args->out, "Output POV-Ray file")->required();
-    command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
-    add_outside_paths_option(*command, args->allow_outside_paths);
     command
         ->add_option("--window", args->window,
                      "Floor window x0 z0 x1 z1 in metres (default: a square of --side around the middle of "

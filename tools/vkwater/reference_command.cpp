@@ -249,7 +249,7 @@ Run add_reference_command(CLI::App& app) {
     auto args = std::make_shared<ReferenceArgs>();
     CLI::App* command =
         app.add_subcommand("reference", "Render a scene with the CPU reference renderer (ground truth)");
-    command->add_option("scene", args->scene, "Scene file (JSON)")->required();
+    add_scene_options(*command, args->scene, args->overrides, args->allow_outside_paths);
     command->add_option("--out,-o", args->out, "Output OpenEXR file (RGBA and the layers caustic and inscatter)")
         ->required();
     add_image_size_options(*command, args->width, args->height);
@@ -258,8 +258,6 @@ Run add_reference_command(CLI::App& app) {
                      "Worker threads (0: every hardware thread; more than the hardware has are clamped to it, with a "
                      "note)")
         ->capture_default_str();
-    command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
-    add_outside_paths_option(*command, args->allow_outside_paths);
     add_spp_option(*command, args->spp, "more a box filter of k x k rays jittered within their strata");
     command
         ->add_option("--cells-per-wavelength", args->cells_per_wavelength,

@@ -210,7 +210,7 @@ int run_render(const RenderArgs& args) {
 Run add_render_command(CLI::App& app) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App* command = app.add_subcommand("render", "Render a scene offscreen to a linear HDR OpenEXR file");
-    command->add_option("scene", args->scene, "Scene file (JSON, see scenes/README.md)")->required();
+    add_scene_options(*command, args->scene, args->overrides, args->allow_outside_paths);
     command->add_option("--out,-o", args->out,
                         "Output file, by its extension: .exr the linear HDR image (32-bit float), .png a tone-mapped "
                         "preview alone (default: the scene's name with .exr, in the current folder; an existing file "
@@ -239,8 +239,6 @@ Run add_render_command(CLI::App& app) {
     command->add_option("--recording", args->recording, "Graphics pass recording: dynamic or renderpass")
         ->check(CLI::IsMember({"dynamic", "renderpass"}))
         ->capture_default_str();
-    command->add_option("--set", args->overrides, "Override a scene field: key.path=value (repeatable)");
-    add_outside_paths_option(*command, args->allow_outside_paths);
     command->add_option("--reference", args->reference,
                         "Also print the frame's error against this reference EXR (vkwater reference), next to "
                         "its time");

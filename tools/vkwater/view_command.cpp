@@ -40,7 +40,7 @@ Run add_view_command(CLI::App& app) {
     CLI::App* command = app.add_subcommand(
         "view", std::string("Show a scene in a window, with camera controls, a parameter panel and per-pass times\n") +
                     window::kViewerKeys);
-    command->add_option("scene", args->scene, "Scene file (JSON, see scenes/README.md)")->required();
+    add_scene_options(*command, args->scene, args->viewer.overrides, args->viewer.allow_outside_paths);
     command->add_option("--width", args->viewer.width, "Initial window width in pixels")
         ->check(CLI::Range(1u, 16384u))
         ->capture_default_str();
@@ -57,8 +57,6 @@ Run add_view_command(CLI::App& app) {
     command->add_option("--script", args->script,
                         "Run the commands of this file by frame (FRAME: camera|move|resize|set|screenshot|pause|"
                         "resume|time|mode|reload-shaders|wait-file ...; tools/vkwater/view/view_script.hpp)");
-    command->add_option("--set", args->viewer.overrides, "Override a scene field: key.path=value (repeatable)");
-    add_outside_paths_option(*command, args->viewer.allow_outside_paths);
     command
         ->add_option("--pass-timing-every", args->viewer.timing_every,
                      "Run the scene graph alone every N frames for per-pass times (fence-timed on CPU "
