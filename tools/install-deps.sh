@@ -24,6 +24,9 @@ packages=(
   xvfb xauth x11-apps imagemagick xdotool
   # the independent cross-check of the reference's floor caustics (tests/povray)
   povray
+  # the sanitizer and fuzzing build of the loaders (tests/sanitize, tests/fuzz): clang with its
+  # AddressSanitizer, UndefinedBehaviorSanitizer and libFuzzer runtimes
+  clang-14 libclang-rt-14-dev
 )
 
 sudo_cmd=()

@@ -203,7 +203,7 @@ std::optional<std::size_t> FieldReader::optional_choice_index(std::string_view k
     const std::string& text = value->get_ref<const std::string&>();
     const auto it = std::find(names.begin(), names.end(), text);
     if (it != names.end()) return static_cast<std::size_t>(it - names.begin());
-    std::string what = "unknown value " + shortened(value->dump());
+    std::string what = "unknown value " + shortened(dumped(*value));
     const std::vector<std::string> valid(names.begin(), names.end());
     if (const auto hint = closest_key(text, valid)) what += " (did you mean '" + *hint + "'?)";
     errors_.fail(path, what, one_of(names));

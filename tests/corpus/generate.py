@@ -223,6 +223,10 @@ def set_cases():
         ("long-value", "description=" + "x" * 1, None),
         ("huge-string-key", "camera." + "k" * 5000 + "=1", r"\(5\d{3} characters\)"),
         ("not-utf8", "\"$(printf 'camera.fov_y_deg=\\377\\376')\"", field + r"camera\.fov_y_deg: expected a number"),
+        # Found by the --set fuzzer: a choice's "unknown value" message printed the value with a
+        # JSON printer that throws on bytes that are not UTF-8 (an internal error, exit 2).
+        ("not-utf8-choice", "\"$(printf 'effects.godrays.mode=off\\351\\351')\"",
+         field + r"effects\.godrays\.mode: unknown value"),
         ("unclosed-array", "sun.irradiance=[1,2", r"sun\.irradiance"),
     ]
     for label, value, pattern in cases:

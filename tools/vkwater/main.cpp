@@ -16,13 +16,16 @@ int main(int argc, char** argv) {
         vkw::cli::Run run = register_command(app);
         commands[app.get_subcommands({})[before]] = std::move(run);
     };
+#ifndef VKWATER_LOADERS_ONLY
     add(vkw::cli::add_render_command);
     add(vkw::cli::add_passes_command);
     add(vkw::cli::add_reference_command);
-    add(vkw::cli::add_compare_command);
     add(vkw::cli::add_bench_command);
     add(vkw::cli::add_povray_command);
     add(vkw::cli::add_view_command);
+#endif
+    // The sanitizer build (VKWATER_LOADERS_ONLY) has these two alone: they read files, need no device.
+    add(vkw::cli::add_compare_command);
     add(vkw::cli::add_check_command);
     // vkwater help [COMMAND]: the same text as --help, for the habit of git and cargo.
     std::string help_topic;
