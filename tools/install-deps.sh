@@ -24,6 +24,8 @@ packages=(
   xvfb xauth x11-apps imagemagick xdotool
   # the independent cross-check of the reference's floor caustics (tests/povray)
   povray
+  # the corpus generator and the viewer's soak test (tests/corpus, tests/soak)
+  python3
   # the sanitizer and fuzzing build of the loaders (tests/sanitize, tests/fuzz): clang with its
   # AddressSanitizer, UndefinedBehaviorSanitizer and libFuzzer runtimes
   clang-14 libclang-rt-14-dev

@@ -75,16 +75,23 @@ FrameExecutor::FrameExecutor(Context& context, FrameGraph& graph, PipelineStore&
 FrameExecutor::~FrameExecutor() {
     VkDevice device = context_.device();
     vkDeviceWaitIdle(device);
+    // Executors are made per window size and swapchain image: their names are dropped with them.
     for (VkFramebuffer framebuffer : framebuffers_) {
+        context_.forget_name(framebuffer, VK_OBJECT_TYPE_FRAMEBUFFER);
         if (framebuffer) vkDestroyFramebuffer(device, framebuffer, nullptr);
     }
     for (VkRenderPass render_pass : render_passes_) {
+        context_.forget_name(render_pass, VK_OBJECT_TYPE_RENDER_PASS);
         if (render_pass) vkDestroyRenderPass(device, render_pass, nullptr);
     }
     if (query_pool_) vkDestroyQueryPool(device, query_pool_, nullptr);
+    context_.forget_name(linear_sampler_, VK_OBJECT_TYPE_SAMPLER);
     if (linear_sampler_) vkDestroySampler(device, linear_sampler_, nullptr);
+    context_.forget_name(nearest_sampler_, VK_OBJECT_TYPE_SAMPLER);
     if (nearest_sampler_) vkDestroySampler(device, nearest_sampler_, nullptr);
+    context_.forget_name(fence_, VK_OBJECT_TYPE_FENCE);
     if (fence_) vkDestroyFence(device, fence_, nullptr);
+    context_.forget_name(command_pool_, VK_OBJECT_TYPE_COMMAND_POOL);
     if (command_pool_) vkDestroyCommandPool(device, command_pool_, nullptr);
 }
 

@@ -316,6 +316,15 @@ void Context::set_name(VkObjectType type, uint64_t handle, const std::string& na
     set_object_name_(device_, &info);
 }
 
+void Context::forget_name(VkObjectType type, uint64_t handle) const {
+    if (!set_object_name_ || handle == 0) return;
+    VkDebugUtilsObjectNameInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT};
+    info.objectType = type;
+    info.objectHandle = handle;
+    info.pObjectName = nullptr;  // no name: the layer erases its entry
+    set_object_name_(device_, &info);
+}
+
 void Context::begin_label(VkCommandBuffer cmd, const std::string& label) const {
     if (!begin_label_) return;
     VkDebugUtilsLabelEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT};

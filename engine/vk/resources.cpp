@@ -99,6 +99,7 @@ void Buffer::reset() {
 
 Image Image::create_unbound(const Context& context, const ImageDesc& desc, const std::string& name) {
     Image image;
+    image.context_ = &context;
     image.device_ = context.device();
     image.desc_ = desc;
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
@@ -154,6 +155,7 @@ Image::Image(Image&& other) noexcept { *this = std::move(other); }
 Image& Image::operator=(Image&& other) noexcept {
     if (this != &other) {
         reset();
+        context_ = std::exchange(other.context_, nullptr);
         device_ = std::exchange(other.device_, VK_NULL_HANDLE);
         image_ = std::exchange(other.image_, VK_NULL_HANDLE);
         view_ = std::exchange(other.view_, VK_NULL_HANDLE);
@@ -164,6 +166,10 @@ Image& Image::operator=(Image&& other) noexcept {
 }
 
 void Image::reset() {
+    if (context_) {
+        context_->forget_name(view_, VK_OBJECT_TYPE_IMAGE_VIEW);
+        context_->forget_name(image_, VK_OBJECT_TYPE_IMAGE);
+    }
     if (view_) vkDestroyImageView(device_, view_, nullptr);
     if (image_) vkDestroyImage(device_, image_, nullptr);
     view_ = VK_NULL_HANDLE;

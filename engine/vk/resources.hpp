@@ -91,6 +91,7 @@ public:
 
 private:
     void reset();
+    const Context* context_ = nullptr;  // to drop the names with the objects (Context::forget_name)
     VkDevice device_ = VK_NULL_HANDLE;
     VkImage image_ = VK_NULL_HANDLE;
     VkImageView view_ = VK_NULL_HANDLE;

@@ -63,7 +63,10 @@ FramesInFlight::Slot& FramesInFlight::next_slot() {
 }
 
 void FramesInFlight::set_image_count(uint32_t count) {
-    for (VkSemaphore semaphore : rendered_) vkDestroySemaphore(context_.device(), semaphore, nullptr);
+    for (VkSemaphore semaphore : rendered_) {
+        context_.forget_name(semaphore, VK_OBJECT_TYPE_SEMAPHORE);  // made again at every resize
+        vkDestroySemaphore(context_.device(), semaphore, nullptr);
+    }
     rendered_.clear();
     for (uint32_t i = 0; i < count; ++i) {
         rendered_.push_back(make_semaphore(context_, "swapchain image " + std::to_string(i) + " rendered"));

@@ -84,8 +84,13 @@ Swapchain::~Swapchain() {
 }
 
 void Swapchain::destroy_views() {
-    for (VkImageView view : views_) vkDestroyImageView(context_.device(), view, nullptr);
+    for (VkImageView view : views_) {
+        context_.forget_name(view, VK_OBJECT_TYPE_IMAGE_VIEW);
+        vkDestroyImageView(context_.device(), view, nullptr);
+    }
     views_.clear();
+    // The images go with their swapchain, never one by one: their names must be dropped here.
+    for (VkImage image : images_) context_.forget_name(image, VK_OBJECT_TYPE_IMAGE);
 }
 
 bool Swapchain::encodes_srgb() const {
@@ -124,6 +129,7 @@ void Swapchain::recreate(VkExtent2D size) {
     VKW_CHECK(vkCreateSwapchainKHR(device, &info, nullptr, &created),
               "swapchain " + std::to_string(extent_.width) + "x" + std::to_string(extent_.height));
     destroy_views();
+    context_.forget_name(swapchain_, VK_OBJECT_TYPE_SWAPCHAIN_KHR);
     if (swapchain_) vkDestroySwapchainKHR(device, swapchain_, nullptr);
     swapchain_ = created;
     context_.set_name(swapchain_, VK_OBJECT_TYPE_SWAPCHAIN_KHR, "window swapchain");
