@@ -116,6 +116,19 @@ TEST(cli, VersionAndHelpCommand) {
     expect_clean_failure(run_vkwater("help nosuch"), 1, "no command 'nosuch'");
 }
 
+// Every command's --help ends with examples of that command (CLI habits: git, cargo, pbrt).
+TEST(cli, EveryCommandsHelpEndsWithExamples) {
+    for (const char* name : {"render", "passes", "reference", "compare", "bench", "povray", "view", "check"}) {
+        const std::string command = name;
+        SCOPED_TRACE(command);
+        const CommandRun run = run_vkwater(command + " --help");
+        EXPECT_EQ(run.exit_code, 0) << run.output;
+        const std::size_t examples = run.output.find("Examples:\n");
+        ASSERT_NE(examples, std::string::npos) << run.output;
+        EXPECT_NE(run.output.find("vkwater " + command + " ", examples), std::string::npos) << run.output;
+    }
+}
+
 TEST(cli, MissingSceneFile) {
     expect_clean_failure(run_vkwater("render /nonexistent/scene.json --out " + scratch("x.exr").string()), 1,
                          "/nonexistent/scene.json");

@@ -110,6 +110,14 @@ TEST(ViewScript, RefusesCommandsBeyondTheLastFrame) {
     }
 }
 
+// The example shipped for users (docs/viewer.md) parses, and fits the frame count it names.
+TEST(ViewScript, TheShippedTourParsesAndFitsItsFrames) {
+    const ViewScript script = load_view_script(VKWATER_SOURCE_DIR "/scenes/scripts/pool_tour.txt");
+    EXPECT_EQ(script.commands.size(), 10u);
+    EXPECT_EQ(script.frames_needed(), 600u);
+    check_script_fits(script, 600);
+}
+
 TEST(ViewScript, MissingFileIsAUserError) { EXPECT_THROW(load_view_script("/nonexistent/script.txt"), UserError); }
 
 }  // namespace

@@ -250,6 +250,10 @@ Run add_bench_command(CLI::App& app) {
         ->capture_default_str();
     command->add_option("--out-dir", args->out_dir, "Folder for sweep.csv and sweep.svg (default bench-<scene>)");
     add_device_options(*command, args->device);
+    command->footer(
+        "Examples:\n"
+        "  vkwater bench scenes/pool.json --reference build/pool-ref.exr --width 400 --height 300 --grids "
+        "64,128,256\n");
     return [args] { return run_bench(*args); };
 }
 

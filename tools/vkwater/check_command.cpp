@@ -47,6 +47,10 @@ Run add_check_command(CLI::App& app) {
     CLI::App* command =
         app.add_subcommand("check", "Read and validate a scene without a device: exit 0 if valid, else 1 and why");
     add_scene_options(*command, args->scene, args->overrides, args->allow_outside_paths);
+    command->footer(
+        "Examples:\n"
+        "  vkwater check scenes/pool.json\n"
+        "  vkwater check scenes/pool.json --set water.ior=1.5\n");
     return [args] { return run_check(*args); };
 }
 

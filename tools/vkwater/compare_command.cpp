@@ -104,6 +104,10 @@ Run add_compare_command(CLI::App& app) {
                      "from sub-texel misplacement)")
         ->check(CLI::Range(1, 4096))
         ->capture_default_str();
+    command->footer(
+        "Examples:\n"
+        "  vkwater compare build/pool.exr build/pool-ref.exr\n"
+        "  vkwater compare build/pool.exr build/pool-ref.exr --layer caustic --downsample 4\n");
     return [args] { return run_compare(*args); };
 }
 

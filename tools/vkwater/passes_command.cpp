@@ -74,6 +74,10 @@ Run add_passes_command(CLI::App& app) {
     add_image_size_options(*command, args->width, args->height);
     command->add_option("--dot", args->dot, "Also write the graph as Graphviz to this file");
     command->add_flag("--barriers", args->barriers, "Also print every derived barrier");
+    command->footer(
+        "Examples:\n"
+        "  vkwater passes scenes/pool.json\n"
+        "  vkwater passes scenes/lake.json --dot build/lake.dot\n");
     return [args] { return run_passes(*args); };
 }
 

@@ -68,6 +68,9 @@ Run add_povray_command(CLI::App& app) {
         ->add_option("--gather-radius", args->options.gather_radius,
                      "Fixed photon gather radius in metres (default 0: POV-Ray's adaptive radius)")
         ->check(CLI::NonNegativeNumber);
+    command->footer(
+        "Examples:\n"
+        "  vkwater povray scenes/calm.json --out build/calm.pov\n");
     return [args] { return run_povray(*args); };
 }
 

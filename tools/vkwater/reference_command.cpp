@@ -300,6 +300,10 @@ Run add_reference_command(CLI::App& app) {
                       "water; the caustic layer at twice the texel) and record it with --manifest");
     command->add_option("--manifest", args->manifest,
                         "Record this reference (scene hash, settings, estimated error, time) in a JSON manifest");
+    command->footer(
+        "Examples:\n"
+        "  vkwater reference scenes/calm.json --out build/calm-ref.exr\n"
+        "  vkwater reference scenes/pool.json --out build/pool-ref.exr --spp 4 --threads 2\n");
     return [args] { return run_reference(*args); };
 }
 

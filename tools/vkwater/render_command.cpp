@@ -243,6 +243,11 @@ Run add_render_command(CLI::App& app) {
                         "Also print the frame's error against this reference EXR (vkwater reference), next to "
                         "its time");
     add_device_options(*command, args->device);
+    command->footer(
+        "Examples:\n"
+        "  vkwater render scenes/pool.json --out build/pool.exr --png\n"
+        "  vkwater render scenes/pool.json --width 1920 --height 1080 --set sun.elevation_deg=30\n"
+        "  vkwater render scenes/calm.json --width 400 --height 300 --reference build/calm-ref.exr\n");
     return [args] { return run_render(*args); };
 }
 

@@ -68,6 +68,10 @@ Run add_view_command(CLI::App& app) {
         ->capture_default_str();
     command->add_flag("--paused", args->viewer.paused, "Start with the water's clock stopped");
     add_device_options(*command, args->device);
+    command->footer(
+        "Examples:\n"
+        "  vkwater view scenes/pool.json\n"
+        "  xvfb-run -a vkwater view scenes/pool.json --frames 600 --script scenes/scripts/pool_tour.txt\n");
     return [args] { return run_view(*args); };
 }
 
