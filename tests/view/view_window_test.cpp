@@ -318,6 +318,22 @@ wait "$viewer"
     EXPECT_NEAR(std::atan2(now.x, -now.z) * 180.0 / 3.14159265358979323846, 15.0, 1e-6) << output;
 }
 
+// On a CPU device a scene that would run at seconds a frame says so before its first frame, with
+// what makes it faster; an ordinary one says nothing. 1024^2 godray beams over an 80-column
+// godray image are 3.5 s a frame by the estimate (tools/vkwater/cpu_frame_estimate.hpp).
+TEST_F(ViewWindow, ASlowSceneIsAnnouncedOnACpuDevice) {
+    const std::string view = "view " + kScenes + "pool.json --frames 1 --width 160 --height 120";
+    const Outcome slow = vkwater(view + " --set effects.godrays.grid=1024");
+    ASSERT_EQ(slow.exit_code, 0) << slow.output;
+    EXPECT_NE(slow.output.find("note: 1048576 photons, 1048576 godray beams over 80 columns: about "),
+              std::string::npos)
+        << slow.output;
+    EXPECT_NE(slow.output.find("effects.godrays.grid makes it faster"), std::string::npos) << slow.output;
+    const Outcome ordinary = vkwater(view);
+    ASSERT_EQ(ordinary.exit_code, 0) << ordinary.output;
+    EXPECT_EQ(ordinary.output.find("note:"), std::string::npos) << ordinary.output;
+}
+
 TEST_F(ViewWindow, MissingSceneIsAUserError) {
     const Outcome run = vkwater("view /nonexistent/scene.json --frames 1");
     EXPECT_EQ(run.exit_code, 1) << run.output;

@@ -30,5 +30,7 @@ CpuFrameEstimate estimate_cpu_frame(const Scene& scene, const fg::FrameNeeds& ne
 
 // Above this a command prints the estimate as a note before it starts.
 inline constexpr double kSlowCpuFrameSeconds = 5.0;
+// The viewer's threshold: a frame a second is a slideshow, not a view.
+inline constexpr double kSlowViewFrameSeconds = 1.0;
 
 }  // namespace vkw::cli

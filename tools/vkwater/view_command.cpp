@@ -2,7 +2,9 @@
 // camera, the parameter panel, the statistics overlay; --frames and --script make a
 // repeatable run that exits with a summary (tests, benchmarks).
 #include "engine/core/errors.hpp"
+#include "passes/frame/frame_needs.hpp"
 #include "tools/vkwater/commands.hpp"
+#include "tools/vkwater/cpu_frame_estimate.hpp"
 #include "tools/vkwater/view/stats_overlay.hpp"
 #include "tools/vkwater/view/viewer.hpp"
 
@@ -29,6 +31,14 @@ int run_view(ViewArgs& args) {
     args.viewer.present = kModes.at(args.present);
     args.viewer.device = args.device.device;
     args.viewer.validation = args.device.validation;
+    args.viewer.cpu_frame_note = [](const Scene& scene, uint32_t width, uint32_t height) {
+        const CpuFrameEstimate estimate =
+            estimate_cpu_frame(scene, decide_frame_needs(scene, double(width) / height), width, height);
+        if (estimate.seconds <= kSlowViewFrameSeconds) return std::string();
+        return estimate.describe() +
+               " a frame on this CPU device (a smaller window, water.grid_resolution or "
+               "effects.godrays.grid makes it faster)";
+    };
     window::run_viewer(args.viewer);
     return kExitOk;
 }

@@ -162,6 +162,10 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options) {
     context_options.swapchain = true;
     context_ = std::make_unique<Context>(context_options);
     std::printf("device: %s%s\n", context_->device_name().c_str(), options_.validation ? " (with validation)" : "");
+    if (options_.cpu_frame_note && context_->is_cpu_device()) {
+        const std::string note = options_.cpu_frame_note(*scene_, options_.width, options_.height);
+        if (!note.empty()) std::printf("note: %s\n", note.c_str());
+    }
     swapchain_ =
         std::make_unique<Swapchain>(*context_, window_->create_surface(context_->instance()), options_.present);
     frames_ = std::make_unique<FramesInFlight>(*context_);

@@ -8,10 +8,12 @@
 // per-pass times. With `frames` it stops after that many frames and prints the summary.
 #pragma once
 
+#include "engine/scene/scene.hpp"
 #include "engine/window/swapchain.hpp"
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,9 @@ struct ViewerOptions {
     bool paused = false;                             // start with the water's clock stopped
     std::string device;                              // substring of the device name; empty: the best one
     bool validation = false;
+    // On a CPU device, a line to print before the first frame when the scene would run slowly
+    // there (empty: nothing to say); the command line fills it from its frame estimate.
+    std::function<std::string(const Scene& scene, uint32_t width, uint32_t height)> cpu_frame_note;
 };
 
 // Runs the viewer; prints the device, each screenshot written and, at the end, the summary
