@@ -31,11 +31,6 @@ std::string without_last_read(std::string message);
 // for any scene, and far from what overflows the stack of nlohmann::json's recursive printing.
 inline constexpr std::size_t kMaxJsonNesting = 64;
 
-// nlohmann's syntax error messages quote the token they last read, which can be a whole long
-// string (a 300-character description, a 7 KB data URI) or bytes that are not text: the message
-// without "; last read: '...'" (the line and column already point there).
-std::string without_last_read(std::string message);
-
 // The deepest nesting of objects and arrays in `text`, brackets inside strings not counted; one
 // pass, no recursion (for text that has not been parsed yet).
 std::size_t json_nesting_depth(std::string_view text);
