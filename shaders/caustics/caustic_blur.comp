@@ -8,9 +8,12 @@
 // equal flux, so n / n_flat = E / E_flat, and a density estimate's noise is 1/sqrt(photons in the
 // kernel): r = r0 sqrt(E_flat / E) keeps it about constant (focal lines stay sharp, sparse light
 // is smoothed), at most kMaxBlurRadius. The first axis computes r from the irradiance; it leaves
-// in its output's alpha the flux-weighted mean h of the light it brought to each texel, and the
-// second axis spreads each texel with that h: light keeps the width of the texel it came from
-// (a dark texel next to a focal line spreads the line's light with the line's narrow width).
+// in its output's alpha the flux-weighted mean r of the light it brought to each texel, and the
+// second axis spreads each texel with h = 1 + that r: light keeps the width of the texel it came
+// from (a dark texel next to a focal line spreads the line's light with the line's narrow width).
+// The alpha carries r, not h, so that r = 0 stays exactly 0 through the mean (0 / light): a mean
+// of h = 1 would be weighted_h / light, which a device's division (2.5 ULP in Vulkan) can round to
+// 1 + 2^-23, and a half-width above 1 reaches the neighbours.
 #extension GL_GOOGLE_include_directive : require
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -30,11 +33,11 @@ layout(push_constant) uniform Push {
 const float kMaxBlurRadius = 4.0;  // texels: at most 9 taps per axis
 const int kMaxReach = 4;
 
-float half_width_of(vec4 texel) {
+float radius_of(vec4 texel) {
     if (pc.first_axis == 0u) return texel.a;
     // The darkest texels are held at E_flat / 256 (the radius then reaches its cap anyway).
     const float e = max(texel.r + texel.g + texel.b, pc.flat_sum * (1.0 / 256.0));
-    return 1.0 + clamp(pc.radius * sqrt(pc.flat_sum / e), 0.0, kMaxBlurRadius);
+    return clamp(pc.radius * sqrt(pc.flat_sum / e), 0.0, kMaxBlurRadius);
 }
 
 // The sum of max(0, 1 - |d| / h) over the integers d strictly inside (-h, h) with at + d on the
@@ -55,20 +58,21 @@ void main() {
     if (any(greaterThanEqual(p, pc.size))) return;
     const int extent = pc.axis.x != 0 ? pc.size.x : pc.size.y;
     vec3 sum = vec3(0.0);
-    float weighted_h = 0.0;  // sum of (light brought) x (its source's h), over RGB
+    float weighted_r = 0.0;  // sum of (light brought) x (its source's r), over RGB
     for (int d = -kMaxReach; d <= kMaxReach; ++d) {
         const ivec2 q = p - d * pc.axis;
         if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, pc.size))) continue;
         const vec4 s = imageLoad(source, q);
-        const float h = half_width_of(s);
+        const float r = radius_of(s);
+        const float h = 1.0 + r;
         const float w = 1.0 - float(abs(d)) / h;
         if (w <= 0.0) continue;
         const vec3 brought = s.rgb * (w / tent_sum(pc.axis.x != 0 ? q.x : q.y, extent, h));
         sum += brought;
-        weighted_h += (brought.r + brought.g + brought.b) * h;
+        weighted_r += (brought.r + brought.g + brought.b) * r;
     }
-    // The second axis's width for this texel (1, the identity, where no light arrived).
+    // The second axis's radius for this texel (0, the identity, where no light arrived).
     const float light = sum.r + sum.g + sum.b;
-    const float own = pc.first_axis != 0u && light > 0.0 ? weighted_h / light : 1.0;
+    const float own = pc.first_axis != 0u && light > 0.0 ? weighted_r / light : 0.0;
     imageStore(target, p, vec4(sum, own));
 }
