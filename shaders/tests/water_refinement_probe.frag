@@ -3,7 +3,7 @@
 // The per-pixel refinement's probe (tests/water_gpu/surface_refinement_test.cpp): drawn with
 // the water's mesh (water/water_surface.vert), it writes the surface point each pixel shows,
 // w = 1 where it refined and 0.5 where it kept the mesh's point.
-#include "common/frame_constants.glsl"
+#include "common/camera_ray.glsl"
 #include "water/surface_refinement.glsl"
 
 layout(location = 0) in vec3 in_position;
@@ -13,7 +13,7 @@ layout(location = 0) out vec4 out_point;
 
 void main() {
     vec3 p, normal;
-    const bool refined = water_surface_of_pixel(frame.camera_position.xyz, in_position, in_normal, in_parameter, p,
-                                                normal);
+    const bool refined = water_surface_of_pixel(frame.camera_position.xyz, camera_ray_direction(gl_FragCoord.xy),
+                                                in_position, in_normal, in_parameter, p, normal);
     out_point = vec4(p, refined ? 1.0 : 0.5);
 }

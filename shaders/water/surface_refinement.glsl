@@ -66,33 +66,44 @@ bool refine_water_hit(vec3 eye, vec3 d, float t_min, float t_max, inout float t,
     return true;
 }
 
-// The surface point a pixel of the drawn mesh shows: the refined crossing of the view ray from
-// the eye through the mesh's point, or the mesh's own point and normal where refine_water_hit
-// fails. Returns whether it refined.
-bool water_surface_of_pixel(vec3 eye, vec3 mesh_position, vec3 mesh_normal, vec2 mesh_parameter, out vec3 position,
-                            out vec3 normal) {
-    if (WATER_SURFACE_MODEL == WATER_SURFACE_FLAT || params.refine_steps == 0u) {
-        position = mesh_position;
-        normal = normalize(mesh_normal);
+// The surface point a pixel of the drawn mesh shows: the refined crossing of the pixel's view
+// ray d (common/camera_ray.glsl: from the eye through the pixel's centre) with the surface, or,
+// where refine_water_hit fails, the mesh's point moved onto that ray and the mesh's normal.
+// Returns whether it refined. The ray is the pixel's own rather than the direction to the
+// rasterised mesh point: a varying interpolated over a large cell carries an error relative
+// to the cell's coordinates (tens of metres), which turns the direction by about 1e-6 rad on
+// some GPUs, and the shading amplifies that near the critical angle (Snell's window's edge).
+// Flat water's crossing is the ray's with the plane y = level, exactly.
+bool water_surface_of_pixel(vec3 eye, vec3 d, vec3 mesh_position, vec3 mesh_normal, vec2 mesh_parameter,
+                            out vec3 position, out vec3 normal) {
+    normal = normalize(mesh_normal);
+    float t = dot(mesh_position - eye, d);
+    if (WATER_SURFACE_MODEL == WATER_SURFACE_FLAT) {
+        const float to_plane = (params.level - eye.y) / d.y;
+        if (to_plane > 0.0 && !isinf(to_plane)) t = to_plane;
+        position = vec3(eye.x + t * d.x, params.level, eye.z + t * d.z);
         return false;
     }
-    float t = distance(mesh_position, eye);
-    const vec3 d = (mesh_position - eye) / t;
+    position = eye + t * d;
+    if (params.refine_steps == 0u) return false;
     vec2 parameter = mesh_parameter;
     // A cell's chord lies under a crest (seen from above; over a trough from below), within the
     // sag of the surface: the first crossing lies within sag / |cos| of the mesh point along the
     // ray. Newton starts that far in front, so that it converges to the first crossing rather
     // than to the next crest's, and a solution outside that window is another crossing.
-    const float back = min(params.mesh_sag / max(abs(dot(d, normalize(mesh_normal))), 0.05), 0.5 * t);
+    const float back = min(params.mesh_sag / max(abs(dot(d, normal)), 0.05), 0.5 * t);
     const float slack = REFINEMENT_RELATIVE_TOLERANCE * (1.0 + t);
     const float t_min = t - back - slack, t_max = t + back + slack;
     float t_before = t - back;
     vec2 parameter_before = parameter - back * d.xz;
-    if (refine_water_hit(eye, d, t_min, t_max, t_before, parameter_before, position, normal)) return true;
-    // Too far in front for Newton to converge in the steps given: from the mesh point itself.
-    if (back > 0.0 && refine_water_hit(eye, d, t_min, t_max, t, parameter, position, normal)) return true;
-    position = mesh_position;
-    normal = normalize(mesh_normal);
+    vec3 refined_position, refined_normal;
+    if (refine_water_hit(eye, d, t_min, t_max, t_before, parameter_before, refined_position, refined_normal) ||
+        // Too far in front for Newton to converge in the steps given: from the mesh point itself.
+        (back > 0.0 && refine_water_hit(eye, d, t_min, t_max, t, parameter, refined_position, refined_normal))) {
+        position = refined_position;
+        normal = refined_normal;
+        return true;
+    }
     return false;
 }
 

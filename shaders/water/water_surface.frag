@@ -128,11 +128,11 @@ vec3 radiance_in_water(vec3 p, vec3 d, bool reflected, float weight, out float l
 
 void main() {
     vec3 eye = frame.camera_position.xyz;
-    // The exact surface where the view ray crosses it; the mesh's point and normal where
-    // Newton's method does not converge (water/surface_refinement.glsl).
+    const vec3 v = camera_ray_direction(gl_FragCoord.xy);  // the pixel's view ray
+    // The exact surface where the view ray crosses it; the mesh's point (moved onto the ray) and
+    // normal where Newton's method does not converge (water/surface_refinement.glsl).
     vec3 p, normal;  // normal: toward the air
-    water_surface_of_pixel(eye, in_position, in_normal, in_parameter, p, normal);
-    vec3 v = normalize(p - eye);
+    water_surface_of_pixel(eye, v, in_position, in_normal, in_parameter, p, normal);
     float n = frame.water.y;
 
     if (!eye_in_water()) {

@@ -43,6 +43,8 @@ Scene surface_scene(const std::vector<std::string>& overrides) {
 struct Result {
     double worst = 0.0;
     int pixels = 0;
+    double worst_cos_i = 0.0;  // where the worst difference is, for the failure message
+    uint32_t worst_x = 0, worst_y = 0;
 };
 Result compare(const Scene& scene, const ImageRGBA32F& image,
                const std::function<glm::dvec3(double cos_i, double path)>& expected) {
@@ -58,7 +60,8 @@ Result compare(const Scene& scene, const ImageRGBA32F& image,
             const float* got = &image.rgba[4 * (size_t(y) * kWidth + x)];
             for (int c = 0; c < 3; ++c) {
                 if (want[c] <= 0.0) continue;
-                result.worst = std::max(result.worst, std::abs(got[c] / want[c] - 1.0));
+                const double difference = std::abs(got[c] / want[c] - 1.0);
+                if (difference > result.worst) result = {difference, result.pixels, cos_i, x, y};
             }
             ++result.pixels;
         }
@@ -89,7 +92,8 @@ TEST_F(SurfaceShading, ExactFresnelReflectsTheSky) {
     const RenderResult rendered = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
     const Result r =
         compare(scene, rendered.image, [](double c, double) { return glm::dvec3(kSky * exact_reflectance(c)); });
-    std::printf("exact: %d pixels, worst %.2e\n", r.pixels, r.worst);
+    std::printf("exact: %d pixels, worst %.2e at (%u, %u), cos_i %.4f\n", r.pixels, r.worst, r.worst_x, r.worst_y,
+                r.worst_cos_i);
     EXPECT_GT(r.pixels, int(kWidth * kHeight) / 2);
     EXPECT_LE(r.worst, kChainTolerance);
 }
@@ -100,7 +104,8 @@ TEST_F(SurfaceShading, Seed001PowerTermFresnel) {
     const RenderResult rendered = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
     const Result r =
         compare(scene, rendered.image, [](double c, double) { return glm::dvec3(kSky * std::pow(1.0 - c, kPower)); });
-    std::printf("power term q = 4.5: %d pixels, worst %.2e\n", r.pixels, r.worst);
+    std::printf("power term q = 4.5: %d pixels, worst %.2e at (%u, %u), cos_i %.4f\n", r.pixels, r.worst, r.worst_x,
+                r.worst_y, r.worst_cos_i);
     EXPECT_GT(r.pixels, int(kWidth * kHeight) / 2);
     EXPECT_LE(r.worst, kChainTolerance);
 }
@@ -113,7 +118,8 @@ TEST_F(SurfaceShading, SchlickFresnel) {
     const Result r = compare(scene, rendered.image, [r0](double c, double) {
         return glm::dvec3(kSky * (r0 + (1.0 - r0) * std::pow(1.0 - c, 5.0)));
     });
-    std::printf("Schlick: %d pixels, worst %.2e\n", r.pixels, r.worst);
+    std::printf("Schlick: %d pixels, worst %.2e at (%u, %u), cos_i %.4f\n", r.pixels, r.worst, r.worst_x, r.worst_y,
+                r.worst_cos_i);
     EXPECT_LE(r.worst, kChainTolerance);
 }
 
@@ -126,7 +132,8 @@ TEST_F(SurfaceShading, Seed001DepthColourBlend) {
         // The black floor fades to C_w over the path; T and the n^2 of the radiance crossing the surface.
         return glm::dvec3(kSky * R) + (1.0 - R) * kWaterColour * (1.0 - std::exp(-kBlendK * path)) / (kIor * kIor);
     });
-    std::printf("power term + depth colour: %d pixels, worst %.2e\n", r.pixels, r.worst);
+    std::printf("power term + depth colour: %d pixels, worst %.2e at (%u, %u), cos_i %.4f\n", r.pixels, r.worst,
+                r.worst_x, r.worst_y, r.worst_cos_i);
     EXPECT_GT(r.pixels, int(kWidth * kHeight) / 2);
     EXPECT_LE(r.worst, kChainTolerance);
 }
