@@ -4,6 +4,10 @@
 #include <gtest/gtest.h>
 
 #include "engine/image/exr_io.hpp"
+#include "engine/vk/context.hpp"
+#include "passes/caustics/caustics_camera_receivers.hpp"
+#include "passes/caustics/caustics_camera_splats.hpp"
+#include "passes/water/water_surface.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -59,6 +63,32 @@ std::vector<std::string> csv_fields(const std::string& line) {
     return fields;
 }
 
+// The limits of the device vkwater picks by default (the same rule: a discrete GPU, then an
+// integrated one, then lavapipe), read once. The tests of requests beyond the device size them
+// from these, so they hold on any device, and skip where nothing the formats accept goes beyond.
+struct DeviceLimits {
+    std::string name;
+    VkDeviceSize storage_range = 0;  // maxStorageBufferRange
+    VkDeviceSize largest_heap = 0;
+    uint32_t max_image_side = 0;  // maxImageDimension2D
+};
+
+const DeviceLimits& default_device_limits() {
+    static const DeviceLimits limits = [] {
+        const vkw::Context context(vkw::ContextOptions{});
+        DeviceLimits read;
+        read.name = context.device_name();
+        read.storage_range = context.properties().limits.maxStorageBufferRange;
+        read.max_image_side = context.properties().limits.maxImageDimension2D;
+        VkPhysicalDeviceMemoryProperties memory;
+        vkGetPhysicalDeviceMemoryProperties(context.physical_device(), &memory);
+        for (uint32_t i = 0; i < memory.memoryHeapCount; ++i)
+            read.largest_heap = std::max(read.largest_heap, memory.memoryHeaps[i].size);
+        return read;
+    }();
+    return limits;
+}
+
 void expect_clean_failure(const CommandRun& run, int exit_code, const std::string& needle) {
     EXPECT_EQ(run.exit_code, exit_code) << run.output;
     EXPECT_NE(run.output.find(needle), std::string::npos) << "expected '" << needle << "' in:\n" << run.output;
@@ -84,9 +114,24 @@ TEST(cli, RenderDefaultSceneWithValidationSucceeds) {
 }
 
 TEST(cli, CameraSpaceSplatsBeyondOneStorageBindingAreAUserError) {
-    // 4000x3000 needs 820 MiB of flux for the camera-space splats; lavapipe binds 128 MiB.
-    const CommandRun run = run_vkwater("render " + kPool + " --out " + scratch("big.exr").string() +
-                                       " --width 4000 --height 3000 --set effects.caustics.splat=camera-space");
+    // The smallest 4:3 output (in steps of 256x192 pixels) whose camera-space flux buffer is
+    // larger than one storage binding of the device.
+    const DeviceLimits& device = default_device_limits();
+    uint32_t width = 0, height = 0;
+    for (uint32_t step = 1; 256 * step <= device.max_image_side; ++step) {
+        const uint32_t w = 256 * step, h = 192 * step;
+        if (vkw::passes::camera_caustic_flux_bytes(vkw::passes::camera_caustic_extent(w, h)) > device.storage_range) {
+            width = w, height = h;
+            break;
+        }
+    }
+    if (width == 0) {
+        GTEST_SKIP() << "every output up to " << device.max_image_side << " pixels a side fits one storage binding of '"
+                     << device.name << "' (" << (device.storage_range >> 20) << " MiB)";
+    }
+    const CommandRun run =
+        run_vkwater("render " + kPool + " --out " + scratch("big.exr").string() + " --width " + std::to_string(width) +
+                    " --height " + std::to_string(height) + " --set effects.caustics.splat=camera-space");
     EXPECT_EQ(run.exit_code, 1) << run.output;
     EXPECT_NE(run.output.find("pool.json: effects.caustics.splat"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("or splat light-space"), std::string::npos) << run.output;
@@ -429,9 +474,21 @@ TEST(cli, ImageSizeOutOfRange) {
 }
 
 TEST(cli, WaterGridBeyondTheDeviceIsAUserError) {
-    expect_clean_failure(
-        run_vkwater("render " + kPool + " --out " + scratch("x.exr").string() + " --set water.grid_resolution=4096"), 1,
-        "water.grid_resolution: 4096 needs");
+    // The renderer's rule (passes/frame/renderer.cpp): the surface's vertices in one storage
+    // binding and within a quarter of the largest heap. The smallest power-of-two grid beyond
+    // it, if the scene format (at most 4096 cells a side) accepts one.
+    const DeviceLimits& device = default_device_limits();
+    const VkDeviceSize limit = std::min(device.largest_heap / 4, device.storage_range);
+    uint32_t grid = 2;
+    while (grid <= 4096 && vkw::passes::water_surface_bytes(grid) <= limit) grid *= 2;
+    if (grid > 4096) {
+        GTEST_SKIP() << "every water grid the scene format accepts (up to 4096 cells a side) fits '" << device.name
+                     << "' (" << (limit >> 20) << " MiB for the surface)";
+    }
+    const std::string cells = std::to_string(grid);
+    expect_clean_failure(run_vkwater("render " + kPool + " --out " + scratch("x.exr").string() +
+                                     " --set water.grid_resolution=" + cells),
+                         1, "water.grid_resolution: " + cells + " needs");
 }
 
 TEST(cli, NoVulkanDeviceIsExitTwo) {
