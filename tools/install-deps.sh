@@ -29,6 +29,8 @@ packages=(
   # the sanitizer and fuzzing build of the loaders (tests/sanitize, tests/fuzz): clang with its
   # AddressSanitizer, UndefinedBehaviorSanitizer and libFuzzer runtimes
   clang-14 libclang-rt-14-dev
+  # the bundle that carries the build to a machine without these packages (tools/gpu-bundle.sh)
+  xz-utils
 )
 
 sudo_cmd=()
