@@ -1,6 +1,7 @@
 // make_surface: picks the model of a WaveSettings (surface.hpp).
 #include <cmath>
 #include <memory>
+#include <mutex>
 
 #include "engine/core/errors.hpp"
 #include "engine/water/fft_ocean_surface.hpp"
@@ -25,6 +26,23 @@ std::unique_ptr<WaterSurface> make_surface(const WaveSettings& settings, double 
         }
     }
     throw InternalError("make_surface: unknown wave model");
+}
+
+double frame_amplitude_bound(const WaveSettings& settings, double level, double time) {
+    if (settings.model != WaveModel::FftOcean) return make_surface(settings, level, time)->max_amplitude();
+    validate_waves(settings);
+    const std::shared_ptr<const FftOceanSpectrum> spectrum = shared_ocean_spectrum(settings.ocean, settings.seed);
+    // The last spectrum's bound, kept with the spectrum itself (holding it keeps its address
+    // from being reused by another).
+    static std::mutex mutex;
+    static std::shared_ptr<const FftOceanSpectrum> last;
+    static double last_bound = 0.0;
+    const std::lock_guard lock(mutex);
+    if (last != spectrum) {
+        last_bound = spectrum->amplitude_bound();
+        last = spectrum;
+    }
+    return last_bound;
 }
 
 }  // namespace vkw

@@ -75,4 +75,11 @@ public:
 // Throws vkw::UserError (validate_waves) for settings a scene must not contain.
 std::unique_ptr<WaterSurface> make_surface(const WaveSettings& settings, double level, double time);
 
+// A bound on |h| for the frame's needs and culling margins, at a cost a frame can pay every
+// time: the sums of sines and Gerstner waves give their surface's own max_amplitude(); the FFT
+// ocean gives its spectrum's all-time bound 2 sum |h0| (FftOceanSpectrum::amplitude_bound, kept
+// while the spectrum stays), not the tighter sum |h~(k, t)| of its surface at `time`, which
+// costs a complex exponential per mode (65,536 of them at 256^2: milliseconds of CPU a frame).
+double frame_amplitude_bound(const WaveSettings& settings, double level, double time);
+
 }  // namespace vkw

@@ -167,7 +167,7 @@ void decide_godrays(fg::FrameNeeds& needs, const Scene& scene, const WaterBounds
 
 WaterBounds water_bounds(const Scene& scene) {
     const Water& water = *scene.water;
-    const double amplitude = make_surface(water.waves, water.level, water.time)->max_amplitude();
+    const double amplitude = frame_amplitude_bound(water.waves, water.level, water.time);
     // Gerstner and choppy waves also move points sideways, by at most the amplitude
     // bound for the models here; widen the box by it too.
     return {{-water.half_extent - amplitude, std::min(water_bottom(scene), water.level - amplitude),

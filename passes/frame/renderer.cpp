@@ -408,6 +408,9 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
                             " thousand output pixels; or splat light-space)");
         }
     }
+    // The CPU's share of the frame, timed from the needs' decision to the compiled graph: the
+    // decision runs every frame too (it reads the camera and the waves' bounds).
+    const auto declare_start = std::chrono::steady_clock::now();
     fg::FrameNeeds needs = decide_frame_needs(scene, double(options.width) / double(options.height));
     *constants_ = make_frame_constants(scene, options.width, options.height);
     // Counted once (docs/model.md section 1): the godray passes, when they run, are the
@@ -422,7 +425,6 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
     // The graph is declared and compiled every frame (what its passes capture, the clock and
     // every setting, is new each frame); the device objects are made only when the compiled
     // graph's physical signature changes.
-    const auto declare_start = std::chrono::steady_clock::now();
     auto graph = std::make_unique<fg::FrameGraph>(std::move(needs));
     graph->set_default_recording(options.recording);
     build_frame_graph(*graph, scene, constants_.get(), options.width, options.height, readback.hdr.handle(), ocean,

@@ -99,7 +99,7 @@ public:
     size_t realize_count() const { return realize_count_; }
     // How many times the photon culling's read region was computed (it is reused while the camera stays).
     uint64_t read_regions_computed() const { return read_regions_.computed(); }
-    // The CPU time of the last frame's declaration and compilation, in milliseconds.
+    // The CPU time of the last frame's needs decision, declaration and compilation, in milliseconds.
     double last_declare_ms() const { return last_declare_ms_; }
 
 private:

@@ -207,6 +207,33 @@ TEST(water_ocean, MaxAmplitudeBoundsTheHeights) {
     EXPECT_LE(surface.max_amplitude(), surface.spectrum().amplitude_bound());
 }
 
+TEST(water_ocean, TheFramesAmplitudeBoundIsTheSpectrumsAllTimeOneAndHoldsAtEveryTime) {
+    // The frame reads the bound without building the surface (surface.hpp): the spectrum's
+    // 2 sum |h0|, the same value however the time moves, and never below the surface's own.
+    WaveSettings waves;
+    waves.model = WaveModel::FftOcean;
+    waves.ocean = small_ocean(64);
+    waves.seed = 6;
+    const double all_time = shared_ocean_spectrum(waves.ocean, waves.seed)->amplitude_bound();
+    for (const double time : {0.0, 1.3, 8.0, 1000.0}) {
+        const double bound = frame_amplitude_bound(waves, -0.5, time);
+        EXPECT_EQ(bound, all_time) << "time " << time;
+        EXPECT_GE(bound, make_surface(waves, -0.5, time)->max_amplitude()) << "time " << time;
+    }
+    // Another seed is another spectrum, with its own bound.
+    waves.seed = 7;
+    EXPECT_EQ(frame_amplitude_bound(waves, 0.0, 0.0), shared_ocean_spectrum(waves.ocean, 7)->amplitude_bound());
+    EXPECT_NE(frame_amplitude_bound(waves, 0.0, 0.0), all_time);
+    // The other models give their surface's own bound.
+    WaveSettings sines;
+    sines.model = WaveModel::Sum;
+    WaveComponent sine;
+    sine.amplitude = 0.05;
+    sine.wavelength = 2.0;
+    sines.components = {sine};
+    EXPECT_EQ(frame_amplitude_bound(sines, 0.0, 2.0), make_surface(sines, 0.0, 2.0)->max_amplitude());
+}
+
 TEST(water_ocean, BadSettingsAreRefusedNamingTheField) {
     FftOceanSettings ocean = small_ocean(12);
     try {
