@@ -63,12 +63,7 @@ uint64_t FrameGraph::created_bytes(uint32_t pass) const {
 
 std::string FrameGraph::describe() const {
     const CompiledGraph& compiled = this->compiled();
-    std::string text = "needs:\n";
-    if (needs_.decisions.empty()) text += "  (no decisions: every effect is needed)\n";
-    for (const EffectDecision& decision : needs_.decisions) {
-        text += std::string("  ") + decision.effect.name + ": " + (decision.needed ? "on" : "off") +
-                (decision.forced ? " (forced)" : "") + " - " + decision.reason + "\n";
-    }
+    std::string text = needs_.describe();
     text += "passes, in execution order:\n";
     for (size_t position = 0; position < compiled.order.size(); ++position) {
         const PassDecl& pass = passes_[compiled.order[position]];

@@ -22,6 +22,16 @@ std::string FrameNeeds::key() const {
     return key;
 }
 
+std::string FrameNeeds::describe() const {
+    std::string text = "needs:\n";
+    if (decisions.empty()) text += "  (no decisions: every effect is needed)\n";
+    for (const EffectDecision& decision : decisions) {
+        text += std::string("  ") + decision.effect.name + ": " + (decision.needed ? "on" : "off") +
+                (decision.forced ? " (forced)" : "") + " - " + decision.reason + "\n";
+    }
+    return text;
+}
+
 void FrameNeeds::decide(EffectTag effect, bool needed, std::string reason, bool forced) {
     for (EffectDecision& decision : decisions) {
         if (decision.effect == effect) {

@@ -7,8 +7,12 @@
 namespace vkw {
 
 RenderResult render_filtered(Renderer& renderer, const Scene& scene, const RenderOptions& options,
-                             const PixelFilter& filter) {
-    if (!filter.is_box()) return renderer.render(scene, options);
+                             const PixelFilter& filter, const std::function<void(uint32_t done)>& after_sub_frame) {
+    if (!filter.is_box()) {
+        RenderResult result = renderer.render(scene, options);
+        if (after_sub_frame) after_sub_frame(1);
+        return result;
+    }
     Scene shifted = scene;
     RenderResult sum;
     std::vector<std::vector<float>> layers;  // the sums of the sub-frames' layers, as the first names them
@@ -16,6 +20,7 @@ RenderResult render_filtered(Renderer& renderer, const Scene& scene, const Rende
         shifted.camera.image_shift_ndc =
             image_shift_for_pixel_offset(filter.stratum_centre(i), options.width, options.height);
         RenderResult sub = renderer.render(shifted, options);
+        if (after_sub_frame) after_sub_frame(i + 1);
         if (i == 0) {
             sum = std::move(sub);
             for (const ExtraLayer& layer : sum.image.layers) layers.push_back(layer.rgb);

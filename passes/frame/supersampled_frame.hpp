@@ -8,9 +8,15 @@
 #include "engine/scene/pixel_filter.hpp"
 #include "passes/frame/renderer.hpp"
 
+#include <cstdint>
+#include <functional>
+
 namespace vkw {
 
+// `after_sub_frame`, if given, is called with the number of sub-frames done after each one (a
+// command's progress report).
 RenderResult render_filtered(Renderer& renderer, const Scene& scene, const RenderOptions& options,
-                             const PixelFilter& filter);
+                             const PixelFilter& filter,
+                             const std::function<void(uint32_t done)>& after_sub_frame = nullptr);
 
 }  // namespace vkw

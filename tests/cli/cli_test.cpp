@@ -456,6 +456,53 @@ TEST(cli, TheReferenceReportsProgressOffATerminal) {
     EXPECT_NE(run.output.find("reference: 100%\n"), std::string::npos) << run.output;
 }
 
+// -q keeps the errors alone; -v adds render's decisions; they exclude each other.
+TEST(cli, QuietPrintsOnlyErrors) {
+    const std::string calm = std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json";
+    const fs::path out = scratch("quiet.exr");
+    fs::remove(out);
+    const CommandRun quiet = run_vkwater("render " + calm + " --width 16 --height 12 -q --out " + out.string(),
+                                         "VKWATER_PROGRESS_DELAY_S=0");
+    EXPECT_EQ(quiet.exit_code, 0) << quiet.output;
+    EXPECT_EQ(quiet.output, "");  // no report and no progress
+    EXPECT_TRUE(fs::exists(out));
+    // Before the command too, and an error still gets its one line.
+    const CommandRun error = run_vkwater("-q render " + calm + " --set water.ior=0 --out " + out.string());
+    EXPECT_EQ(error.exit_code, 1) << error.output;
+    EXPECT_EQ(std::count(error.output.begin(), error.output.end(), '\n'), 1) << error.output;
+    EXPECT_NE(error.output.find("water.ior"), std::string::npos) << error.output;
+}
+
+TEST(cli, VerboseRenderGivesEachEffectsDecision) {
+    const CommandRun run =
+        run_vkwater("render " + std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json --width 16 --height 12 -v --out " +
+                    scratch("verbose.exr").string());
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    EXPECT_NE(run.output.find("needs:\n  water: on - "), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("  caustics: off - the water is flat"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("pass times"), std::string::npos) << run.output;
+    expect_clean_failure(run_vkwater("render x.json -q -v"), 1, "--quiet and --verbose: choose one");
+}
+
+// render reports its frames' progress as reference does, after its first second (the variable
+// sets the delay: 0 reports at once, 1000 never within this test).
+TEST(cli, RenderReportsProgressOffATerminalAfterItsDelay) {
+    const std::string command = "render " + std::string(VKWATER_SOURCE_DIR) +
+                                "/scenes/calm.json --width 16 --height 12 --repeat 2 --spp 4 --out " +
+                                scratch("progress-render.exr").string();
+    const CommandRun at_once = run_vkwater(command, "VKWATER_PROGRESS_DELAY_S=0");
+    ASSERT_EQ(at_once.exit_code, 0) << at_once.output;
+    // 8 sub-frames: every tenth is reached, each printed once.
+    for (int tenth = 1; tenth <= 10; ++tenth) {
+        const std::string line = "render: " + std::to_string(10 * tenth) + "%\n";
+        EXPECT_NE(at_once.output.find(line), std::string::npos) << line << at_once.output;
+        EXPECT_EQ(at_once.output.find(line), at_once.output.rfind(line)) << line << at_once.output;
+    }
+    const CommandRun delayed = run_vkwater(command, "VKWATER_PROGRESS_DELAY_S=1000");
+    ASSERT_EQ(delayed.exit_code, 0) << delayed.output;
+    EXPECT_EQ(delayed.output.find("render: "), std::string::npos) << delayed.output;
+}
+
 TEST(cli, UnknownFlag) {
     const CommandRun run = run_vkwater("render " + kPool + " --out x.exr --no-such-flag");
     EXPECT_EQ(run.exit_code, 1) << run.output;

@@ -1,6 +1,7 @@
 // vkwater: the command-line entry point. Subcommands live in one file each.
 #include "engine/core/errors.hpp"
 #include "tools/vkwater/commands.hpp"
+#include "tools/vkwater/console.hpp"
 
 #include <cstdio>
 #include <map>
@@ -10,6 +11,12 @@ int main(int argc, char** argv) {
     CLI::App app{"vkwater: a Vulkan renderer for water with compute-shader caustics"};
     app.set_version_flag("--version", "vkwater " VKWATER_VERSION);
     app.require_subcommand(1);
+    // Accepted before or after the command (fallthrough): vkwater -q render ..., vkwater render ... -q.
+    bool quiet = false, verbose = false;
+    app.add_flag("-q,--quiet", quiet, "Print errors only");
+    app.add_flag("-v,--verbose", verbose,
+                 "Print more: render gives each effect's decision and its reason before the pass times");
+    app.fallthrough();
     std::map<CLI::App*, vkw::cli::Run> commands;
     auto add = [&](vkw::cli::Run (*register_command)(CLI::App&)) {
         const size_t before = app.get_subcommands({}).size();
@@ -41,6 +48,13 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "vkwater: %s (vkwater help [COMMAND] lists the options)\n", error.what());
         return vkw::kExitUserError;
     }
+    if (quiet && verbose) {
+        std::fprintf(stderr, "vkwater: --quiet and --verbose: choose one\n");
+        return vkw::kExitUserError;
+    }
+    vkw::cli::set_verbosity(quiet     ? vkw::cli::Verbosity::Quiet
+                            : verbose ? vkw::cli::Verbosity::Verbose
+                                      : vkw::cli::Verbosity::Normal);
     if (help->parsed()) {
         if (help_topic.empty()) {
             // app.help() would print the parsed subcommand's (help's own): format the app itself.

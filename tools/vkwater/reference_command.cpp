@@ -10,9 +10,9 @@
 #include "tools/reference/reference_renderer.hpp"
 #include "tools/reference/scene_hash.hpp"
 #include "tools/vkwater/commands.hpp"
+#include "tools/vkwater/console.hpp"
 #include "tools/vkwater/image_provenance.hpp"
 
-#include <unistd.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -199,23 +199,9 @@ int run_reference(const ReferenceArgs& args) {
     options.quality.ocean_floor_texels = args.floor_texels;
     options.measure_texels = args.measure_texels;
     options.quality.caustics_over_footprints = args.footprint_caustics;
-    // A progress bar on a terminal; elsewhere (logs, CI) a line at every tenth, so that a long
-    // reference is never silent.
-    if (::isatty(STDERR_FILENO)) {
-        options.progress = [](double fraction) {
-            const int filled = static_cast<int>(fraction * 40);
-            std::fprintf(stderr, "\r[%-40.*s] %3d%%", filled, "########################################",
-                         static_cast<int>(fraction * 100));
-            if (fraction >= 1.0) std::fprintf(stderr, "\n");
-        };
-    } else {
-        options.progress = [next = 1](double fraction) mutable {
-            while (next <= 10 && fraction >= next / 10.0) {
-                std::fprintf(stderr, "reference: %d%%\n", next * 10);
-                ++next;
-            }
-        };
-    }
+    // From the start: a reference is never quick enough to leave silent (console.hpp).
+    auto progress = std::make_shared<Progress>("reference");
+    options.progress = [progress](double fraction) { progress->report(fraction); };
     const auto start = std::chrono::steady_clock::now();
     ref::ReferenceReport report;
     ImageRGBA32F image = ref::render_reference(scene, options, &report);

@@ -13,6 +13,7 @@
 #include "tools/metrics/metrics.hpp"
 #include "tools/metrics/reference_errors.hpp"
 #include "tools/vkwater/commands.hpp"
+#include "tools/vkwater/console.hpp"
 #include "tools/vkwater/cpu_frame_estimate.hpp"
 #include "tools/vkwater/image_provenance.hpp"
 
@@ -121,6 +122,9 @@ int run_render(const RenderArgs& args) {
         }
     }
 
+    // -v: the frame's decisions, as the renderer takes them (vkwater passes prints the whole graph).
+    if (verbose()) std::printf("%s", decide_frame_needs(scene, double(args.width) / args.height).describe().c_str());
+
     RenderOptions options;
     options.width = args.width;
     options.height = args.height;
@@ -133,8 +137,14 @@ int run_render(const RenderArgs& args) {
     double declare_ms = 0.0;
     {
         Renderer renderer(*context);  // its pipelines must go before the device
-        for (uint32_t frame = 0; frame < args.repeat; ++frame)
-            result = render_filtered(renderer, scene, options, filter);
+        // After the first second only: most renders take less (console.hpp).
+        Progress progress("render", 1.0);
+        const double sub_frames = double(args.repeat) * filter.samples;
+        for (uint32_t frame = 0; frame < args.repeat; ++frame) {
+            result = render_filtered(renderer, scene, options, filter, [&](uint32_t done) {
+                progress.report((double(frame) * filter.samples + done) / sub_frames);
+            });
+        }
         declare_ms = renderer.last_declare_ms();
     }
 
