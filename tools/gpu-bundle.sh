@@ -35,7 +35,8 @@ if [ "$verb" = pack ]; then
     done
   programs=$(find "$stage/build" -type f -executable -exec sh -c 'head -c 4 "$1" | grep -q ELF && echo "$1"' _ {} \;)
   strip $programs
-  layer=$(ldconfig -p | awk '/libVkLayer_khronos_validation.so / {print $NF; exit}')
+  # (awk reads to the end: exiting early would kill ldconfig with SIGPIPE, which pipefail reports)
+  layer=$(ldconfig -p | awk '/libVkLayer_khronos_validation.so / && !found {print $NF; found = 1}')
   [ -n "$layer" ] || { echo "gpu-bundle: the validation layer is not installed (tools/install-deps.sh)" >&2; exit 1; }
   for library in $(ldd $programs "$layer" | awk '/=>/ {print $3}' | sort -u); do
     case $(basename "$library") in
@@ -44,7 +45,7 @@ if [ "$verb" = pack ]; then
     esac
   done
   for library in libGLdispatch.so.0 libGLX.so.0 libGL.so.1 libEGL.so.1 libOpenGL.so.0; do
-    path=$(ldconfig -p | awk -v name="$library" '$1 == name {print $NF; exit}')
+    path=$(ldconfig -p | awk -v name="$library" '$1 == name && !found {print $NF; found = 1}')
     [ -z "$path" ] || cp -L "$path" "$stage/lib/"
   done
   cp -L "$layer" "$stage/lib/"
