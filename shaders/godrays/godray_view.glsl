@@ -6,6 +6,7 @@
 #ifndef VKWATER_GODRAY_VIEW_GLSL
 #define VKWATER_GODRAY_VIEW_GLSL
 
+#include "common/camera_ray.glsl"
 #include "common/frame_constants.glsl"
 #include "common/fresnel.glsl"
 
@@ -32,10 +33,12 @@ vec3 godray_unproject(vec2 ndc, float depth) {
 
 GodrayView godray_view(vec2 size) {
     const vec3 eye = frame.camera_position.xyz;
-    const vec3 centre = godray_unproject(vec2(0.0), 1.0);  // the near plane's centre
+    // On the far plane: near-plane points, centimetres from the eye, lose bits to the subtraction
+    // (common/camera_ray.glsl).
+    const vec3 centre = godray_unproject(vec2(0.0), 0.0);  // the far plane's centre
     const float axis = distance(centre, eye);
-    const float tan_x = distance(godray_unproject(vec2(1.0, 0.0), 1.0), centre) / axis;
-    const float tan_y = distance(godray_unproject(vec2(0.0, 1.0), 1.0), centre) / axis;
+    const float tan_x = distance(godray_unproject(vec2(1.0, 0.0), 0.0), centre) / axis;
+    const float tan_y = distance(godray_unproject(vec2(0.0, 1.0), 0.0), centre) / axis;
     return GodrayView(eye, (centre - eye) / axis, size, (2.0 * tan_x / size.x) * (2.0 * tan_y / size.y));
 }
 
@@ -49,8 +52,7 @@ vec3 godray_project(GodrayView view, vec3 p) {
 
 // The unit ray through continuous pixel coordinates `pixel` at a resolution of `size`.
 vec3 godray_pixel_ray(vec2 pixel, vec2 size) {
-    const vec2 ndc = vec2(2.0 * pixel.x / size.x - 1.0, 1.0 - 2.0 * pixel.y / size.y);
-    return normalize(godray_unproject(ndc, 1.0) - frame.camera_position.xyz);
+    return camera_ray_through_ndc(vec2(2.0 * pixel.x / size.x - 1.0, 1.0 - 2.0 * pixel.y / size.y));
 }
 
 // Solid angle of the pixel whose ray is `direction`: its image-plane area times cos^3 of the angle

@@ -7,6 +7,7 @@
 #ifndef VKWATER_SCENE_VIEW_GLSL
 #define VKWATER_SCENE_VIEW_GLSL
 
+#include "common/camera_ray.glsl"
 #include "common/frame_constants.glsl"
 
 // Tangent of the view's half field of view over the camera's: the guard band.
@@ -41,9 +42,7 @@ bool scene_view_uv(vec3 p, bool mirrored, out vec2 uv) {
 // The world point a view texel shows at distance a from the view's eye.
 vec3 scene_view_point(vec2 uv, float a, bool mirrored) {
     vec2 ndc = vec2(2.0 * uv.x - 1.0, 1.0 - 2.0 * uv.y) * SCENE_VIEW_GUARD;
-    vec4 on_near_plane = frame.inv_view_proj * vec4(ndc, 1.0, 1.0);
-    vec3 eye = frame.camera_position.xyz;
-    vec3 p = eye + a * normalize(on_near_plane.xyz / on_near_plane.w - eye);
+    vec3 p = frame.camera_position.xyz + a * camera_ray_through_ndc(ndc);
     return mirrored ? mirrored_in_water_plane(p) : p;
 }
 
