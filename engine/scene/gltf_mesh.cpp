@@ -12,13 +12,16 @@
 #include <cstring>
 #include <initializer_list>
 #include <memory>
+#include <set>
 #include <string>
+#include <vector>
 
 #include <glm/gtc/quaternion.hpp>
 
 #include "engine/core/errors.hpp"
 #include "engine/core/message_text.hpp"
 #include "engine/scene/file_scope.hpp"
+#include "engine/scene/gltf_material_note.hpp"
 #include "engine/scene/json_text.hpp"
 #include "engine/scene/range.hpp"
 
@@ -117,6 +120,7 @@ public:
         if (depth > kMaxNodeDepth) fail("nodes nested more than " + std::to_string(kMaxNodeDepth) + " deep (a cycle?)");
         const tinygltf::Node& node = model_.nodes[std::size_t(index)];
         const glm::dmat4 transform = parent * local_transform(node);
+        if (node.skin >= 0 && node.mesh >= 0) skinned_.push_back("nodes[" + std::to_string(index) + "]");
         if (node.mesh >= 0) add_mesh(mesh, node.mesh, transform);
         for (const int child : node.children) add_node(mesh, child, transform, depth + 1);
     }
@@ -128,6 +132,21 @@ public:
         for (std::size_t p = 0; p < source.primitives.size(); ++p) {
             const std::string mesh_name = source.name.empty() ? name : "mesh '" + source.name + "' (" + name + ")";
             add_primitive(mesh, source.primitives[p], mesh_name + ", primitive " + std::to_string(p), transform);
+        }
+    }
+
+    // After the last primitive: one line for each kind of content left out, naming the first few.
+    void add_content_warnings(Mesh& mesh) const {
+        const auto listed = [](const std::vector<std::string>& names) {
+            std::string text;
+            for (std::size_t i = 0; i < names.size() && i < 3; ++i) text += (i ? "; " : "") + names[i];
+            if (names.size() > 3) text += "; and " + std::to_string(names.size() - 3) + " more";
+            return text;
+        };
+        if (!skipped_.empty()) mesh.warnings.push_back("skipped, not triangles: " + listed(skipped_));
+        if (!skinned_.empty()) mesh.warnings.push_back("skins ignored, drawn in the bind pose: " + listed(skinned_));
+        if (!morphed_.empty()) {
+            mesh.warnings.push_back("morph targets ignored, drawn in the base shape: " + listed(morphed_));
         }
     }
 
@@ -201,9 +220,15 @@ private:
                        const glm::dmat4& transform) {
         const int mode = primitive.mode;
         if (mode < TINYGLTF_MODE_TRIANGLES || mode > TINYGLTF_MODE_TRIANGLE_FAN) {  // lists, strips and fans
-            fail(where + ": mode " + mode_name(mode) + " (" + std::to_string(mode) +
-                 ") is not supported (accepted: TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN)");
+            if (mode < TINYGLTF_MODE_POINTS || mode > TINYGLTF_MODE_TRIANGLE_FAN) {
+                fail(
+                    where + ": mode " + std::to_string(mode) +
+                    " is not a glTF primitive mode (accepted: 0 to 6; drawn: TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN)");
+            }
+            skipped_.push_back(where + " (" + mode_name(mode) + ")");  // points and lines: nothing to light
+            return;
         }
+        if (!primitive.targets.empty()) morphed_.push_back(where);
         const auto attribute = [&](const char* name) {
             const auto it = primitive.attributes.find(name);
             return it == primitive.attributes.end() ? -1 : it->second;
@@ -261,6 +286,11 @@ private:
         }
         add_part(mesh, first_index, base_color(primitive.material, where));
         if (!texture_found_ && primitive.material >= 0) take_texture(mesh, primitive.material, where);
+        if (primitive.material >= 0 && noted_materials_.insert(primitive.material).second) {
+            const std::string note =
+                gltf_material_note(model_.materials[std::size_t(primitive.material)], primitive.material);
+            if (!note.empty()) mesh.warnings.push_back(note);
+        }
     }
 
     // The primitive's indices as a part of its material's colour, joined to the previous part
@@ -310,6 +340,8 @@ private:
     const tinygltf::Model& model_;
     bool texture_found_ = false;
     bool any_uvs_ = false;
+    std::set<int> noted_materials_;                         // each material's note once
+    std::vector<std::string> skipped_, skinned_, morphed_;  // for add_content_warnings
 };
 
 // Texture pixels are the renderer's business: keep the image's uri, decode nothing.
@@ -474,7 +506,13 @@ Mesh load_gltf_mesh(const std::filesystem::path& file, const FileScope& scope) {
         if (scene >= model.scenes.size()) reader.fail("no scene " + std::to_string(scene));
         for (const int node : model.scenes[scene].nodes) reader.add_node(mesh, node, glm::dmat4(1.0), 0);
     }
-    if (mesh.indices.empty()) reader.fail("contains no triangles");
+    reader.add_content_warnings(mesh);
+    if (mesh.indices.empty()) {
+        // Say why when its primitives were all points or lines.
+        const auto skipped = std::find_if(mesh.warnings.begin(), mesh.warnings.end(),
+                                          [](const std::string& line) { return line.starts_with("skipped"); });
+        reader.fail("contains no triangles" + (skipped == mesh.warnings.end() ? "" : " (" + *skipped + ")"));
+    }
     update_bounds(mesh);
     return mesh;
 }

@@ -34,6 +34,9 @@ struct Mesh {
     // The base colour texture: a path (an external image, resolved against the glTF file's
     // folder) or "<gltf path>#images[i]" for an image embedded in the glTF; empty for none.
     std::string base_color_texture;
+    // What the file asks for that the renderers leave out, one sentence each (skipped points and
+    // lines, skins, morph targets, material features): the commands print them as warnings.
+    std::vector<std::string> warnings;
 };
 
 // Recomputes bounds_min and bounds_max from the positions (both zero for an empty mesh).

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "engine/core/errors.hpp"
+#include "engine/core/message_text.hpp"
 #include "engine/scene/angles.hpp"
 #include "engine/scene/builtin_meshes.hpp"
 #include "engine/scene/file_scope.hpp"
@@ -41,6 +42,10 @@ Mesh read_gltf(FieldReader& fields, const FileScope& scope, const std::optional<
         mesh = load_gltf_mesh(scope.resolve(scope.scene_folder(), *file, "the glTF file"), scope);
     } catch (const UserError& error) {
         fields.fail("file", error.what());
+    }
+    // Each warning names the receiver's file, as an error would.
+    for (std::string& warning : mesh.warnings) {
+        warning = fields.path_of("file") + " '" + shortened_input(*file, 60) + "': " + warning;
     }
     if (!use_texture) mesh.base_color_texture.clear();
     // A given albedo replaces the materials' base colours (it does not multiply them).

@@ -63,4 +63,12 @@ glm::dmat4 projection_matrix(const Camera& camera, double aspect) {
     return shift * projection;
 }
 
+std::vector<std::string> scene_warnings(const Scene& scene) {
+    std::vector<std::string> warnings;
+    for (const Receiver& receiver : scene.receivers) {
+        warnings.insert(warnings.end(), receiver.mesh.warnings.begin(), receiver.mesh.warnings.end());
+    }
+    return warnings;
+}
+
 }  // namespace vkw

@@ -241,6 +241,10 @@ struct Scene {
     EffectsSettings effects;
 };
 
+// What the scene's files ask for that the renderers leave out (the receivers' glTF files: mesh
+// warnings), one line each, naming the receiver's field: the commands print them as warnings.
+std::vector<std::string> scene_warnings(const Scene& scene);
+
 // Sky radiance toward unit direction `dir`. Constant: sky.radiance. Gradient (scenes/README.md):
 //   L = mix(horizon, zenith, pow(dir.y, exponent)) for dir.y >= 0, ground below.
 glm::dvec3 sky_radiance(const Sky& sky, const glm::dvec3& dir);

@@ -8,6 +8,7 @@
 #include "passes/caustics/caustics_camera_receivers.hpp"
 #include "passes/caustics/caustics_camera_splats.hpp"
 #include "passes/water/water_surface.hpp"
+#include "tests/scene/gltf_test_files.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -501,6 +502,29 @@ TEST(cli, RenderReportsProgressOffATerminalAfterItsDelay) {
     const CommandRun delayed = run_vkwater(command, "VKWATER_PROGRESS_DELAY_S=1000");
     ASSERT_EQ(delayed.exit_code, 0) << delayed.output;
     EXPECT_EQ(delayed.output.find("render: "), std::string::npos) << delayed.output;
+}
+
+// What a scene's glTF asks for that is left out: a warning line on stderr naming the receiver's
+// file, the command still succeeds; -q leaves it out too.
+TEST(cli, AGltfMaterialLeftOutIsAWarningNamingTheReceiversFile) {
+    const fs::path dir = scratch("warning-scene").parent_path() / "warning-scene";
+    fs::create_directories(dir);
+    vkw::test::GltfSpec spec = vkw::test::pyramid();
+    spec.material = R"({ "name": "Brass", "pbrMetallicRoughness": { "metallicFactor": 1.0 } })";
+    vkw::test::write_text(dir / "brass.gltf", vkw::test::gltf_text(spec));
+    nlohmann::json calm = nlohmann::json::parse(std::ifstream(std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json"));
+    calm["receivers"] =
+        nlohmann::json::parse(R"([{ "type": "gltf", "file": "brass.gltf", "translation": [0, -0.5, 0] }])");
+    const fs::path scene = vkw::test::write_text(dir / "scene.json", calm.dump());
+    const CommandRun run = run_vkwater("check " + scene.string());
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    EXPECT_NE(run.output.find("vkwater: warning: receivers[0].file 'brass.gltf': materials[0] 'Brass': drawn as "
+                              "Lambertian (metallicFactor 1)\n"),
+              std::string::npos)
+        << run.output;
+    const CommandRun quiet = run_vkwater("check -q " + scene.string());
+    EXPECT_EQ(quiet.exit_code, 0) << quiet.output;
+    EXPECT_EQ(quiet.output, "");
 }
 
 TEST(cli, UnknownFlag) {

@@ -215,15 +215,50 @@ TEST(scene_gltf, NulBytesAndMalformedDataUrisAreRefused) {
                                              "accepted: A-Z a-z 0-9 + /, padded with = to a multiple of 4)");
 }
 
-TEST(scene_gltf, PointsAndLinesAreRefusedNamingFileMeshAndMode) {
+// Points and lines have no surface to light: skipped with one warning naming them; a file of
+// nothing else has no triangles, and an unknown mode is malformed.
+TEST(scene_gltf, PointsAndLinesAreSkippedWithOneWarningNamingThem) {
     GltfSpec spec = test::pyramid();
+    spec.second_mode = 1;  // LINES
+    const Mesh mesh = load_gltf_mesh(write_gltf("with-lines", spec));
+    EXPECT_EQ(mesh.indices.size(), 18u);  // the pyramid's 6 triangles alone
+    ASSERT_EQ(mesh.warnings.size(), 1u);
+    EXPECT_EQ(mesh.warnings[0], "skipped, not triangles: mesh 'Test' (meshes[0]), primitive 1 (LINES)");
+
+    spec.second_mode = -1;
     spec.mode = 0;
     const std::filesystem::path points = write_gltf("points", spec);
     EXPECT_EQ(load_error(points), "glTF file '" + points.string() +
-                                      "': mesh 'Test' (meshes[0]), primitive 0: mode POINTS (0) is not supported "
-                                      "(accepted: TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN)");
-    spec.mode = 1;
-    EXPECT_NE(load_error(write_gltf("lines", spec)).find("mode LINES (1) is not supported"), std::string::npos);
+                                      "': contains no triangles (skipped, not triangles: mesh 'Test' (meshes[0]), "
+                                      "primitive 0 (POINTS))");
+    spec.mode = 7;
+    const std::filesystem::path unknown = write_gltf("mode7", spec);
+    EXPECT_EQ(load_error(unknown), "glTF file '" + unknown.string() +
+                                       "': mesh 'Test' (meshes[0]), primitive 0: mode 7 is not a glTF primitive mode "
+                                       "(accepted: 0 to 6; drawn: TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN)");
+}
+
+// One line per material that asks for what a Lambertian receiver leaves out, and one each for
+// skins and morph targets (drawn in the bind pose and the base shape).
+TEST(scene_gltf, LeftOutMaterialFeaturesSkinsAndMorphTargetsAreWarnings) {
+    GltfSpec spec = test::pyramid();
+    spec.material = R"({ "name": "Chrome", "pbrMetallicRoughness": { "metallicFactor": 1.0 },
+      "emissiveFactor": [1, 0, 0], "alphaMode": "BLEND", "extensions": { "KHR_materials_clearcoat": {} } })";
+    spec.node_extra = R"("skin": 0, )";
+    spec.top_extra = R"( "skins": [{ "joints": [0] }],)";
+    spec.primitive_extra = R"("targets": [{ "POSITION": 0 }], )";
+    const Mesh mesh = load_gltf_mesh(write_gltf("left-out", spec));
+    ASSERT_EQ(mesh.warnings.size(), 3u);
+    EXPECT_EQ(mesh.warnings[0],
+              "materials[0] 'Chrome': drawn as Lambertian (metallicFactor 1); ignored: emissiveFactor, alphaMode "
+              "BLEND (drawn opaque), KHR_materials_clearcoat");
+    EXPECT_EQ(mesh.warnings[1], "skins ignored, drawn in the bind pose: nodes[0]");
+    EXPECT_EQ(mesh.warnings[2], "morph targets ignored, drawn in the base shape: mesh 'Test' (meshes[0]), primitive 0");
+
+    // A dielectric, opaque, plain material is drawn as written: no warning.
+    GltfSpec plain = test::pyramid();
+    plain.material = R"({ "pbrMetallicRoughness": { "baseColorFactor": [0.5, 0.5, 0.5, 1], "metallicFactor": 0 } })";
+    EXPECT_TRUE(load_gltf_mesh(write_gltf("plain", plain)).warnings.empty());
 }
 
 TEST(scene_gltf, MissingAndMalformedFilesAreRefusedNamingThePath) {

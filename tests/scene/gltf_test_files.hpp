@@ -22,6 +22,8 @@ struct GltfSpec {
     std::string node_extra;         // e.g. R"("translation": [1, 2, 3], )"
     std::string material;           // a materials[0] object; empty: no material
     std::string top_extra;          // more top-level members, each followed by a comma
+    int second_mode = -1;           // >= 0: a second primitive of the same vertices in this mode
+    std::string primitive_extra;    // more members of the first primitive, each followed by a comma
 };
 
 inline std::string base64(const std::vector<unsigned char>& bytes) {
@@ -80,7 +82,8 @@ inline std::string gltf_text(const GltfSpec& spec) {
                      R"(, "componentType": 5126, "count": )" + std::to_string(count) + R"(, "type": "VEC3" })";
         ++next;
     }
-    std::string primitive = R"({ "attributes": { )" + attributes + " }, \"mode\": " + std::to_string(spec.mode);
+    std::string primitive =
+        "{ " + spec.primitive_extra + R"("attributes": { )" + attributes + " }, \"mode\": " + std::to_string(spec.mode);
     std::string views = R"({ "buffer": 0, "byteOffset": 0, "byteLength": )" + std::to_string(index_offset) + " }";
     if (!spec.indices.empty()) {
         primitive += ", \"indices\": " + std::to_string(next);
@@ -91,6 +94,10 @@ inline std::string gltf_text(const GltfSpec& spec) {
     }
     if (!spec.material.empty()) primitive += R"(, "material": 0)";
     primitive += " }";
+    if (spec.second_mode >= 0) {
+        primitive +=
+            R"(, { "attributes": { )" + attributes + " }, \"mode\": " + std::to_string(spec.second_mode) + " }";
+    }
     while (data.size() % 4 != 0) data.push_back(0);
     return R"({ "asset": { "version": "2.0" }, "scene": 0, "scenes": [{ "nodes": [0] }],
   "nodes": [{ )" +

@@ -22,6 +22,7 @@
 #include "tools/metrics/downsample.hpp"
 #include "tools/metrics/reference_errors.hpp"
 #include "tools/vkwater/commands.hpp"
+#include "tools/vkwater/console.hpp"
 #include "tools/vkwater/image_provenance.hpp"
 
 #include <algorithm>
@@ -166,6 +167,7 @@ int run_bench(const BenchArgs& args) {
         std::vector<std::string> overrides = args.overrides;
         overrides.insert(overrides.end(), setting.begin(), setting.end());
         const Scene scene = load_scene(args.scene, overrides, {.allow_outside_paths = args.allow_outside_paths});
+        if (rows.empty()) print_warnings(scene_warnings(scene));  // the same files in every setting
         Renderer renderer(*context);
         const RenderOptions options{width, height, false, fg::TimingMode::None};
         RenderResult result = render_filtered(renderer, scene, options, filter);  // warm-up: compiles shader variants

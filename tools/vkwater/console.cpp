@@ -31,6 +31,11 @@ void set_verbosity(Verbosity verbosity) {
 
 Verbosity verbosity() { return current; }
 
+void print_warnings(const std::vector<std::string>& lines) {
+    if (current == Verbosity::Quiet) return;
+    for (const std::string& line : lines) std::fprintf(stderr, "vkwater: warning: %s\n", line.c_str());
+}
+
 Progress::Progress(std::string label, double delay_seconds)
     : label_(std::move(label)),
       terminal_(::isatty(STDERR_FILENO) != 0),

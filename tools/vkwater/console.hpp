@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace vkw::cli {
 
@@ -17,6 +18,10 @@ enum class Verbosity : uint8_t { Quiet, Normal, Verbose };
 void set_verbosity(Verbosity verbosity);
 Verbosity verbosity();
 inline bool verbose() { return verbosity() == Verbosity::Verbose; }
+
+// Each line on stderr as "vkwater: warning: LINE" (what a scene asks for that is left out, say);
+// nothing when quiet.
+void print_warnings(const std::vector<std::string>& lines);
 
 // A long command's progress on stderr: a bar redrawn in place on a terminal; elsewhere (logs, CI)
 // one line per tenth ("reference: 30%"), so that a long run is never silent; nothing when quiet.

@@ -13,6 +13,7 @@
 #include "passes/receivers/receiver_meshes.hpp"
 #include "passes/water/water_surface_spectrum.hpp"
 #include "tools/vkwater/commands.hpp"
+#include "tools/vkwater/console.hpp"
 #include "tools/vkwater/cpu_frame_estimate.hpp"
 
 #include <cstdio>
@@ -33,6 +34,7 @@ struct PassesArgs {
 
 int run_passes(const PassesArgs& args) {
     const Scene scene = load_scene(args.scene, args.overrides, {.allow_outside_paths = args.allow_outside_paths});
+    print_warnings(scene_warnings(scene));
     fg::FrameGraph graph(decide_frame_needs(scene, double(args.width) / double(args.height)));
     const FrameConstants constants = make_frame_constants(scene, args.width, args.height);
     // An FFT ocean's passes import its spectrum buffer, which only a device can hold:

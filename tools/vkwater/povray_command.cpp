@@ -7,6 +7,7 @@
 #include "engine/scene/scene_loader.hpp"
 #include "tools/povray/povray_scene.hpp"
 #include "tools/vkwater/commands.hpp"
+#include "tools/vkwater/console.hpp"
 
 #include <cstdio>
 #include <memory>
@@ -26,6 +27,7 @@ struct PovrayArgs {
 
 int run_povray(const PovrayArgs& args) {
     const Scene scene = load_scene(args.scene, args.overrides, {.allow_outside_paths = args.allow_outside_paths});
+    print_warnings(scene_warnings(scene));
     require_writable_file_path(args.out);
     pov::PovrayOptions options = args.options;
     options.window = args.window.empty()

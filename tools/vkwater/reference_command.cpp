@@ -169,6 +169,7 @@ void record_in_manifest(const ReferenceArgs& args, double seconds, const ImageRG
 
 int run_reference(const ReferenceArgs& args) {
     const Scene scene = load_scene(args.scene, args.overrides, {.allow_outside_paths = args.allow_outside_paths});
+    print_warnings(scene_warnings(scene));
     require_writable_file_path(args.out);
     if (!args.manifest.empty()) require_writable_file_path(args.manifest);
     ref::ReferenceOptions options;

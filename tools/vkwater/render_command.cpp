@@ -80,6 +80,7 @@ std::string inscatter_text(const Scene& scene, const RenderOptions& options, con
 int run_render(const RenderArgs& args) {
     const auto start = std::chrono::steady_clock::now();
     const Scene scene = load_scene(args.scene, args.overrides, {.allow_outside_paths = args.allow_outside_paths});
+    print_warnings(scene_warnings(scene));
     const PixelFilter filter = pixel_filter_from_spp(args.spp);
     // Fail on an unwritable output before spending time on the render. Without --out, the scene's
     // name with .exr, in the current folder.

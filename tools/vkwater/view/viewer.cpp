@@ -1,5 +1,7 @@
 #include "tools/vkwater/view/viewer.hpp"
 
+#include "tools/vkwater/console.hpp"
+
 #include "engine/core/errors.hpp"
 #include "engine/image/file_paths.hpp"
 #include "engine/scene/pixel_filter.hpp"
@@ -183,6 +185,7 @@ void Viewer::load_scene_state() {
     auto next = std::make_unique<Scene>(
         load_scene(options_.scene, overrides_, {.allow_outside_paths = options_.allow_outside_paths}));
     const bool first = !scene_;
+    if (first) cli::print_warnings(scene_warnings(*next));
     // A set that moved the file's camera or clock moves the viewer's; any other keeps them.
     if (first || next->camera.position != loaded_camera_.position || next->camera.target != loaded_camera_.target) {
         camera_.set_pose(next->camera.position, next->camera.target);
