@@ -2,6 +2,7 @@
 #include "engine/water/wave_sum_surface.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -25,11 +26,19 @@ WaveSumSurface::WaveSumSurface(const WaveSettings& settings, double level, doubl
     // G from directions u every 2 pi / K: between two of them sum A k |d . u| changes by at most
     // (pi / K) sum A k, which is added.
     constexpr int kDirections = 720;
+    // The directions once per process: a frame builds its surface several times (its needs,
+    // its bounds), and 720 sines and cosines were most of that.
+    static const std::array<glm::dvec2, kDirections> directions = [] {
+        std::array<glm::dvec2, kDirections> table;
+        for (int i = 0; i < kDirections; ++i) {
+            const double angle = 2.0 * std::numbers::pi * i / kDirections;
+            table[std::size_t(i)] = glm::dvec2(std::cos(angle), std::sin(angle));
+        }
+        return table;
+    }();
     double terms = 0.0, height_gradient = 0.0;
     for (const WaveTerms& w : waves_) terms += w.amplitude * glm::length(w.k_vector);
-    for (int i = 0; i < kDirections; ++i) {
-        const double angle = 2.0 * std::numbers::pi * i / kDirections;
-        const glm::dvec2 u(std::cos(angle), std::sin(angle));
+    for (const glm::dvec2& u : directions) {
         double along = 0.0;
         for (const WaveTerms& w : waves_) along += w.amplitude * std::abs(glm::dot(w.k_vector, u));
         height_gradient = std::max(height_gradient, along);

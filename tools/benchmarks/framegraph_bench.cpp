@@ -1,13 +1,18 @@
 // framegraph_bench: what the frame graph costs on the CPU.
 //  1. compile() of a 30-pass graph (culling, ordering, barriers, aliasing estimate);
 //  2. recording the test chain (compute -> sample into attachment -> copy) through the
-//     graph against the same commands and barriers written by hand.
+//     graph against the same commands and barriers written by hand;
+//  3. pool's frame on the CPU as the renderer makes it every frame: the needs' decision, the
+//     frame constants, the declaration and the compilation (scenes/pool.json at 800x600).
 // Prints a table of medians; nothing is asserted (speed is measured, not tested).
 #include "engine/framegraph/executor.hpp"
 #include "engine/framegraph/pass_context.hpp"
+#include "engine/scene/scene_loader.hpp"
 #include "engine/vk/check.hpp"
 #include "engine/vk/context.hpp"
 #include "engine/vk/pipeline.hpp"
+#include "passes/frame/frame_needs.hpp"
+#include "passes/frame/renderer.hpp"
 #include "passes/present/readback.hpp"
 #include "tools/benchmarks/chain_graph.hpp"
 
@@ -214,6 +219,27 @@ int main() {
     std::printf("| compile it (culling, order, barriers, aliasing estimate) | %.3f ms |\n",
                 declare_compile_ms - declare_ms);
 
+    // Pool's frame, step by step (no device: the passes' lambdas only capture).
+    const Scene pool_scene = load_scene(std::string(VKWATER_SOURCE_DIR) + "/scenes/pool.json");
+    constexpr uint32_t kWidth = 800, kHeight = 600;
+    const double aspect = double(kWidth) / kHeight;
+    const double needs_ms = median_ms(runs, [&] { (void)decide_frame_needs(pool_scene, aspect); });
+    const double constants_ms = median_ms(runs, [&] { (void)make_frame_constants(pool_scene, kWidth, kHeight); });
+    const FrameConstants constants = make_frame_constants(pool_scene, kWidth, kHeight);
+    passes::CausticReadRegionCache read_regions;  // as the renderer keeps it while the camera stays
+    const auto declare_pool = [&](bool compile) {
+        fg::FrameGraph graph(decide_frame_needs(pool_scene, aspect));
+        build_frame_graph(graph, pool_scene, &constants, kWidth, kHeight, VK_NULL_HANDLE, nullptr, nullptr, nullptr, {},
+                          &read_regions);
+        if (compile) graph.compile(kWidth, kHeight);
+    };
+    const double pool_declare_ms = median_ms(runs, [&] { declare_pool(false); });
+    const double pool_compile_ms = median_ms(runs, [&] { declare_pool(true); });
+    std::printf("| pool at 800x600: decide the needs | %.3f ms |\n", needs_ms);
+    std::printf("| pool: the frame constants | %.3f ms |\n", constants_ms);
+    std::printf("| pool: declare its graph (the needs included) | %.3f ms |\n", pool_declare_ms);
+    std::printf("| pool: compile it | %.3f ms |\n", pool_compile_ms - pool_declare_ms);
+
     Context context({});
     VkCommandPool pool;
     VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -236,6 +262,20 @@ int main() {
         std::printf("| record it through the frame graph | %.4f ms |\n", by_graph);
         std::printf("| graph overhead per pass | %.4f ms |\n", (by_graph - by_hand) / double(passes));
         std::printf("device: %s\n", context.device_name().c_str());
+    }
+    {
+        // The same through the renderer, whose figure `vkwater render` prints (it also finds its
+        // cached device objects, its readback targets and the calibration pass): frames of 64x48,
+        // the first five left out (they create).
+        Renderer renderer(context);
+        std::vector<double> times;
+        for (int frame = 0; frame < 25; ++frame) {
+            renderer.render(pool_scene, {64, 48, false, fg::TimingMode::Fences});
+            if (frame >= 5) times.push_back(renderer.last_declare_ms());
+        }
+        std::sort(times.begin(), times.end());
+        std::printf("| pool through the renderer: needs, declaration, compilation | %.3f ms |\n",
+                    times[times.size() / 2]);
     }
     vkDestroyCommandPool(context.device(), pool, nullptr);
     return 0;
