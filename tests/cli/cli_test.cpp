@@ -527,6 +527,27 @@ TEST(cli, AGltfMaterialLeftOutIsAWarningNamingTheReceiversFile) {
     EXPECT_EQ(quiet.output, "");
 }
 
+// --exposure is the preview's: the same PNG as the override camera.exposure, another than the
+// scene's own; 0, negatives and non-finite values are refused naming the option.
+TEST(cli, RenderExposureSetsThePreviewsExposure) {
+    const std::string calm = "render " + std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json --width 16 --height 12";
+    const fs::path flag = scratch("exposure-flag.png"), set = scratch("exposure-set.png"), own = scratch("own.png");
+    ASSERT_EQ(run_vkwater(calm + " --exposure 2 --out " + flag.string()).exit_code, 0);
+    ASSERT_EQ(run_vkwater(calm + " --set camera.exposure=2 --out " + set.string()).exit_code, 0);
+    ASSERT_EQ(run_vkwater(calm + " --out " + own.string()).exit_code, 0);
+    const auto bytes = [](const fs::path& file) {
+        std::ifstream in(file, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    EXPECT_EQ(bytes(flag), bytes(set));
+    EXPECT_NE(bytes(flag), bytes(own));
+    for (const char* bad : {"0", "-1", "inf"}) {
+        const CommandRun run = run_vkwater(calm + " --exposure " + bad + " --out " + flag.string());
+        EXPECT_EQ(run.exit_code, 1) << run.output;
+        EXPECT_NE(run.output.find("--exposure: '" + std::string(bad) + "'"), std::string::npos) << run.output;
+    }
+}
+
 TEST(cli, UnknownFlag) {
     const CommandRun run = run_vkwater("render " + kPool + " --out x.exr --no-such-flag");
     EXPECT_EQ(run.exit_code, 1) << run.output;

@@ -36,6 +36,17 @@ void add_image_size_options(CLI::App& command, uint32_t& width, uint32_t& height
 // command does with them.
 void add_spp_option(CLI::App& command, int64_t& spp, const std::string& how);
 
+// A check for number options that must be above 0, with a message that says so (CLI::PositiveNumber
+// prints the whole double range). Put finite_number() before it.
+inline CLI::Validator positive_number() {
+    return CLI::Validator(
+        [](std::string& text) {
+            return std::strtod(text.c_str(), nullptr) > 0.0 ? std::string()
+                                                            : "'" + text + "' is not above 0 (accepted: > 0)";
+        },
+        "POSITIVE");
+}
+
 // A check for number options that refuses NaN and infinities: CLI::Range lets NaN through, since
 // every comparison with it is false.
 inline CLI::Validator finite_number() {

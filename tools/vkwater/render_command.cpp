@@ -5,6 +5,7 @@
 #include "engine/image/file_paths.hpp"
 #include "engine/image/png_preview.hpp"
 #include "engine/scene/pixel_filter.hpp"
+#include "engine/scene/range.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
 #include "passes/frame/frame_needs.hpp"
@@ -44,6 +45,7 @@ struct RenderArgs {
     std::vector<std::string> overrides;
     bool allow_outside_paths = false;
     std::string reference;
+    std::optional<double> exposure;  // the preview's, in place of the scene's camera.exposure
     DeviceOptions device;
 };
 
@@ -79,7 +81,10 @@ std::string inscatter_text(const Scene& scene, const RenderOptions& options, con
 
 int run_render(const RenderArgs& args) {
     const auto start = std::chrono::steady_clock::now();
-    const Scene scene = load_scene(args.scene, args.overrides, {.allow_outside_paths = args.allow_outside_paths});
+    // --exposure is the override camera.exposure, so that the EXR's record of the settings names it.
+    std::vector<std::string> overrides = args.overrides;
+    if (args.exposure) overrides.push_back("camera.exposure=" + format_number(*args.exposure));
+    const Scene scene = load_scene(args.scene, overrides, {.allow_outside_paths = args.allow_outside_paths});
     print_warnings(scene_warnings(scene));
     const PixelFilter filter = pixel_filter_from_spp(args.spp);
     // Fail on an unwritable output before spending time on the render. Without --out, the scene's
@@ -179,7 +184,7 @@ int run_render(const RenderArgs& args) {
     std::snprintf(time, sizeof time, "%.2f ms, frame %u of %u (%s)", result.timing.total_ms, args.repeat, args.repeat,
                   result.timing.method_name().c_str());
     result.image.attributes =
-        image_attributes({args.scene, args.overrides, "real-time", filter.describe(), device_name, time}, scene.camera);
+        image_attributes({args.scene, overrides, "real-time", filter.describe(), device_name, time}, scene.camera);
     if (kind == OutputKind::Exr) {
         const ExrWriteReport report =
             write_exr(out, result.image, args.half ? ExrPixelType::Half : ExrPixelType::Float);
@@ -231,6 +236,11 @@ Run add_render_command(CLI::App& app) {
     command->add_flag("--half", args->half, "Write half floats (values beyond 65504 are clamped and counted)");
     command->add_flag("--png", args->png, "Also write a tone-mapped PNG preview next to the EXR (its name with .png)");
     command
+        ->add_option("--exposure", args->exposure,
+                     "The preview's exposure: a multiplier of the linear radiance before the tone curve (default: "
+                     "the scene's camera.exposure; the EXR's pixels do not change)")
+        ->check(finite_number() & positive_number());
+    command
         ->add_option("--repeat", args->repeat,
                      "Render this many frames and report the last: the first frame includes llvmpipe's "
                      "compilation of shader variants on first use")
@@ -257,6 +267,7 @@ Run add_render_command(CLI::App& app) {
     command->footer(
         "Examples:\n"
         "  vkwater render scenes/pool.json --out build/pool.exr --png\n"
+        "  vkwater render scenes/lake.json --out build/lake.png --exposure 2\n"
         "  vkwater render scenes/pool.json --width 1920 --height 1080 --set sun.elevation_deg=30\n"
         "  vkwater render scenes/calm.json --width 400 --height 300 --reference build/calm-ref.exr\n");
     return [args] { return run_render(*args); };
