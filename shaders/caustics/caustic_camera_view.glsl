@@ -2,7 +2,7 @@
 // (passes/caustics/caustics_camera_splats.hpp): the scene view's guard-banded projection
 // (scene_views/scene_view.glsl, not mirrored), in pixel coordinates of a target of `size` pixels
 // (pixel (i, j) covers [i, i + 1) x [j, j + 1), row 0 at the top). The ray through pixel
-// coordinate x is r(x) = d0 + x.x dx + x.y dy (not normalised; affine in x because the near plane
+// coordinate x is r(x) = d0 + x.x dx + x.y dy (not normalised; affine in x because the far plane
 // is a plane), and the area of the receiver plane (point c, unit normal N) that pixel (i, j) sees
 // is the central projection of the pixel onto the plane,
 //   A = h^2 |(dx x dy) . r| / |r . N|^3,   h = (c - eye) . N,   r the ray through its centre,
@@ -19,20 +19,21 @@ struct CameraRays {
     vec3 d0, dx, dy;  // r(x) = d0 + x.x dx + x.y dy
 };
 
-// The point of the near plane (depth 1, reversed-Z) at texture coordinate uv of the view.
-vec3 camera_near_point(vec2 uv) {
+// The point of the far plane (depth 0, reversed-Z) at texture coordinate uv of the view: far from
+// the eye, so that subtracting the eye loses no bits (common/camera_ray.glsl).
+vec3 camera_far_point(vec2 uv) {
     const vec2 ndc = vec2(2.0 * uv.x - 1.0, 1.0 - 2.0 * uv.y) * SCENE_VIEW_GUARD;
-    const vec4 q = frame.inv_view_proj * vec4(ndc, 1.0, 1.0);
+    const vec4 q = frame.inv_view_proj * vec4(ndc, 0.0, 1.0);
     return q.xyz / q.w;
 }
 
 CameraRays camera_rays(vec2 size) {
     CameraRays rays;
     rays.eye = frame.camera_position.xyz;
-    // Three corners of the view on the near plane, whose points are affine in the pixel coordinate.
-    const vec3 o = camera_near_point(vec2(0.0)) - rays.eye;
-    const vec3 corner_x = camera_near_point(vec2(1.0, 0.0)) - rays.eye;
-    const vec3 corner_y = camera_near_point(vec2(0.0, 1.0)) - rays.eye;
+    // Three corners of the view on the far plane, whose points are affine in the pixel coordinate.
+    const vec3 o = camera_far_point(vec2(0.0)) - rays.eye;
+    const vec3 corner_x = camera_far_point(vec2(1.0, 0.0)) - rays.eye;
+    const vec3 corner_y = camera_far_point(vec2(0.0, 1.0)) - rays.eye;
     rays.d0 = o;
     rays.dx = (corner_x - o) / size.x;
     rays.dy = (corner_y - o) / size.y;
