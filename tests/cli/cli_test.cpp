@@ -4,53 +4,19 @@
 #include <gtest/gtest.h>
 
 #include "engine/image/exr_io.hpp"
-#include "engine/vk/context.hpp"
-#include "passes/caustics/caustics_camera_receivers.hpp"
-#include "passes/caustics/caustics_camera_splats.hpp"
-#include "passes/water/water_surface.hpp"
-#include "tests/scene/gltf_test_files.hpp"
+#include "tests/cli/cli_support.hpp"
 
 #include <nlohmann/json.hpp>
 
-#include <sys/wait.h>
-
 #include <algorithm>
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
+namespace vkw::cli_test {
 namespace {
-
-namespace fs = std::filesystem;
-
-struct CommandRun {
-    int exit_code;
-    std::string output;  // stdout and stderr together
-};
-
-CommandRun run_vkwater(const std::string& arguments, const std::string& environment = "") {
-    const std::string command = environment + " '" VKWATER_CLI "' " + arguments + " 2>&1";
-    FILE* pipe = ::popen(command.c_str(), "r");
-    CommandRun run{-1, ""};
-    if (!pipe) return run;
-    std::array<char, 4096> buffer;
-    while (size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) run.output.append(buffer.data(), n);
-    const int status = ::pclose(pipe);
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    return run;
-}
-
-fs::path scratch(const std::string& name) {
-    const fs::path dir = fs::path(::testing::TempDir()) / "vkwater_cli_test";
-    fs::create_directories(dir);
-    return dir / name;
-}
-
-const std::string kPool = std::string(VKWATER_SOURCE_DIR) + "/scenes/pool.json";
 
 // The comma-separated fields of a CSV line, the quotes of a quoted field removed (bench's
 // settings are quoted and hold no comma).
@@ -62,39 +28,6 @@ std::vector<std::string> csv_fields(const std::string& line) {
         fields.push_back(field);
     }
     return fields;
-}
-
-// The limits of the device vkwater picks by default (the same rule: a discrete GPU, then an
-// integrated one, then lavapipe), read once. The tests of requests beyond the device size them
-// from these, so they hold on any device, and skip where nothing the formats accept goes beyond.
-struct DeviceLimits {
-    std::string name;
-    VkDeviceSize storage_range = 0;  // maxStorageBufferRange
-    VkDeviceSize largest_heap = 0;
-    uint32_t max_image_side = 0;  // maxImageDimension2D
-};
-
-const DeviceLimits& default_device_limits() {
-    static const DeviceLimits limits = [] {
-        const vkw::Context context(vkw::ContextOptions{});
-        DeviceLimits read;
-        read.name = context.device_name();
-        read.storage_range = context.properties().limits.maxStorageBufferRange;
-        read.max_image_side = context.properties().limits.maxImageDimension2D;
-        VkPhysicalDeviceMemoryProperties memory;
-        vkGetPhysicalDeviceMemoryProperties(context.physical_device(), &memory);
-        for (uint32_t i = 0; i < memory.memoryHeapCount; ++i)
-            read.largest_heap = std::max(read.largest_heap, memory.memoryHeaps[i].size);
-        return read;
-    }();
-    return limits;
-}
-
-void expect_clean_failure(const CommandRun& run, int exit_code, const std::string& needle) {
-    EXPECT_EQ(run.exit_code, exit_code) << run.output;
-    EXPECT_NE(run.output.find(needle), std::string::npos) << "expected '" << needle << "' in:\n" << run.output;
-    EXPECT_EQ(run.output.find("validation error"), std::string::npos) << run.output;
-    EXPECT_EQ(run.output.find("validation warning"), std::string::npos) << run.output;
 }
 
 TEST(cli, RenderDefaultSceneWithValidationSucceeds) {
@@ -112,30 +45,6 @@ TEST(cli, RenderDefaultSceneWithValidationSucceeds) {
     EXPECT_NE(run.output.substr(flux, run.output.find('\n', flux) - flux).find("creates"), std::string::npos)
         << run.output;
     EXPECT_NE(run.output.find("wrote " + out.string()), std::string::npos) << run.output;
-}
-
-TEST(cli, CameraSpaceSplatsBeyondOneStorageBindingAreAUserError) {
-    // The smallest 4:3 output (in steps of 256x192 pixels) whose camera-space flux buffer is
-    // larger than one storage binding of the device.
-    const DeviceLimits& device = default_device_limits();
-    uint32_t width = 0, height = 0;
-    for (uint32_t step = 1; 256 * step <= device.max_image_side; ++step) {
-        const uint32_t w = 256 * step, h = 192 * step;
-        if (vkw::passes::camera_caustic_flux_bytes(vkw::passes::camera_caustic_extent(w, h)) > device.storage_range) {
-            width = w, height = h;
-            break;
-        }
-    }
-    if (width == 0) {
-        GTEST_SKIP() << "every output up to " << device.max_image_side << " pixels a side fits one storage binding of '"
-                     << device.name << "' (" << (device.storage_range >> 20) << " MiB)";
-    }
-    const CommandRun run =
-        run_vkwater("render " + kPool + " --out " + scratch("big.exr").string() + " --width " + std::to_string(width) +
-                    " --height " + std::to_string(height) + " --set effects.caustics.splat=camera-space");
-    EXPECT_EQ(run.exit_code, 1) << run.output;
-    EXPECT_NE(run.output.find("pool.json: effects.caustics.splat"), std::string::npos) << run.output;
-    EXPECT_NE(run.output.find("or splat light-space"), std::string::npos) << run.output;
 }
 
 TEST(cli, RenderPassRecordingWithValidationSucceeds) {
@@ -446,108 +355,6 @@ TEST(cli, CommandLineErrorsAreOneLine) {
     EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
 }
 
-// Off a terminal the reference reports its progress a line per tenth instead of a bar (it used to
-// print nothing until it finished).
-TEST(cli, TheReferenceReportsProgressOffATerminal) {
-    const CommandRun run =
-        run_vkwater("reference " + std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json --width 16 --height 12 --out " +
-                    scratch("progress.exr").string());
-    ASSERT_EQ(run.exit_code, 0) << run.output;
-    EXPECT_NE(run.output.find("reference: 10%\n"), std::string::npos) << run.output;
-    EXPECT_NE(run.output.find("reference: 100%\n"), std::string::npos) << run.output;
-}
-
-// -q keeps the errors alone; -v adds render's decisions; they exclude each other.
-TEST(cli, QuietPrintsOnlyErrors) {
-    const std::string calm = std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json";
-    const fs::path out = scratch("quiet.exr");
-    fs::remove(out);
-    const CommandRun quiet = run_vkwater("render " + calm + " --width 16 --height 12 -q --out " + out.string(),
-                                         "VKWATER_PROGRESS_DELAY_S=0");
-    EXPECT_EQ(quiet.exit_code, 0) << quiet.output;
-    EXPECT_EQ(quiet.output, "");  // no report and no progress
-    EXPECT_TRUE(fs::exists(out));
-    // Before the command too, and an error still gets its one line.
-    const CommandRun error = run_vkwater("-q render " + calm + " --set water.ior=0 --out " + out.string());
-    EXPECT_EQ(error.exit_code, 1) << error.output;
-    EXPECT_EQ(std::count(error.output.begin(), error.output.end(), '\n'), 1) << error.output;
-    EXPECT_NE(error.output.find("water.ior"), std::string::npos) << error.output;
-}
-
-TEST(cli, VerboseRenderGivesEachEffectsDecision) {
-    const CommandRun run =
-        run_vkwater("render " + std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json --width 16 --height 12 -v --out " +
-                    scratch("verbose.exr").string());
-    EXPECT_EQ(run.exit_code, 0) << run.output;
-    EXPECT_NE(run.output.find("needs:\n  water: on - "), std::string::npos) << run.output;
-    EXPECT_NE(run.output.find("  caustics: off - the water is flat"), std::string::npos) << run.output;
-    EXPECT_NE(run.output.find("pass times"), std::string::npos) << run.output;
-    expect_clean_failure(run_vkwater("render x.json -q -v"), 1, "--quiet and --verbose: choose one");
-}
-
-// render reports its frames' progress as reference does, after its first second (the variable
-// sets the delay: 0 reports at once, 1000 never within this test).
-TEST(cli, RenderReportsProgressOffATerminalAfterItsDelay) {
-    const std::string command = "render " + std::string(VKWATER_SOURCE_DIR) +
-                                "/scenes/calm.json --width 16 --height 12 --repeat 2 --spp 4 --out " +
-                                scratch("progress-render.exr").string();
-    const CommandRun at_once = run_vkwater(command, "VKWATER_PROGRESS_DELAY_S=0");
-    ASSERT_EQ(at_once.exit_code, 0) << at_once.output;
-    // 8 sub-frames: every tenth is reached, each printed once.
-    for (int tenth = 1; tenth <= 10; ++tenth) {
-        const std::string line = "render: " + std::to_string(10 * tenth) + "%\n";
-        EXPECT_NE(at_once.output.find(line), std::string::npos) << line << at_once.output;
-        EXPECT_EQ(at_once.output.find(line), at_once.output.rfind(line)) << line << at_once.output;
-    }
-    const CommandRun delayed = run_vkwater(command, "VKWATER_PROGRESS_DELAY_S=1000");
-    ASSERT_EQ(delayed.exit_code, 0) << delayed.output;
-    EXPECT_EQ(delayed.output.find("render: "), std::string::npos) << delayed.output;
-}
-
-// What a scene's glTF asks for that is left out: a warning line on stderr naming the receiver's
-// file, the command still succeeds; -q leaves it out too.
-TEST(cli, AGltfMaterialLeftOutIsAWarningNamingTheReceiversFile) {
-    const fs::path dir = scratch("warning-scene").parent_path() / "warning-scene";
-    fs::create_directories(dir);
-    vkw::test::GltfSpec spec = vkw::test::pyramid();
-    spec.material = R"({ "name": "Brass", "pbrMetallicRoughness": { "metallicFactor": 1.0 } })";
-    vkw::test::write_text(dir / "brass.gltf", vkw::test::gltf_text(spec));
-    nlohmann::json calm = nlohmann::json::parse(std::ifstream(std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json"));
-    calm["receivers"] =
-        nlohmann::json::parse(R"([{ "type": "gltf", "file": "brass.gltf", "translation": [0, -0.5, 0] }])");
-    const fs::path scene = vkw::test::write_text(dir / "scene.json", calm.dump());
-    const CommandRun run = run_vkwater("check " + scene.string());
-    EXPECT_EQ(run.exit_code, 0) << run.output;
-    EXPECT_NE(run.output.find("vkwater: warning: receivers[0].file 'brass.gltf': materials[0] 'Brass': drawn as "
-                              "Lambertian (metallicFactor 1)\n"),
-              std::string::npos)
-        << run.output;
-    const CommandRun quiet = run_vkwater("check -q " + scene.string());
-    EXPECT_EQ(quiet.exit_code, 0) << quiet.output;
-    EXPECT_EQ(quiet.output, "");
-}
-
-// --exposure is the preview's: the same PNG as the override camera.exposure, another than the
-// scene's own; 0, negatives and non-finite values are refused naming the option.
-TEST(cli, RenderExposureSetsThePreviewsExposure) {
-    const std::string calm = "render " + std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json --width 16 --height 12";
-    const fs::path flag = scratch("exposure-flag.png"), set = scratch("exposure-set.png"), own = scratch("own.png");
-    ASSERT_EQ(run_vkwater(calm + " --exposure 2 --out " + flag.string()).exit_code, 0);
-    ASSERT_EQ(run_vkwater(calm + " --set camera.exposure=2 --out " + set.string()).exit_code, 0);
-    ASSERT_EQ(run_vkwater(calm + " --out " + own.string()).exit_code, 0);
-    const auto bytes = [](const fs::path& file) {
-        std::ifstream in(file, std::ios::binary);
-        return std::string(std::istreambuf_iterator<char>(in), {});
-    };
-    EXPECT_EQ(bytes(flag), bytes(set));
-    EXPECT_NE(bytes(flag), bytes(own));
-    for (const char* bad : {"0", "-1", "inf"}) {
-        const CommandRun run = run_vkwater(calm + " --exposure " + bad + " --out " + flag.string());
-        EXPECT_EQ(run.exit_code, 1) << run.output;
-        EXPECT_NE(run.output.find("--exposure: '" + std::string(bad) + "'"), std::string::npos) << run.output;
-    }
-}
-
 TEST(cli, UnknownFlag) {
     const CommandRun run = run_vkwater("render " + kPool + " --out x.exr --no-such-flag");
     EXPECT_EQ(run.exit_code, 1) << run.output;
@@ -563,24 +370,6 @@ TEST(cli, UnknownSceneFieldOverride) {
 TEST(cli, ImageSizeOutOfRange) {
     expect_clean_failure(run_vkwater("render " + kPool + " --out " + scratch("x.exr").string() + " --width 0"), 1,
                          "accepted: 1 to");
-}
-
-TEST(cli, WaterGridBeyondTheDeviceIsAUserError) {
-    // The renderer's rule (passes/frame/renderer.cpp): the surface's vertices in one storage
-    // binding and within a quarter of the largest heap. The smallest power-of-two grid beyond
-    // it, if the scene format (at most 4096 cells a side) accepts one.
-    const DeviceLimits& device = default_device_limits();
-    const VkDeviceSize limit = std::min(device.largest_heap / 4, device.storage_range);
-    uint32_t grid = 2;
-    while (grid <= 4096 && vkw::passes::water_surface_bytes(grid) <= limit) grid *= 2;
-    if (grid > 4096) {
-        GTEST_SKIP() << "every water grid the scene format accepts (up to 4096 cells a side) fits '" << device.name
-                     << "' (" << (limit >> 20) << " MiB for the surface)";
-    }
-    const std::string cells = std::to_string(grid);
-    expect_clean_failure(run_vkwater("render " + kPool + " --out " + scratch("x.exr").string() +
-                                     " --set water.grid_resolution=" + cells),
-                         1, "water.grid_resolution: " + cells + " needs");
 }
 
 TEST(cli, NoVulkanDeviceIsExitTwo) {
@@ -768,3 +557,4 @@ TEST(cli, PassesPrintsDecisionsOrderAndMemory) {
 }
 
 }  // namespace
+}  // namespace vkw::cli_test

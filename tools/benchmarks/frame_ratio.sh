@@ -48,15 +48,7 @@ run() {
   local name=$1 vk=$2 scene=$3 round=$4
   # Each build reads its own shaders: a build's SPIR-V is where its binary was built.
   "$vk" render "scenes/$scene.json" --width $width --height $height --repeat 2 --out "$work/$name.exr" 2> /dev/null |
-    awk -v s="$scene" -v b="$name" -v r="$round" '
-      /^pass times/ { on = 1; next }
-      on && /^  [^ ]/ && / ms/ {
-        line = substr($0, 3); sub(/ creates .*/, "", line); sub(/ ms.*/, "", line)
-        n = split(line, f, " "); ms = f[n]; name = f[1]; for (i = 2; i < n; i++) name = name " " f[i]
-        if (name ~ /^declare/) next
-        printf "%s\t%s\t%s\t%s\t%s\n", s, b, r, name, ms
-      }
-      on && !/^  / { on = 0 }'
+    awk -v prefix="$scene\t$name\t$round" -v skip_declare=1 -f tools/benchmarks/pass_times.awk
 }
 
 for round in $(seq 1 "$rounds"); do

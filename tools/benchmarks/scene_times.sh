@@ -37,14 +37,7 @@ run() {
     { echo "scene_times: $scene at $size failed:" >&2; cat "$work/log.txt" >&2; exit 2; }
   sed -n 's/^device: \(.*\) (instance.*/\1/p' "$work/log.txt" > "$work/device.txt"
   sed -n 's/^pass times of frame [0-9]* of [0-9]* (\(.*\)):$/\1/p' "$work/log.txt" > "$work/method.txt"
-  awk -v s="$scene" -v z="$size" -v r="$round" '
-    /^pass times/ { on = 1; next }
-    on && /^  [^ ]/ && / ms/ {
-      line = substr($0, 3); sub(/ creates .*/, "", line); sub(/ ms.*/, "", line)
-      n = split(line, f, " "); ms = f[n]; name = f[1]; for (i = 2; i < n; i++) name = name " " f[i]
-      printf "%s\t%s\t%s\t%s\t%s\n", s, z, r, name, ms
-    }
-    on && !/^  / { on = 0 }' "$work/log.txt"
+  awk -v prefix="$scene\t$size\t$round" -f tools/benchmarks/pass_times.awk "$work/log.txt"
 }
 
 for round in $(seq 1 "$rounds"); do

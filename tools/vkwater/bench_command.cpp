@@ -22,7 +22,6 @@
 #include "tools/metrics/downsample.hpp"
 #include "tools/metrics/reference_errors.hpp"
 #include "tools/vkwater/commands.hpp"
-#include "tools/vkwater/console.hpp"
 #include "tools/vkwater/image_provenance.hpp"
 
 #include <algorithm>
@@ -166,8 +165,10 @@ int run_bench(const BenchArgs& args) {
     for (const std::vector<std::string>& setting : combinations(axes)) {
         std::vector<std::string> overrides = args.overrides;
         overrides.insert(overrides.end(), setting.begin(), setting.end());
-        const Scene scene = load_scene(args.scene, overrides, {.allow_outside_paths = args.allow_outside_paths});
-        if (rows.empty()) print_warnings(scene_warnings(scene));  // the same files in every setting
+        // Its warnings once: the same files in every setting.
+        const Scene scene = rows.empty()
+                                ? load_command_scene(args.scene, overrides, args.allow_outside_paths)
+                                : load_scene(args.scene, overrides, {.allow_outside_paths = args.allow_outside_paths});
         Renderer renderer(*context);
         const RenderOptions options{width, height, false, fg::TimingMode::None};
         RenderResult result = render_filtered(renderer, scene, options, filter);  // warm-up: compiles shader variants

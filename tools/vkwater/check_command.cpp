@@ -3,9 +3,7 @@
 // loader's one-line error for anything else. The malformed-input corpus (tests/corpus) runs
 // through it, and so can a user's editor or CI.
 #include "engine/core/errors.hpp"
-#include "engine/scene/scene_loader.hpp"
 #include "tools/vkwater/commands.hpp"
-#include "tools/vkwater/console.hpp"
 
 #include <cstdio>
 #include <memory>
@@ -35,8 +33,7 @@ std::string describe_water(const Scene& scene) {
 }
 
 int run_check(const CheckArgs& args) {
-    const Scene scene = load_scene(args.scene, args.overrides, {.allow_outside_paths = args.allow_outside_paths});
-    print_warnings(scene_warnings(scene));
+    const Scene scene = load_command_scene(args.scene, args.overrides, args.allow_outside_paths);
     std::printf("%s: a valid scene: %s, %s (vkwater passes %s shows the frame it makes)\n", args.scene.c_str(),
                 describe_water(scene).c_str(), plural(scene.receivers.size(), "receiver").c_str(), args.scene.c_str());
     return kExitOk;

@@ -5,6 +5,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "engine/scene/scene.hpp"
+
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -28,6 +30,10 @@ void add_device_options(CLI::App& command, DeviceOptions& options);
 // engine/scene/file_scope.hpp).
 void add_scene_options(CLI::App& command, std::string& scene, std::vector<std::string>& overrides,
                        bool& allow_outside_paths);
+
+// The scene those options name, loaded (vkw::UserError for a bad one), its warnings printed on
+// stderr (what its files ask for that is left out; console.hpp).
+Scene load_command_scene(const std::string& scene, const std::vector<std::string>& overrides, bool allow_outside_paths);
 
 // --width and --height in pixels, each 1 to 16384 (the largest image side any command takes).
 void add_image_size_options(CLI::App& command, uint32_t& width, uint32_t& height);

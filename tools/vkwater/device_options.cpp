@@ -1,6 +1,8 @@
 // Options several subcommands share: the Vulkan device, the scene's file scope, the image size, the
-// samples per pixel.
+// samples per pixel; and the loading of the scene they name.
+#include "engine/scene/scene_loader.hpp"
 #include "tools/vkwater/commands.hpp"
+#include "tools/vkwater/console.hpp"
 
 namespace vkw::cli {
 
@@ -20,6 +22,13 @@ void add_scene_options(CLI::App& command, std::string& scene, std::vector<std::s
     command.add_flag("--allow-outside-paths", allow_outside_paths,
                      "Let the scene read files outside its own folder tree (glTF files, their buffers and "
                      "images); by default such a name is refused");
+}
+
+Scene load_command_scene(const std::string& scene, const std::vector<std::string>& overrides,
+                         bool allow_outside_paths) {
+    Scene loaded = load_scene(scene, overrides, {.allow_outside_paths = allow_outside_paths});
+    print_warnings(scene_warnings(loaded));
+    return loaded;
 }
 
 void add_image_size_options(CLI::App& command, uint32_t& width, uint32_t& height) {

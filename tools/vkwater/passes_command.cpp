@@ -5,7 +5,6 @@
 #include "engine/framegraph/frame_graph.hpp"
 #include "engine/image/checked_write.hpp"
 #include "engine/image/file_paths.hpp"
-#include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
 #include "engine/water/fft_ocean.hpp"
 #include "passes/frame/frame_needs.hpp"
@@ -13,7 +12,6 @@
 #include "passes/receivers/receiver_meshes.hpp"
 #include "passes/water/water_surface_spectrum.hpp"
 #include "tools/vkwater/commands.hpp"
-#include "tools/vkwater/console.hpp"
 #include "tools/vkwater/cpu_frame_estimate.hpp"
 
 #include <cstdio>
@@ -33,8 +31,7 @@ struct PassesArgs {
 };
 
 int run_passes(const PassesArgs& args) {
-    const Scene scene = load_scene(args.scene, args.overrides, {.allow_outside_paths = args.allow_outside_paths});
-    print_warnings(scene_warnings(scene));
+    const Scene scene = load_command_scene(args.scene, args.overrides, args.allow_outside_paths);
     fg::FrameGraph graph(decide_frame_needs(scene, double(args.width) / double(args.height)));
     const FrameConstants constants = make_frame_constants(scene, args.width, args.height);
     // An FFT ocean's passes import its spectrum buffer, which only a device can hold:

@@ -4,10 +4,8 @@
 #include "engine/core/errors.hpp"
 #include "engine/image/checked_write.hpp"
 #include "engine/image/file_paths.hpp"
-#include "engine/scene/scene_loader.hpp"
 #include "tools/povray/povray_scene.hpp"
 #include "tools/vkwater/commands.hpp"
-#include "tools/vkwater/console.hpp"
 
 #include <cstdio>
 #include <memory>
@@ -26,8 +24,7 @@ struct PovrayArgs {
 };
 
 int run_povray(const PovrayArgs& args) {
-    const Scene scene = load_scene(args.scene, args.overrides, {.allow_outside_paths = args.allow_outside_paths});
-    print_warnings(scene_warnings(scene));
+    const Scene scene = load_command_scene(args.scene, args.overrides, args.allow_outside_paths);
     require_writable_file_path(args.out);
     pov::PovrayOptions options = args.options;
     options.window = args.window.empty()

@@ -5,7 +5,6 @@
 #include "engine/image/exr_io.hpp"
 #include "engine/image/file_paths.hpp"
 #include "engine/scene/pixel_filter.hpp"
-#include "engine/scene/scene_loader.hpp"
 #include "tools/metrics/metrics.hpp"
 #include "tools/reference/reference_renderer.hpp"
 #include "tools/reference/scene_hash.hpp"
@@ -168,8 +167,7 @@ void record_in_manifest(const ReferenceArgs& args, double seconds, const ImageRG
 }
 
 int run_reference(const ReferenceArgs& args) {
-    const Scene scene = load_scene(args.scene, args.overrides, {.allow_outside_paths = args.allow_outside_paths});
-    print_warnings(scene_warnings(scene));
+    const Scene scene = load_command_scene(args.scene, args.overrides, args.allow_outside_paths);
     require_writable_file_path(args.out);
     if (!args.manifest.empty()) require_writable_file_path(args.manifest);
     ref::ReferenceOptions options;

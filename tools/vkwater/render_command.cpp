@@ -6,7 +6,6 @@
 #include "engine/image/png_preview.hpp"
 #include "engine/scene/pixel_filter.hpp"
 #include "engine/scene/range.hpp"
-#include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
 #include "passes/frame/frame_needs.hpp"
 #include "passes/frame/renderer.hpp"
@@ -84,8 +83,7 @@ int run_render(const RenderArgs& args) {
     // --exposure is the override camera.exposure, so that the EXR's record of the settings names it.
     std::vector<std::string> overrides = args.overrides;
     if (args.exposure) overrides.push_back("camera.exposure=" + format_number(*args.exposure));
-    const Scene scene = load_scene(args.scene, overrides, {.allow_outside_paths = args.allow_outside_paths});
-    print_warnings(scene_warnings(scene));
+    const Scene scene = load_command_scene(args.scene, overrides, args.allow_outside_paths);
     const PixelFilter filter = pixel_filter_from_spp(args.spp);
     // Fail on an unwritable output before spending time on the render. Without --out, the scene's
     // name with .exr, in the current folder.
