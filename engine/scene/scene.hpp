@@ -239,6 +239,10 @@ struct Scene {
     Medium medium = default_medium();  // the water's optical properties
     std::vector<Receiver> receivers;
     EffectsSettings effects;
+    // Distinct for every scene the loader makes (copies share it): what the renderer keys its
+    // uploaded receiver meshes and textures on, with the scene's address, since a scene loaded
+    // anew can reuse a freed one's address. 0 for scenes built in code.
+    uint64_t load_id = 0;
 };
 
 // What the scene's files ask for that the renderers leave out (the receivers' glTF files: mesh

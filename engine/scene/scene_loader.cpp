@@ -1,6 +1,7 @@
 // load_scene / parse_scene: file -> text -> JSON -> overrides -> validated Scene.
 #include "engine/scene/scene_loader.hpp"
 
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -39,7 +40,11 @@ Scene parse_scene(std::string_view json_text, const std::filesystem::path& name_
     ErrorContext errors(name_for_messages.string());
     nlohmann::json root = parse_json_text(json_text, errors);
     apply_overrides(root, overrides, errors);
-    return scene_from_json(root, errors, name_for_messages, FileScope(name_for_messages, options.allow_outside_paths));
+    Scene scene =
+        scene_from_json(root, errors, name_for_messages, FileScope(name_for_messages, options.allow_outside_paths));
+    static std::atomic<uint64_t> loads{0};
+    scene.load_id = ++loads;
+    return scene;
 }
 
 Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides,

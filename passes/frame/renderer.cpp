@@ -302,10 +302,12 @@ const passes::OceanSpectrumBuffer* Renderer::ocean_spectrum(const Scene& scene) 
 const passes::ReceiverMeshes* Renderer::receiver_meshes(const Scene& scene) {
     if (scene.receivers.empty()) return nullptr;
     // Receivers are static: the meshes are uploaded once per scene object and count.
-    if (!receivers_ || receivers_source_ != &scene || receivers_count_ != scene.receivers.size()) {
+    if (!receivers_ || receivers_source_ != &scene || receivers_load_id_ != scene.load_id ||
+        receivers_count_ != scene.receivers.size()) {
         frame_.reset();  // the compiled frame imported the old buffers
         receivers_ = std::make_unique<passes::ReceiverMeshes>(context_, scene.receivers);
         receivers_source_ = &scene;
+        receivers_load_id_ = scene.load_id;
         receivers_count_ = scene.receivers.size();
     }
     return receivers_.get();

@@ -119,6 +119,7 @@ private:
     std::unique_ptr<passes::ReceiverMeshes> receivers_;     // the scene's receiver meshes on the device
     passes::CausticReadRegionCache read_regions_;           // the photon culling's region, while the camera stays
     const void* receivers_source_ = nullptr;                // the scene whose receivers they are
+    uint64_t receivers_load_id_ = 0;                        // and its Scene::load_id
     size_t receivers_count_ = 0;
     size_t realize_count_ = 0;
     double last_declare_ms_ = 0.0;

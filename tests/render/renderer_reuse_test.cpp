@@ -4,9 +4,12 @@
 // a new output size makes new objects, and no pipeline is ever created twice.
 #include "engine/scene/scene_loader.hpp"
 #include "passes/frame/renderer.hpp"
+#include "tests/render/overhead_scene.hpp"
 #include "tests/support/gpu_test.hpp"
 
 #include <filesystem>
+#include <optional>
+#include <string>
 
 namespace vkw::test {
 namespace {
@@ -89,6 +92,25 @@ TEST_F(RendererReuse, ReusesThePhotonCullingRegionWhileTheCameraStays) {
     scene.camera.position.x += 0.1;
     renderer.render(scene, options);
     EXPECT_EQ(renderer.read_regions_computed(), 3u) << "a new camera must recompute it";
+}
+
+// The receivers' meshes are uploaded once per scene; a scene loaded anew where a freed one lived
+// (the same address, the same receiver count) is another scene, and gets its own.
+TEST_F(RendererReuse, ASceneLoadedWhereAFreedOneLivedGetsItsOwnReceivers) {
+    Renderer renderer(context());
+    const RenderOptions options{33, 33, true, fg::TimingMode::None};
+    std::optional<Scene> scene;  // one storage for both scenes
+    const auto box = [](const char* albedo) {
+        return overhead_receiver_scene(
+            std::string(R"({"type": "box", "half_size": [1, 1, 1], "albedo": )") + albedo + "}", "box.json");
+    };
+    scene.emplace(box("[0.8, 0.1, 0.1]"));
+    const float red = renderer.render(*scene, options).image.pixel(16, 16)[0];
+    scene.emplace(box("[0.1, 0.1, 0.8]"));
+    const float blue_scene_red = renderer.render(*scene, options).image.pixel(16, 16)[0];
+    // The box top's red is proportional to its albedo's: 0.1 / 0.8 of the first scene's, within the fp32
+    // shading's 1e-5 (the receiver tests'); the stale meshes would show the first scene's red again.
+    EXPECT_NEAR(blue_scene_red, red / 8.0f, 1e-5f * red);
 }
 
 }  // namespace
