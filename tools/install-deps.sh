@@ -24,6 +24,8 @@ packages=(
   xvfb xauth x11-apps imagemagick xdotool
   # the independent cross-check of the reference's floor caustics (tests/povray)
   povray
+  # Khronos glTF 2.0 sample models that the rendering tests load (tests/render/khronos_samples_test.cpp)
+  assimp-testmodels
   # the corpus generator and the viewer's soak test (tests/corpus, tests/soak)
   python3
   # the sanitizer and fuzzing build of the loaders (tests/sanitize, tests/fuzz): clang with its

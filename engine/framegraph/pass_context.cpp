@@ -88,6 +88,10 @@ void PassContext::bind(const Pipeline& pipeline, std::initializer_list<Descripto
 
 void PassContext::bind(const Pipeline& pipeline, const std::vector<DescriptorBinding>& bindings) const {
     vkCmdBindPipeline(cmd_, pipeline.bind_point(), pipeline.handle());
+    push_descriptors(pipeline, bindings);
+}
+
+void PassContext::push_descriptors(const Pipeline& pipeline, const std::vector<DescriptorBinding>& bindings) const {
     if (bindings.empty()) return;
     std::vector<VkWriteDescriptorSet> writes;
     for (const DescriptorBinding& binding : bindings) {

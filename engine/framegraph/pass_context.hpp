@@ -79,6 +79,9 @@ public:
     // Binds the pipeline and pushes its descriptor set 0.
     void bind(const Pipeline& pipeline, std::initializer_list<DescriptorBinding> bindings) const;
     void bind(const Pipeline& pipeline, const std::vector<DescriptorBinding>& bindings) const;
+    // Pushes these bindings of the bound pipeline's set 0 again; the others keep their values
+    // (push descriptors update incrementally): per-draw resources such as a mesh's texture.
+    void push_descriptors(const Pipeline& pipeline, const std::vector<DescriptorBinding>& bindings) const;
     void push_constants(const Pipeline& pipeline, const void* data, uint32_t bytes) const;
     template <class T>
     void push_constants(const Pipeline& pipeline, const T& data) const {

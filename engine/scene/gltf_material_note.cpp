@@ -21,9 +21,7 @@ std::string gltf_material_note(const tinygltf::Material& material, int index) {
     if (emissive.size() == 3 && (emissive[0] != 0.0 || emissive[1] != 0.0 || emissive[2] != 0.0)) {
         ignored.push_back("emissiveFactor");
     }
-    if (material.alphaMode == "MASK" || material.alphaMode == "BLEND") {
-        ignored.push_back("alphaMode " + material.alphaMode + " (drawn opaque)");
-    }
+    if (material.alphaMode == "BLEND") ignored.push_back("alphaMode BLEND (drawn opaque)");
     for (const auto& [name, value] : material.extensions) {
         if (name.starts_with("KHR_materials_")) ignored.push_back(name);
     }

@@ -8,9 +8,11 @@
 #include <array>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <initializer_list>
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -22,6 +24,7 @@
 #include "engine/core/message_text.hpp"
 #include "engine/scene/file_scope.hpp"
 #include "engine/scene/gltf_material_note.hpp"
+#include "engine/scene/gltf_texture.hpp"
 #include "engine/scene/json_text.hpp"
 #include "engine/scene/range.hpp"
 
@@ -148,6 +151,10 @@ public:
         if (!morphed_.empty()) {
             mesh.warnings.push_back("morph targets ignored, drawn in the base shape: " + listed(morphed_));
         }
+        if (!untextured_.empty()) {
+            mesh.warnings.push_back("base colour texture without its coordinates, drawn untextured: " +
+                                    listed(untextured_));
+        }
     }
 
 private:
@@ -237,15 +244,33 @@ private:
         const auto floats = {TINYGLTF_COMPONENT_TYPE_FLOAT};
         const std::vector<double> positions = read(attribute("POSITION"), 3, floats, where + " POSITION");
         const std::size_t count = positions.size() / 3;
-        std::vector<double> normals, uvs;
+        std::vector<double> normals;
         if (attribute("NORMAL") >= 0) normals = read(attribute("NORMAL"), 3, floats, where + " NORMAL");
-        if (attribute("TEXCOORD_0") >= 0) {
+        if (!normals.empty() && normals.size() != positions.size()) fail(where + ": NORMAL and POSITION counts differ");
+        // The base colour texture and the coordinates it reads (TEXCOORD_0 for an untextured part).
+        int texture = -1;
+        UvMapping mapping;
+        if (primitive.material >= 0) {
+            const tinygltf::TextureInfo& info =
+                material(primitive.material, where).pbrMetallicRoughness.baseColorTexture;
+            if (info.index >= 0) {
+                mapping = uv_mapping(info);
+                texture = texture_index(mesh, info.index, where);
+            }
+        }
+        const std::string uv_name = "TEXCOORD_" + std::to_string(mapping.set);
+        if (texture >= 0 && attribute(uv_name.c_str()) < 0) {
+            untextured_.push_back(where + " (no " + uv_name + ")");
+            texture = -1;
+        }
+        std::vector<double> uvs;
+        if (attribute(uv_name.c_str()) >= 0) {
             const auto kinds = {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
                                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
-            uvs = read(attribute("TEXCOORD_0"), 2, kinds, where + " TEXCOORD_0");
+            uvs = read(attribute(uv_name.c_str()), 2, kinds, where + " " + uv_name);
+            if (uvs.size() / 2 != count) fail(where + ": " + uv_name + " and POSITION counts differ");
         }
-        if (!normals.empty() && normals.size() != positions.size()) fail(where + ": NORMAL and POSITION counts differ");
-        if (!uvs.empty() && uvs.size() / 2 != count) fail(where + ": TEXCOORD_0 and POSITION counts differ");
+        const std::vector<double> colors = vertex_colors(attribute("COLOR_0"), count, where);
         const std::vector<uint32_t> triangles = triangle_list(mode, vertex_order(primitive, count, where));
         const auto first_index = uint32_t(mesh.indices.size());
 
@@ -255,13 +280,30 @@ private:
             const glm::dvec3 p(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
             return glm::dvec3(transform * glm::dvec4(p, 1.0));
         };
-        // uvs stays one per position: once any primitive has them, the others get (0, 0).
-        if (!uvs.empty() && !any_uvs_) mesh.uvs.resize(mesh.positions.size(), glm::vec2(0.0f));
-        any_uvs_ = any_uvs_ || !uvs.empty();
+        // uvs and colors stay one per position: once any primitive has them, the others get (0, 0)
+        // and white.
+        if (!uvs.empty() && !has_uvs_) mesh.uvs.resize(mesh.positions.size(), glm::vec2(0.0f));
+        if (!colors.empty() && !has_colors_) mesh.colors.resize(mesh.positions.size(), glm::vec4(1.0f));
+        has_uvs_ = has_uvs_ || !uvs.empty();
+        has_colors_ = has_colors_ || !colors.empty();
         const auto push_vertex = [&](uint32_t i, const glm::dvec3& normal) {
             mesh.positions.emplace_back(position(i));
             mesh.normals.emplace_back(normal);
-            if (any_uvs_) mesh.uvs.push_back(uvs.empty() ? glm::vec2(0.0f) : glm::vec2(uvs[2 * i], uvs[2 * i + 1]));
+            if (has_uvs_) {
+                const glm::dvec3 uv = uvs.empty() ? glm::dvec3(0.0, 0.0, 1.0)
+                                                  : mapping.transform * glm::dvec3(uvs[2 * i], uvs[2 * i + 1], 1.0);
+                const glm::vec2 stored(uv.x, uv.y);
+                if (!std::isfinite(stored.x) || !std::isfinite(stored.y)) {
+                    fail(where + ": " + uv_name + " of vertex " + std::to_string(i) +
+                         " is not finite (after KHR_texture_transform, if any; accepted: finite in single precision)");
+                }
+                mesh.uvs.push_back(stored);
+            }
+            if (has_colors_) {
+                mesh.colors.push_back(
+                    colors.empty() ? glm::vec4(1.0f)
+                                   : glm::vec4(colors[4 * i], colors[4 * i + 1], colors[4 * i + 2], colors[4 * i + 3]));
+            }
         };
         const bool flat = normals.empty();  // the specification asks for flat normals then
         const auto base = uint32_t(mesh.positions.size());
@@ -284,8 +326,14 @@ private:
                 push_vertex(i, n);
             }
         }
-        add_part(mesh, first_index, base_color(primitive.material, where));
-        if (!texture_found_ && primitive.material >= 0) take_texture(mesh, primitive.material, where);
+        MeshPart part{first_index, 0, base_color(primitive.material, where), texture};
+        if (primitive.material >= 0) {
+            const tinygltf::Material& source = material(primitive.material, where);
+            const std::vector<double>& factor = source.pbrMetallicRoughness.baseColorFactor;
+            if (factor.size() == 4) part.alpha = std::clamp(factor[3], 0.0, 1.0);
+            if (source.alphaMode == "MASK") part.alpha_cutoff = alpha_cutoff(source, primitive.material);
+        }
+        add_part(mesh, part);
         if (primitive.material >= 0 && noted_materials_.insert(primitive.material).second) {
             const std::string note =
                 gltf_material_note(model_.materials[std::size_t(primitive.material)], primitive.material);
@@ -293,24 +341,31 @@ private:
         }
     }
 
-    // The primitive's indices as a part of its material's colour, joined to the previous part
-    // when that has the same colour (a file of many primitives but few colours draws few parts).
-    static void add_part(Mesh& mesh, uint32_t first_index, const glm::dvec3& color) {
-        const auto count = uint32_t(mesh.indices.size()) - first_index;
-        if (count == 0) return;
-        if (!mesh.parts.empty() && mesh.parts.back().base_color == color) {
-            mesh.parts.back().index_count += count;
+    // The primitive's indices as a part of its material's base colour, joined to the previous part
+    // when that has the same colour and texture (a file of many primitives but few materials draws
+    // few parts).
+    static void add_part(Mesh& mesh, MeshPart part) {
+        part.index_count = uint32_t(mesh.indices.size()) - part.first_index;
+        if (part.index_count == 0) return;
+        const MeshPart& last = mesh.parts.empty() ? part : mesh.parts.back();
+        if (!mesh.parts.empty() && last.base_color == part.base_color && last.texture == part.texture &&
+            last.alpha == part.alpha && last.alpha_cutoff == part.alpha_cutoff) {
+            mesh.parts.back().index_count += part.index_count;
             return;
         }
-        mesh.parts.push_back({first_index, count, color});
+        mesh.parts.push_back(part);
+    }
+
+    const tinygltf::Material& material(int index, const std::string& where) const {
+        if (std::size_t(index) >= model_.materials.size()) fail(where + ": no material " + std::to_string(index));
+        return model_.materials[std::size_t(index)];
     }
 
     // The metallic-roughness base colour factor of material `index` (glTF's default material,
     // white, for a primitive without one): the Lambertian albedo the renderers apply once.
     glm::dvec3 base_color(int index, const std::string& where) const {
         if (index < 0) return glm::dvec3(1.0);
-        if (std::size_t(index) >= model_.materials.size()) fail(where + ": no material " + std::to_string(index));
-        const std::vector<double>& factor = model_.materials[std::size_t(index)].pbrMetallicRoughness.baseColorFactor;
+        const std::vector<double>& factor = material(index, where).pbrMetallicRoughness.baseColorFactor;
         if (factor.size() != 4) return glm::dvec3(1.0);
         const glm::dvec3 color(factor[0], factor[1], factor[2]);
         if (!(glm::all(glm::greaterThanEqual(color, glm::dvec3(0.0))) &&
@@ -321,33 +376,57 @@ private:
         return color;
     }
 
-    void take_texture(Mesh& mesh, int index, const std::string& where) {
-        if (std::size_t(index) >= model_.materials.size()) fail(where + ": no material " + std::to_string(index));
-        const tinygltf::PbrMetallicRoughness& pbr = model_.materials[std::size_t(index)].pbrMetallicRoughness;
-        const int texture = pbr.baseColorTexture.index;
-        if (texture < 0) return;
-        texture_found_ = true;
-        if (std::size_t(texture) >= model_.textures.size()) fail(where + ": no texture " + std::to_string(texture));
-        const int image = model_.textures[std::size_t(texture)].source;
-        if (image < 0 || std::size_t(image) >= model_.images.size()) fail(where + ": texture without image");
-        const std::string& uri = model_.images[std::size_t(image)].uri;
-        mesh.base_color_texture = uri.empty() || uri.starts_with("data:")
-                                      ? file_.string() + "#images[" + std::to_string(image) + "]"
-                                      : (file_.parent_path() / uri).lexically_normal().string();
+    // The mesh's index of the file's textures[index], added on first use.
+    int texture_index(Mesh& mesh, int index, const std::string& where) {
+        const auto [at, added] = textures_.try_emplace(index, int(mesh.textures.size()));
+        if (!added) return at->second;
+        try {
+            mesh.textures.push_back(mesh_texture(model_, index, images_));
+        } catch (const UserError& error) {
+            fail(where + ": " + error.what());
+        }
+        return at->second;
+    }
+
+    // A MASK material's alphaCutoff (glTF's default 0.5), refused outside [0, 1].
+    double alpha_cutoff(const tinygltf::Material& source, int index) const {
+        const double cutoff = source.alphaCutoff;
+        if (!(cutoff >= 0.0 && cutoff <= 1.0)) {
+            fail("materials[" + std::to_string(index) + "].alphaCutoff " + format_number(cutoff) +
+                 " (accepted: 0 to 1)");
+        }
+        return cutoff;
+    }
+
+    // COLOR_0 as linear RGBA, four per vertex (alpha 1 for an RGB one); empty without it.
+    std::vector<double> vertex_colors(int accessor, std::size_t count, const std::string& where) const {
+        if (accessor < 0) return {};
+        const bool rgba = std::size_t(accessor) < model_.accessors.size() &&
+                          model_.accessors[std::size_t(accessor)].type == TINYGLTF_TYPE_VEC4;
+        const auto kinds = {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                            TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
+        const std::vector<double> values = read(accessor, rgba ? 4 : 3, kinds, where + " COLOR_0");
+        if (values.size() / (rgba ? 4 : 3) != count) fail(where + ": COLOR_0 and POSITION counts differ");
+        std::vector<double> colors;
+        colors.reserve(4 * count);
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            if (!(values[i] >= 0.0 && values[i] <= 1.0)) {
+                fail(where + ": COLOR_0 value " + format_number(values[i]) + " (accepted: each component in [0, 1])");
+            }
+            colors.push_back(values[i]);
+            if (!rgba && i % 3 == 2) colors.push_back(1.0);
+        }
+        return colors;
     }
 
     const std::filesystem::path& file_;
     const tinygltf::Model& model_;
-    bool texture_found_ = false;
-    bool any_uvs_ = false;
-    std::set<int> noted_materials_;                         // each material's note once
-    std::vector<std::string> skipped_, skinned_, morphed_;  // for add_content_warnings
+    bool has_uvs_ = false, has_colors_ = false;                          // some primitive so far had them
+    std::map<int, int> textures_;                                        // the file's texture index -> the mesh's
+    std::map<int, std::shared_ptr<const TextureImage>> images_;          // decoded images, shared by textures
+    std::set<int> noted_materials_;                                      // each material's note once
+    std::vector<std::string> skipped_, skinned_, morphed_, untextured_;  // for add_content_warnings
 };
-
-// Texture pixels are the renderer's business: keep the image's uri, decode nothing.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
-    return true;
-}
 
 // Whole file as bytes, with errno's reason when it cannot be read (as the scene loader does).
 std::string read_bytes(const std::filesystem::path& file) {
@@ -442,9 +521,10 @@ void check_file_uris(const nlohmann::json& document, const std::filesystem::path
 
 // Checks the file's JSON before tinygltf parses it: tinygltf's parser recurses (deep nesting in
 // `extras` overflowed the stack), and it answers a required extension it lacks with a misleading
-// error about the data that extension would have decoded.
-void prescan_json(std::string_view json, const std::filesystem::path& file, const FileScope& scope,
-                  const GltfReader& reader) {
+// error about the data that extension would have decoded. Returns the images that base colour
+// textures sample (the ones to decode).
+std::set<int> prescan_json(std::string_view json, const std::filesystem::path& file, const FileScope& scope,
+                           const GltfReader& reader) {
     const std::size_t depth = json_nesting_depth(json);
     if (depth > kMaxJsonNesting) {
         reader.fail("JSON nested " + std::to_string(depth) + " levels deep (accepted: at most " +
@@ -455,18 +535,21 @@ void prescan_json(std::string_view json, const std::filesystem::path& file, cons
         reader.fail("a NUL byte at byte " + std::to_string(nul) + " of the JSON (glTF JSON is UTF-8 text)");
     }
     const nlohmann::json document = nlohmann::json::parse(json, nullptr, false);
-    if (document.is_discarded() || !document.is_object()) return;  // tinygltf names the syntax error
+    if (document.is_discarded() || !document.is_object()) return {};  // tinygltf names the syntax error
     check_data_uris(document, reader);
     check_file_uris(document, file, scope, reader);
     const auto required = document.find("extensionsRequired");
-    if (required == document.end() || !required->is_array()) return;
-    for (const nlohmann::json& name : *required) {
-        // Every required extension changes how data is read (Draco and meshopt compress it); the
-        // loader implements none, and the specification asks a loader to refuse such a file.
+    for (const nlohmann::json& name :
+         required != document.end() && required->is_array() ? *required : nlohmann::json::array()) {
+        // A required extension changes how data is read (Draco and meshopt compress it), and the
+        // specification asks a loader to refuse what it lacks; the one implemented maps texture
+        // coordinates (gltf_texture.hpp).
         const std::string text = name.is_string() ? name.get<std::string>() : std::string("?");
+        if (text == "KHR_texture_transform") continue;
         reader.fail("needs the glTF extension '" + text.substr(0, 64) +
-                    "' (extensionsRequired), which vkwater does not support");
+                    "' (extensionsRequired), which vkwater does not support (accepted: KHR_texture_transform)");
     }
+    return base_color_images(document);
 }
 
 }  // namespace
@@ -476,17 +559,19 @@ Mesh load_gltf_mesh(const std::filesystem::path& file) { return load_gltf_mesh(f
 Mesh load_gltf_mesh(const std::filesystem::path& file, const FileScope& scope) {
     const std::string bytes = read_bytes(file);
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(&skip_image, nullptr);
     tinygltf::Model model;
     std::string error, warning;
     const std::string base_dir = file.parent_path().string();
     GltfReader reader(file, model);
     const bool binary = bytes.starts_with("glTF");  // the .glb magic
-    prescan_json(binary ? glb_json(bytes, reader) : std::string_view(bytes), file, scope, reader);
+    GltfImageDecoder decoder(
+        prescan_json(binary ? glb_json(bytes, reader) : std::string_view(bytes), file, scope, reader));
+    loader.SetImageLoader(&GltfImageDecoder::decode, &decoder);
     const auto length = static_cast<unsigned int>(bytes.size());
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
     const bool loaded = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning, data, length, base_dir)
                                : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), length, base_dir);
+    if (!decoder.failure().empty()) reader.fail(decoder.failure());  // tinygltf's message would bury it
     if (!loaded) {
         // tinygltf's messages may span lines; a UserError is one line.
         // tinygltf passes nlohmann's syntax errors on, with the whole token last read (a data URI).

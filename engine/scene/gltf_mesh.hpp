@@ -15,9 +15,10 @@ class FileScope;
 // every mesh when the file has no scenes), with node transforms applied, merged into one Mesh
 // in the file's coordinates. Triangle lists, strips and fans are accepted (strips and fans become
 // lists); POINTS and LINES modes are refused. Missing normals are computed flat, as the glTF
-// specification asks. Each primitive keeps its material's base colour factor (Mesh::parts;
-// glTF's default white without a material). base_color_texture comes from the first primitive
-// whose material has one; texture images are not decoded here, and no renderer samples them yet.
+// specification asks. Each primitive keeps its material's base colour (Mesh::parts; glTF's default
+// white without a material): the factor, and the baseColorTexture's image decoded with its sampler
+// and its texture coordinates (KHR_texture_transform applied; gltf_texture.hpp). COLOR_0 becomes
+// Mesh::colors. Images that no base colour samples are not decoded.
 //
 // Throws vkw::UserError naming the file for a file that cannot be read, malformed glTF,
 // unsupported content and out-of-bounds data: "glTF file '<path>': <what>". The buffers and

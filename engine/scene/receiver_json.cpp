@@ -47,9 +47,17 @@ Mesh read_gltf(FieldReader& fields, const FileScope& scope, const std::optional<
     for (std::string& warning : mesh.warnings) {
         warning = fields.path_of("file") + " '" + shortened_input(*file, 60) + "': " + warning;
     }
-    if (!use_texture) mesh.base_color_texture.clear();
-    // A given albedo replaces the materials' base colours (it does not multiply them).
-    if (albedo) mesh.parts.clear();
+    if (!use_texture) {
+        for (MeshPart& part : mesh.parts) part.texture = -1;
+        mesh.textures.clear();
+    }
+    // A given albedo replaces the file's base colour whole: the materials' factors and textures and
+    // the vertex colours (it does not multiply them).
+    if (albedo) {
+        mesh.parts.clear();
+        mesh.textures.clear();
+        mesh.colors.clear();
+    }
     return mesh;
 }
 

@@ -106,7 +106,7 @@ Image Image::create_unbound(const Context& context, const ImageDesc& desc, const
     info.imageType = VK_IMAGE_TYPE_2D;
     info.format = desc.format;
     info.extent = {desc.width, desc.height, 1};
-    info.mipLevels = 1;
+    info.mipLevels = desc.mip_levels;
     info.arrayLayers = 1;
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
@@ -141,12 +141,37 @@ void Image::bind(const Context& context, VkDeviceMemory memory, VkDeviceSize off
     // A depth-stencil view used for sampling may only name one aspect; vkwater samples depth.
     VkImageAspectFlags view_aspect = aspect();
     if (format_is_depth(desc_.format)) view_aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
-    view_info.subresourceRange = {view_aspect, 0, 1, 0, 1};
+    view_info.subresourceRange = {view_aspect, 0, desc_.mip_levels, 0, 1};
     VKW_CHECK(vkCreateImageView(device_, &view_info, nullptr, &view_), "view of image '" + name + "'");
     context.set_name(view_, VK_OBJECT_TYPE_IMAGE_VIEW, name);
 }
 
 VkImageAspectFlags Image::aspect() const { return format_aspect(desc_.format); }
+
+Sampler::Sampler(const Context& context, const VkSamplerCreateInfo& info, const std::string& name)
+    : device_(context.device()) {
+    VKW_CHECK(vkCreateSampler(device_, &info, nullptr, &sampler_), "sampler '" + name + "'");
+    context.set_name(sampler_, VK_OBJECT_TYPE_SAMPLER, name);
+}
+
+Sampler::~Sampler() { reset(); }
+
+Sampler::Sampler(Sampler&& other) noexcept { *this = std::move(other); }
+
+Sampler& Sampler::operator=(Sampler&& other) noexcept {
+    if (this != &other) {
+        reset();
+        device_ = other.device_;
+        sampler_ = other.sampler_;
+        other.sampler_ = VK_NULL_HANDLE;
+    }
+    return *this;
+}
+
+void Sampler::reset() {
+    if (sampler_) vkDestroySampler(device_, sampler_, nullptr);
+    sampler_ = VK_NULL_HANDLE;
+}
 
 Image::~Image() { reset(); }
 

@@ -67,6 +67,7 @@ struct ImageDesc {
     uint32_t height = 0;
     VkFormat format = VK_FORMAT_UNDEFINED;
     VkImageUsageFlags usage = 0;
+    uint32_t mip_levels = 1;  // the view covers them all
 };
 
 // An image and its one view. Either owns its memory or is bound into memory owned
@@ -97,6 +98,23 @@ private:
     VkImageView view_ = VK_NULL_HANDLE;
     ImageDesc desc_;
     DeviceMemory own_memory_;
+};
+
+// A sampler, owned (the frame graph's executor keeps the shared linear and nearest ones).
+class Sampler {
+public:
+    Sampler() = default;
+    Sampler(const Context& context, const VkSamplerCreateInfo& info, const std::string& name);
+    ~Sampler();
+    Sampler(Sampler&& other) noexcept;
+    Sampler& operator=(Sampler&& other) noexcept;
+
+    VkSampler handle() const { return sampler_; }
+
+private:
+    void reset();
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkSampler sampler_ = VK_NULL_HANDLE;
 };
 
 // Aspect bits of a format: depth and/or stencil for depth formats, colour otherwise.

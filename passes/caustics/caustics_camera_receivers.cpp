@@ -65,7 +65,7 @@ fg::ImageHandle add_caustic_receivers_pass(fg::FrameGraph& graph, const Receiver
             use_receiver_mesh_vertices(mesh_desc);
             const Pipeline& mesh = context.pipeline("caustic receivers meshes", mesh_desc);
             context.bind(mesh, {context.uniform_buffer(0, d.constants)});
-            draw_receiver_meshes(context, mesh, *meshes, *d.vertices, *d.indices, view);
+            draw_receiver_meshes(context, mesh, *meshes, *d.vertices, *d.indices, view, BaseColorTexture::Unused);
         });
     return data.target;
 }

@@ -4,16 +4,24 @@ namespace vkw::passes {
 
 void use_receiver_mesh_vertices(GraphicsPipelineDesc& desc) {
     desc.vertex_shader = "receivers/mesh.vert";
-    desc.vertex_bindings = {{0, 6 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.vertex_bindings = {{0, kReceiverVertexBytes, VK_VERTEX_INPUT_RATE_VERTEX}};
     desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
-                              {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 3 * sizeof(float)}};
+                              {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 3 * sizeof(float)},
+                              {2, 0, VK_FORMAT_R32G32_SFLOAT, 6 * sizeof(float)},
+                              {3, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 8 * sizeof(float)}};
 }
 
-GraphicsPipelineDesc receiver_mesh_pipeline(const LightingInputs& lighting, const std::string& variant_suffix) {
+GraphicsPipelineDesc receiver_mesh_pipeline(const LightingInputs& lighting, const ReceiverMeshes& meshes,
+                                            const std::string& variant_suffix) {
     GraphicsPipelineDesc desc;
     use_receiver_mesh_vertices(desc);
-    desc.fragment_shader = lighting.shader("receivers/receiver.frag") + variant_suffix;
+    const bool varied = meshes.varied_base_color();
+    desc.fragment_shader = lighting.shader("receivers/receiver.frag") + (varied ? "_mesh" : "") + variant_suffix;
     lighting.add_layout(desc.layout.bindings);
+    if (varied) {
+        desc.layout.bindings.push_back(
+            {kBaseColorTextureBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
+    }
     desc.layout.push_constant_bytes = sizeof(ReceiverPush);
     desc.depth_test = true;
     desc.depth_write = true;
@@ -21,13 +29,19 @@ GraphicsPipelineDesc receiver_mesh_pipeline(const LightingInputs& lighting, cons
 }
 
 void draw_receiver_meshes(const fg::PassContext& context, const Pipeline& pipeline, const ReceiverMeshes& meshes,
-                          fg::BufferHandle vertices, fg::BufferHandle indices, const glm::vec4& view) {
+                          fg::BufferHandle vertices, fg::BufferHandle indices, const glm::vec4& view,
+                          BaseColorTexture texture) {
     const VkBuffer vertex_buffer = context.buffer(vertices);
     const VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(context.cmd(), 0, 1, &vertex_buffer, &offset);
     vkCmdBindIndexBuffer(context.cmd(), context.buffer(indices), 0, VK_INDEX_TYPE_UINT32);
     for (const ReceiverDraw& draw : meshes.draws()) {
-        context.push_constants(pipeline, ReceiverPush{glm::vec4(draw.albedo, 0.0f), view});
+        // Push descriptors update incrementally: the pass's other bindings stay as it pushed them.
+        if (texture == BaseColorTexture::Sampled && meshes.varied_base_color()) {
+            context.push_descriptors(pipeline, {meshes.textures().binding(kBaseColorTextureBinding, draw.texture)});
+        }
+        context.push_constants(pipeline, ReceiverPush{glm::vec4(draw.albedo, 0.0f), view,
+                                                      glm::vec4(draw.alpha, draw.alpha_cutoff, 0.0f, 0.0f)});
         vkCmdDrawIndexed(context.cmd(), draw.index_count, 1, draw.first_index, draw.vertex_offset, 0);
     }
 }

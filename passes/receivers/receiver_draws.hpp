@@ -16,17 +16,31 @@ struct ReceiverPush {
     glm::vec4 albedo{0.0f};
     // x: 1 mirrored; y: side kept (+1 the camera's, -1 the other, 0 not a scene view); z: clip margin, m
     glm::vec4 view{0.0f};
+    // The mesh variant's cutout: x the base colour factor's alpha, y the cutoff (negative: opaque)
+    glm::vec4 material{1.0f, -1.0f, 0.0f, 0.0f};
 };
 
-// receivers/mesh.vert and its vertex layout (position, normal: 6 floats), for any fragment shader.
+// receivers/mesh.vert and its vertex layout (position, normal, texture coordinates, RGBA colour: 12
+// floats), for any fragment shader.
 void use_receiver_mesh_vertices(GraphicsPipelineDesc& desc);
 
-// receivers/mesh.vert + receivers/receiver.frag in the lighting inputs' variant (plus
-// `variant_suffix`, e.g. the caustic layer's "_layer"), depth tested and written.
-GraphicsPipelineDesc receiver_mesh_pipeline(const LightingInputs& lighting, const std::string& variant_suffix = "");
+// The base colour texture's binding in receivers/receiver.frag's mesh variants.
+inline constexpr uint32_t kBaseColorTextureBinding = 8;
 
-// Binds the meshes' buffers and draws each mesh with its albedo and `view`.
+// receivers/mesh.vert + receivers/receiver.frag in the lighting inputs' variant (plus
+// `variant_suffix`, e.g. the caustic layer's "_layer"), depth tested and written. Where the meshes'
+// base colour varies (ReceiverMeshes::varied_base_color), the mesh variant, which samples the base
+// colour texture at kBaseColorTextureBinding and multiplies in the vertex colour.
+GraphicsPipelineDesc receiver_mesh_pipeline(const LightingInputs& lighting, const ReceiverMeshes& meshes,
+                                            const std::string& variant_suffix = "");
+
+enum class BaseColorTexture : bool { Unused, Sampled };
+
+// Binds the meshes' buffers and draws each part with its albedo and `view`, and with its base
+// colour texture pushed at kBaseColorTextureBinding when the pipeline samples one (a
+// receiver_mesh_pipeline of meshes whose base colour varies).
 void draw_receiver_meshes(const fg::PassContext& context, const Pipeline& pipeline, const ReceiverMeshes& meshes,
-                          fg::BufferHandle vertices, fg::BufferHandle indices, const glm::vec4& view);
+                          fg::BufferHandle vertices, fg::BufferHandle indices, const glm::vec4& view,
+                          BaseColorTexture texture = BaseColorTexture::Sampled);
 
 }  // namespace vkw::passes

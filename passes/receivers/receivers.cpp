@@ -25,7 +25,7 @@ void add_receivers_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes) {
             d.lighting.declare(builder, graph.blackboard());
         },
         [&meshes](const Data& d, fg::PassContext& context) {
-            const GraphicsPipelineDesc desc = receiver_mesh_pipeline(d.lighting, d.layer.variant());
+            const GraphicsPipelineDesc desc = receiver_mesh_pipeline(d.lighting, meshes, d.layer.variant());
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
             std::vector<fg::DescriptorBinding> bindings;
             d.lighting.add_bindings(context, bindings);

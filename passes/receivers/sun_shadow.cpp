@@ -4,6 +4,7 @@
 #include "engine/core/errors.hpp"
 #include "engine/framegraph/pass_context.hpp"
 #include "passes/caustics/caustics_light_space.hpp"
+#include "passes/receivers/receiver_draws.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -76,6 +77,7 @@ namespace {
 struct ShadowPush {
     float light_from_world[16];
     float clip_height[4];  // x: meshes above this height cast nothing in this half
+    float material[4];     // x: the base colour factor's alpha, y: a cutout's threshold (negative: opaque)
 };
 }  // namespace
 
@@ -112,15 +114,23 @@ SunShadowMap add_sun_shadow_pass(fg::FrameGraph& graph, const ReceiverMeshes& me
                                                        fg::LoadOp::Clear, {.depth = 0.0f});
         },
         [&meshes, space, size = inputs.size, beam = inputs.beam](const Data& d, fg::PassContext& context) {
+            const bool cutouts = meshes.has_cutouts();
             GraphicsPipelineDesc desc;
+            // Both variants clip the beam half at the water level; "cutout" also samples the parts' alpha.
+            // The meshes' vertex layout (use_receiver_mesh_vertices) less the normal, which nothing reads.
+            use_receiver_mesh_vertices(desc);
+            desc.vertex_attributes.erase(desc.vertex_attributes.begin() + 1);
             desc.vertex_shader = "receivers/sun_shadow.vert";
-            desc.fragment_shader = "receivers/sun_shadow.frag";  // clips the beam half at the water level
+            desc.fragment_shader = cutouts ? "receivers/sun_shadow.frag.cutout" : "receivers/sun_shadow.frag.solid";
             desc.layout.push_constant_bytes = sizeof(ShadowPush);
-            desc.vertex_bindings = {{0, 6 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX}};
-            desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}};
+            if (cutouts) {
+                desc.layout.bindings = {{kBaseColorTextureBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                                         VK_SHADER_STAGE_FRAGMENT_BIT}};
+            }
             desc.depth_test = true;
             desc.depth_write = true;
-            const Pipeline& pipeline = context.pipeline("sun shadow map", desc);
+            const Pipeline& pipeline =
+                context.pipeline(cutouts ? "sun shadow map with cutouts" : "sun shadow map", desc);
             context.bind(pipeline, std::vector<fg::DescriptorBinding>{});
             const VkBuffer vertex_buffer = context.buffer(d.vertices);
             const VkDeviceSize offset = 0;
@@ -137,8 +147,14 @@ SunShadowMap add_sun_shadow_pass(fg::FrameGraph& graph, const ReceiverMeshes& me
                 std::copy(std::begin(projection.light_from_world), std::end(projection.light_from_world),
                           push.light_from_world);
                 push.clip_height[0] = clip_height;
-                context.push_constants(pipeline, push);
                 for (const ReceiverDraw& draw : meshes.draws()) {
+                    if (cutouts) {
+                        context.push_descriptors(pipeline,
+                                                 {meshes.textures().binding(kBaseColorTextureBinding, draw.texture)});
+                    }
+                    push.material[0] = draw.alpha;
+                    push.material[1] = draw.alpha_cutoff;
+                    context.push_constants(pipeline, push);
                     vkCmdDrawIndexed(context.cmd(), draw.index_count, 1, draw.first_index, draw.vertex_offset, 0);
                 }
             };

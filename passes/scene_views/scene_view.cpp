@@ -42,7 +42,7 @@ fg::ImageHandle add_scene_view_pass(fg::FrameGraph& graph, const ReceiverMeshes&
             d.lighting.declare(builder, graph.blackboard(), /*with_camera_medium=*/false);
         },
         [&meshes, spec](const Data& d, fg::PassContext& context) {
-            const GraphicsPipelineDesc desc = receiver_mesh_pipeline(d.lighting, d.layer.variant());
+            const GraphicsPipelineDesc desc = receiver_mesh_pipeline(d.lighting, meshes, d.layer.variant());
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
             std::vector<fg::DescriptorBinding> bindings;
             d.lighting.add_bindings(context, bindings);

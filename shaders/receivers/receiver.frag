@@ -7,8 +7,10 @@
 // scene view (passes/scene_views/scene_view.hpp) it keeps one side of the water plane and writes what
 // leaves the receiver with its distance from the view's eye; the water adds the path.
 // Variants (shaders/CMakeLists.txt): VKWATER_PER_PIXEL_MEDIUM (the stencil split's mask),
-// VKWATER_CAUSTICS (the caustic map), and VKWATER_CAUSTIC_LAYER (a second output: the sun's
-// irradiance on the receiver under the water, 0 above it; passes/caustics/caustic_layer.hpp).
+// VKWATER_CAUSTICS (the caustic map), VKWATER_MESH_BASE_COLOR (a mesh's albedo times its base
+// colour texture and its vertex colour, docs/model.md section 4) and VKWATER_CAUSTIC_LAYER (a
+// second output: the sun's irradiance on the receiver under the water, 0 above it;
+// passes/caustics/caustic_layer.hpp).
 #include "common/medium.glsl"
 #include "receivers/receiver_push.glsl"
 #include "scene_views/scene_view.glsl"
@@ -20,6 +22,13 @@ layout(set = 0, binding = 1, std430) readonly buffer Optics { SceneOptics optics
 layout(location = 0) in vec3 in_world_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) flat in vec3 in_albedo;
+#ifdef VKWATER_MESH_BASE_COLOR
+// Linear texels (decoded from sRGB on the CPU: passes/receivers/texture_mips.hpp); 1 x 1 white for
+// untextured parts.
+layout(set = 0, binding = 8) uniform sampler2D base_color_texture;
+layout(location = 3) in vec2 in_uv;
+layout(location = 4) in vec4 in_color;
+#endif
 layout(location = 0) out vec4 out_radiance;
 #ifdef VKWATER_CAUSTIC_LAYER
 layout(location = 1) out vec4 out_caustic;
@@ -32,7 +41,14 @@ void main() {
     vec3 normal = normalize(in_normal);
     // Lambertian surfaces are lit on the side the eye sees.
     if (dot(normal, eye - p) < 0.0) normal = -normal;
-    vec3 radiance = lambert_radiance(in_albedo, receiver_irradiance(p, normal, optics));
+    vec3 albedo = in_albedo;
+#ifdef VKWATER_MESH_BASE_COLOR
+    vec4 base_color = texture(base_color_texture, in_uv) * in_color;
+    // A cutout (glTF alphaMode MASK) is not there where its alpha falls below the threshold.
+    if (base_color.a * receiver.material.x < receiver.material.y) discard;
+    albedo *= base_color.rgb;
+#endif
+    vec3 radiance = lambert_radiance(albedo, receiver_irradiance(p, normal, optics));
 #ifdef VKWATER_CAUSTIC_LAYER
     out_caustic = vec4(caustic_layer_value(p, normal, optics), 1.0);
 #endif

@@ -1,5 +1,5 @@
-// Push constants of the receiver shaders: the mesh's albedo, and which scene view (if
-// any) the draw renders (passes/scene_views/scene_view.hpp).
+// Push constants of the receiver shaders: the mesh's albedo, which scene view (if any) the draw
+// renders (passes/scene_views/scene_view.hpp), and a mesh part's cutout.
 #ifndef VKWATER_RECEIVER_PUSH_GLSL
 #define VKWATER_RECEIVER_PUSH_GLSL
 
@@ -10,6 +10,7 @@ layout(push_constant) uniform Receiver {
     vec4 view;    // x: 1 for the mirrored view; y: which side the view keeps (+1 the camera's side of the
                   // surface, -1 the other side, 0 not a scene view: everything, as the camera sees it);
                   // z: clip margin beyond the mean level, m (the waves' amplitude and a millimetre)
+    vec4 material;  // meshes: x the base colour factor's alpha, y the cutout's threshold (negative: opaque)
 } receiver;
 
 bool in_scene_view() { return receiver.view.y != 0.0; }

@@ -20,6 +20,7 @@ import pathlib
 import re
 import shutil
 import struct
+import zlib
 
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parent.parent
@@ -324,6 +325,41 @@ def gltf_cases():
         pbrMetallicRoughness={"baseColorFactor": [2, 0, 0, 1]})), "")
     add_gltf("node-scale-huge", mutated(lambda d: d["nodes"][0].update(scale=[1e300, 1e300, 1e300])), "")
     add_gltf("asset-missing", mutated(lambda d: d.pop("asset")), "")
+    # Base colour textures (a square with an embedded PNG): images stb_image cannot read, beyond
+    # the limits, and textures, samplers and wrap modes that do not exist.
+    square = json.loads((ROOT / "tests/fuzz/seeds/gltf/textured_square.gltf").read_text())
+
+    def textured(change):
+        document = copy.deepcopy(square)
+        change(document)
+        return json.dumps(document)
+
+    def png(width, height):
+        rows = b"".join(b"\x00" + bytes(4 * width) for _ in range(height))
+        chunk = lambda kind, data: (struct.pack(">I", len(data)) + kind + data +
+                                    struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF))
+        return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)) +
+                chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
+
+    image_uri = lambda data: "data:image/png;base64," + base64.b64encode(data).decode()
+    add_gltf("image-not-an-image", textured(lambda d: d["images"][0].update(uri=image_uri(b"not an image"))),
+             r"images\[0\]: not an image stb_image decodes")
+    add_gltf("image-truncated", textured(lambda d: d["images"][0].update(uri=image_uri(png(4, 4)[:40]))),
+             r"images\[0\]: ")
+    add_gltf("image-too-wide", textured(lambda d: d["images"][0].update(uri=image_uri(png(8193, 1)))),
+             r"images\[0\]: 8193 x 1 texels \(accepted: 1 to 8192 per side\)")
+    add_gltf("texture-absent", textured(lambda d: d["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"].update(
+        index=9)), r"no textures\[9\]")
+    add_gltf("texture-image-absent", textured(lambda d: d["textures"][0].update(source=7)),
+             r"textures\[0\] has no image")
+    add_gltf("sampler-absent", textured(lambda d: d["textures"][0].update(sampler=5)), r"no samplers\[5\]")
+    add_gltf("sampler-wrap", textured(lambda d: d["samplers"][0].update(wrapS=1234)),
+             r"samplers\[0\]\.wrapS 1234 is not a glTF wrap mode")
+    add_gltf("texture-transform-overflows", textured(lambda d: d["materials"][0]["pbrMetallicRoughness"][
+        "baseColorTexture"]["extensions"]["KHR_texture_transform"].update(scale=[1e300, 1])),
+             r"TEXCOORD_0 of vertex 2 is not finite")
+    add_gltf("colour-count-differs", textured(lambda d: d["accessors"][4].update(normalized=False, componentType=5126,
+                                                                              count=1)), r"COLOR_0 and POSITION counts differ")
     # .glb: a 12-byte header, then a JSON chunk.
     body = text.encode()
     body += b" " * (-len(body) % 4)

@@ -3,6 +3,7 @@
 // model's closed form, docs/model.md section 1), read at the pixel that sees its centre.
 #include "engine/scene/scene_loader.hpp"
 #include "passes/frame/renderer.hpp"
+#include "tests/render/overhead_scene.hpp"
 #include "tests/scene/gltf_test_files.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/reference/reference_renderer.hpp"
@@ -16,15 +17,8 @@ using ReceiverPass = GpuTest;
 
 TEST_F(ReceiverPass, BoxTopAboveTheWaterMatchesTheClosedForm) {
     // Looking straight down at a 2 m box whose top (y = 1) fills the centre of the view.
-    const Scene scene = parse_scene(R"({
-      "camera": {"position": [0, 5, 0], "direction": [0, -1, 0], "fov_y_deg": 30},
-      "sun": {"elevation_deg": 50, "azimuth_deg": 20, "irradiance": [2, 3, 4]},
-      "sky": {"radiance": [0.2, 0.3, 0.4]},
-      "floor": {"height": -2, "half_extent": 10},
-      "water": {"level": 0, "half_extent": 10},
-      "receivers": [{"type": "box", "half_size": [1, 1, 1], "albedo": [0.7, 0.5, 0.3]}]
-    })",
-                                    "box.json");
+    const Scene scene =
+        overhead_receiver_scene(R"({"type": "box", "half_size": [1, 1, 1], "albedo": [0.7, 0.5, 0.3]})", "box.json");
     Renderer renderer(context());
     const RenderResult result = renderer.render(scene, {33, 33, true, fg::TimingMode::None});
     const float* centre = result.image.pixel(16, 16);
@@ -55,17 +49,7 @@ TEST_F(ReceiverPass, EachGltfMaterialIsItsOwnAlbedoInBothRenderers) {
     for (const auto& [x, albedo] : squares) {
         const std::string centre = std::to_string(x);
         const auto scene_with = [&](const std::string& receiver) {
-            return parse_scene(R"({
-              "camera": {"position": [)" +
-                                   centre + R"(, 5, 0], "direction": [0, -1, 0], "fov_y_deg": 30},
-              "sun": {"elevation_deg": 50, "azimuth_deg": 20, "irradiance": [2, 3, 4]},
-              "sky": {"radiance": [0.2, 0.3, 0.4]},
-              "floor": {"height": -2, "half_extent": 10},
-              "water": {"level": 0, "half_extent": 10},
-              "receivers": [)" + receiver +
-                                   R"(]
-            })",
-                               dir / "squares.json");
+            return overhead_receiver_scene(receiver, dir / "squares.json", x);
         };
         const Scene gltf =
             scene_with(R"({"type": "gltf", "file": ")" + file.filename().string() + R"(", "translation": [0, 1, 0]})");

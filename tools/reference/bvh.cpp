@@ -1,5 +1,7 @@
 #include "tools/reference/bvh.hpp"
 
+#include <utility>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -44,7 +46,7 @@ bool hits_box(const Ray& ray, const glm::dvec3& inverse_direction, const glm::dv
 
 }  // namespace
 
-TriangleBvh::TriangleBvh(const std::vector<const Mesh*>& meshes) {
+TriangleBvh::TriangleBvh(const std::vector<const Mesh*>& meshes, CutOut cut_out) : cut_out_(std::move(cut_out)) {
     for (uint32_t receiver = 0; receiver < meshes.size(); ++receiver) {
         const Mesh& mesh = *meshes[receiver];
         for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
@@ -108,6 +110,7 @@ void TriangleBvh::traverse(const Ray& ray, double& max_distance, OnHit&& on_hit)
         for (uint32_t i = node.first; i < node.first + node.count; ++i) {
             const Triangle& tri = triangles_[i];
             if (auto hit = intersect(ray, tri.a, tri.b, tri.c, max_distance)) {
+                if (cut_out_ && cut_out_(tri.receiver, tri.triangle, {hit->y, hit->z})) continue;  // not there
                 if (on_hit(tri, *hit)) return;  // any-hit queries stop at the first
                 max_distance = hit->x;
             }
@@ -121,7 +124,7 @@ std::optional<TriangleHit> TriangleBvh::closest_hit(const Ray& ray, double max_d
         const double u = hit.y, v = hit.z;
         glm::dvec3 normal = glm::normalize((1.0 - u - v) * tri.na + u * tri.nb + v * tri.nc);
         if (glm::dot(normal, ray.direction) > 0.0) normal = -normal;
-        best = TriangleHit{hit.x, tri.receiver, tri.triangle, normal};
+        best = TriangleHit{hit.x, tri.receiver, tri.triangle, normal, {u, v}};
         return false;
     });
     return best;

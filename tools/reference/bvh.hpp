@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -23,12 +24,19 @@ struct TriangleHit {
     uint32_t receiver;  // index of the mesh it belongs to
     uint32_t triangle;  // its index in that mesh (indices 3 triangle .. 3 triangle + 2)
     glm::dvec3 normal;  // interpolated shading normal, unit, facing the ray
+    // The hit's barycentric weights of the triangle's second and third vertices (the first's is
+    // 1 - u - v): what per-vertex data (texture coordinates, colours) is interpolated with.
+    glm::dvec2 barycentric{0.0};
 };
 
 class TriangleBvh {
 public:
-    // meshes[i] is receiver i; meshes are in world space.
-    explicit TriangleBvh(const std::vector<const Mesh*>& meshes);
+    // Whether the point at barycentric (u, v) of triangle `triangle` of mesh `receiver` is cut out
+    // (a MASK material's alpha under its cutoff): rays pass through it.
+    using CutOut = std::function<bool(uint32_t receiver, uint32_t triangle, const glm::dvec2& barycentric)>;
+
+    // meshes[i] is receiver i; meshes are in world space. Without `cut_out`, every point is solid.
+    explicit TriangleBvh(const std::vector<const Mesh*>& meshes, CutOut cut_out = {});
 
     std::optional<TriangleHit> closest_hit(const Ray& ray, double max_distance) const;
     bool any_hit(const Ray& ray, double max_distance) const;
@@ -52,6 +60,7 @@ private:
 
     std::vector<Triangle> triangles_;
     std::vector<Node> nodes_;
+    CutOut cut_out_;
 };
 
 }  // namespace vkw::ref

@@ -4,10 +4,12 @@
 #include "engine/scene/builtin_meshes.hpp"
 #include "engine/water/sampled_ocean_surface.hpp"
 #include "tools/reference/optics.hpp"
+#include "tools/reference/texture_lookup.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <iterator>
@@ -44,7 +46,19 @@ WaterTransport::WaterTransport(const Scene& scene, const Quality& quality)
         meshes.push_back(&receiver.mesh);
         albedo_parts_.push_back(receiver_albedo_parts(receiver));
     }
-    bvh_ = std::make_unique<TriangleBvh>(meshes);
+    meshes_ = meshes;
+    const bool cutouts =
+        std::any_of(albedo_parts_.begin(), albedo_parts_.end(), [](const std::vector<MeshPart>& parts) {
+            return std::any_of(parts.begin(), parts.end(),
+                               [](const MeshPart& part) { return part.alpha_cutoff >= 0.0; });
+        });
+    TriangleBvh::CutOut cut_out_test;
+    if (cutouts) {
+        cut_out_test = [this](uint32_t receiver, uint32_t triangle, const glm::dvec2& barycentric) {
+            return cut_out(receiver, triangle, barycentric);
+        };
+    }
+    bvh_ = std::make_unique<TriangleBvh>(meshes, std::move(cut_out_test));
 
     has_water_ = scene.water.has_value();
     if (has_water_) {
@@ -314,16 +328,41 @@ bool WaterTransport::in_water(const glm::dvec3& p) const {
 std::optional<WaterTransport::SurfaceHit> WaterTransport::closest_receiver(const Ray& ray, double max_distance) const {
     const auto hit = bvh_->closest_hit(ray, max_distance);
     if (!hit) return std::nullopt;
-    return SurfaceHit{hit->distance, albedo_of(hit->receiver, hit->triangle), hit->normal};
+    return SurfaceHit{hit->distance, glm::dvec3(base_color_at(hit->receiver, hit->triangle, hit->barycentric)),
+                      hit->normal};
 }
 
-glm::dvec3 WaterTransport::albedo_of(uint32_t receiver, uint32_t triangle) const {
+const MeshPart& WaterTransport::part_of(uint32_t receiver, uint32_t triangle) const {
     const std::vector<MeshPart>& parts = albedo_parts_[receiver];
-    const uint32_t index = 3 * triangle;
     // The last part that starts at or before the triangle's first index (parts are in index order).
-    const auto after = std::upper_bound(parts.begin(), parts.end(), index,
+    const auto after = std::upper_bound(parts.begin(), parts.end(), 3 * triangle,
                                         [](uint32_t i, const MeshPart& part) { return i < part.first_index; });
-    return after == parts.begin() ? parts.front().base_color : std::prev(after)->base_color;
+    return after == parts.begin() ? parts.front() : *std::prev(after);
+}
+
+glm::dvec4 WaterTransport::base_color_at(uint32_t receiver, uint32_t triangle, const glm::dvec2& barycentric) const {
+    const MeshPart& part = part_of(receiver, triangle);
+    const Mesh& mesh = *meshes_[receiver];
+    const uint32_t index = 3 * triangle;
+    const std::array<uint32_t, 3> corner = {mesh.indices[index], mesh.indices[index + 1], mesh.indices[index + 2]};
+    const std::array<double, 3> weight = {1.0 - barycentric.x - barycentric.y, barycentric.x, barycentric.y};
+    glm::dvec4 color(part.base_color, part.alpha);
+    if (part.texture >= 0) {
+        glm::dvec2 uv(0.0);
+        for (int k = 0; k < 3; ++k) uv += weight[k] * glm::dvec2(mesh.uvs[corner[k]]);
+        color *= bilinear_base_color(mesh.textures[std::size_t(part.texture)], uv);
+    }
+    if (!mesh.colors.empty()) {
+        glm::dvec4 vertex_color(0.0);
+        for (int k = 0; k < 3; ++k) vertex_color += weight[k] * glm::dvec4(mesh.colors[corner[k]]);
+        color *= vertex_color;
+    }
+    return color;
+}
+
+bool WaterTransport::cut_out(uint32_t receiver, uint32_t triangle, const glm::dvec2& barycentric) const {
+    const double cutoff = part_of(receiver, triangle).alpha_cutoff;
+    return cutoff >= 0.0 && base_color_at(receiver, triangle, barycentric).a < cutoff;
 }
 
 bool WaterTransport::sun_blocked_in_air(const glm::dvec3& point) const {

@@ -170,9 +170,16 @@ private:
 
     const Scene& scene_;
     std::vector<Mesh> extra_meshes_;  // the floor as a mesh
-    // Per receiver index of the BVH, its triangles' albedo by index range (receiver_albedo_parts).
+    // Per receiver index of the BVH, its mesh and its triangles' albedo by index range
+    // (receiver_albedo_parts).
+    std::vector<const Mesh*> meshes_;
     std::vector<std::vector<MeshPart>> albedo_parts_;
-    glm::dvec3 albedo_of(uint32_t receiver, uint32_t triangle) const;
+    // The base colour (RGB: the Lambertian albedo; and alpha) at barycentric (u, v) of triangle
+    // `triangle` of mesh `receiver`: the part's factor times its texture and the vertex colour there.
+    glm::dvec4 base_color_at(uint32_t receiver, uint32_t triangle, const glm::dvec2& barycentric) const;
+    // Whether that point is cut out of its mesh (a cutout part's alpha below its cutoff).
+    bool cut_out(uint32_t receiver, uint32_t triangle, const glm::dvec2& barycentric) const;
+    const MeshPart& part_of(uint32_t receiver, uint32_t triangle) const;
     std::unique_ptr<TriangleBvh> bvh_;
     double level_ = 0.0, half_extent_ = 0.0, bottom_ = 0.0, ior_ = 1.0;
     bool has_water_ = false;
