@@ -52,13 +52,34 @@ vec4 scene_view_texel(sampler2D view, vec2 uv, out vec2 texel_uv) {
     return texelFetch(view, texel, 0);
 }
 
-bool projective_lookup(sampler2D view, bool mirrored, vec3 p, vec3 d, int max_steps, out SceneHit hit) {
-    hit = SceneHit(vec3(0.0), 0.0, vec2(0.0));
+// The estimate to start from: what the view shows straight behind p, or, where it shows nothing
+// there, what it shows where the ray ends (max_distance along d). An object the ray reaches but
+// the view's ray through p misses (one floating in the water, seen through the surface, which
+// bends the rays toward it) is found from the second; with the first alone its image shrank to
+// where both rays meet it, and shifted toward where it would be without the water.
+bool projective_start(sampler2D view, bool mirrored, vec3 p, vec3 d, float max_distance, out float s) {
+    s = 0.0;
     vec2 uv, texel_uv;
     if (!scene_view_uv(p, mirrored, uv)) return false;
     vec4 texel = scene_view_texel(view, uv, texel_uv);
-    if (texel.a <= 0.0) return false;  // nothing behind the surface point: no estimate to start from
-    float s = max(0.0, texel.a - distance(scene_view_eye(mirrored), p));
+    if (texel.a > 0.0) {
+        s = max(0.0, texel.a - distance(scene_view_eye(mirrored), p));
+        return true;
+    }
+    if (!scene_view_uv(p + max_distance * d, mirrored, uv)) return false;
+    texel = scene_view_texel(view, uv, texel_uv);
+    if (texel.a <= 0.0) return false;  // nothing on either: no estimate to start from
+    s = max(0.0, dot(scene_view_point(texel_uv, texel.a, mirrored) - p, d));
+    return true;
+}
+
+bool projective_lookup(sampler2D view, bool mirrored, vec3 p, vec3 d, float max_distance, int max_steps,
+                       out SceneHit hit) {
+    hit = SceneHit(vec3(0.0), 0.0, vec2(0.0));
+    vec2 uv, texel_uv;
+    vec4 texel = vec4(0.0);
+    float s;
+    if (!projective_start(view, mirrored, p, d, max_distance, s)) return false;
     for (int i = 0; i < max_steps; ++i) {
         if (!scene_view_uv(p + s * d, mirrored, uv)) return false;
         texel = scene_view_texel(view, uv, texel_uv);
@@ -124,8 +145,8 @@ bool scene_lookup(uint method, bool reflected, vec3 p, vec3 d, float max_distanc
     hit = SceneHit(vec3(0.0), 0.0, vec2(0.0));
     if (method == SCENE_LOOKUP_PROJECTIVE) {
         // Reflected rays read the mirrored view; refracted rays the camera's view of the other side.
-        return reflected ? projective_lookup(reflection_view, true, p, d, max_steps, hit)
-                         : projective_lookup(refraction_view, false, p, d, max_steps, hit);
+        return reflected ? projective_lookup(reflection_view, true, p, d, max_distance, max_steps, hit)
+                         : projective_lookup(refraction_view, false, p, d, max_distance, max_steps, hit);
     }
     if (method == SCENE_LOOKUP_SCREEN_SPACE) {
         return reflected ? screen_space_lookup(reflection_view, p, d, max_distance, max_steps, hit)

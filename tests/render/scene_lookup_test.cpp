@@ -125,6 +125,28 @@ TEST_P(SceneLookupEdges, ReflectedAndRefractedBoxEdgesLandWhereTheRayTracePutsTh
         GetParam().name, rel_mse, report.mismatched, report.far_from_edges, reach);
 }
 
+// The box lowered whole under the flat water (from 1.6 m to 0.8 m deep): seen from above, every
+// refracted ray that meets it bends toward it, and many of them start where the camera's straight
+// view behind the surface meets nothing. The projective lookup once started only from that view,
+// so the box showed shrunk and shifted toward its unrefracted place (at this size 54 pixels more
+// than 2 from any edge, measured with that start alone); it now starts from the ray's end there.
+TEST_P(SceneLookupEdges, AFloatingBoxUnderTheWaterLandsWhereTheRayTracePutsIt) {
+    const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes" / "box.json",
+                                   {"camera=" + std::string(kCameraAbove), "effects=" + std::string(GetParam().effects),
+                                    "receivers[0].half_size=[0.5, 0.4, 0.5]", "receivers[0].translation=[0, -1.2, 0]"});
+    Renderer renderer(context());
+    const RenderResult real_time = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
+    const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
+    float brightest = 0.0f;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) brightest = std::max(brightest, red(reference, x, y));
+    }
+    // delta and reach as in the test above, for the same reasons.
+    const EdgeReport report = compare_edges(real_time.image, reference, 0.01f * brightest, 2);
+    EXPECT_EQ(report.far_from_edges, 0) << GetParam().name << ": " << report.mismatched << " pixels differ, "
+                                        << report.far_from_edges << " of them away from edges:" << report.examples;
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Methods, SceneLookupEdges,
     ::testing::Values(
