@@ -62,12 +62,12 @@ std::set<int> base_color_images(const nlohmann::json& document) {
 bool GltfImageDecoder::decode(tinygltf::Image* image, int index, std::string* error, std::string*, int, int,
                               const unsigned char* bytes, int size, void* user) {
     auto& decoder = *static_cast<GltfImageDecoder*>(user);
-    if (decoder.decode(*image, index, bytes, size)) return true;
+    if (decoder.decode_image(*image, index, bytes, size)) return true;
     if (error) *error = decoder.failure_;
     return false;
 }
 
-bool GltfImageDecoder::decode(tinygltf::Image& image, int index, const unsigned char* bytes, int size) {
+bool GltfImageDecoder::decode_image(tinygltf::Image& image, int index, const unsigned char* bytes, int size) {
     if (!wanted_.contains(index)) return true;  // not a base colour: left empty
     const std::string name = "images[" + std::to_string(index) + "]";
     int width = 0, height = 0, channels = 0;

@@ -46,7 +46,7 @@ public:
     const std::string& failure() const { return failure_; }
 
 private:
-    bool decode(tinygltf::Image& image, int index, const unsigned char* bytes, int size);
+    bool decode_image(tinygltf::Image& image, int index, const unsigned char* bytes, int size);
     std::set<int> wanted_;
     uint64_t decoded_bytes_ = 0;
     std::string failure_;

@@ -22,7 +22,6 @@ public:
 
     // A combined image sampler at `binding` for textures[index], or the white texel for -1.
     fg::DescriptorBinding binding(uint32_t binding, int32_t index) const;
-    std::size_t size() const { return textures_.size() - 1; }
 
 private:
     struct DeviceTexture {
