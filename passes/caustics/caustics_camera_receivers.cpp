@@ -50,7 +50,7 @@ fg::ImageHandle add_caustic_receivers_pass(fg::FrameGraph& graph, const Receiver
             const glm::vec4 view(0.0f, -1.0f, clip_margin, 0.0f);
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "receivers/floor.vert";
-            desc.fragment_shader = "caustics/caustic_receivers.frag";
+            desc.fragment_shader = "caustics/caustic_receivers.frag.solid";
             desc.layout.bindings = {
                 {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT}};
             desc.layout.push_constant_bytes = sizeof(ReceiverPush);
@@ -63,9 +63,19 @@ fg::ImageHandle add_caustic_receivers_pass(fg::FrameGraph& graph, const Receiver
             if (!d.vertices) return;
             GraphicsPipelineDesc mesh_desc = desc;
             use_receiver_mesh_vertices(mesh_desc);
-            const Pipeline& mesh = context.pipeline("caustic receivers meshes", mesh_desc);
+            // Cutouts' holes show what lies behind them here too: that variant samples their alpha.
+            const bool cutouts = meshes->has_cutouts();
+            if (cutouts) {
+                mesh_desc.fragment_shader = "caustics/caustic_receivers.frag.cutout";
+                mesh_desc.layout.bindings.push_back({kBaseColorTextureBinding,
+                                                     VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                                                     VK_SHADER_STAGE_FRAGMENT_BIT});
+            }
+            const Pipeline& mesh = context.pipeline(
+                cutouts ? "caustic receivers meshes with cutouts" : "caustic receivers meshes", mesh_desc);
             context.bind(mesh, {context.uniform_buffer(0, d.constants)});
-            draw_receiver_meshes(context, mesh, *meshes, *d.vertices, *d.indices, view, BaseColorTexture::Unused);
+            draw_receiver_meshes(context, mesh, *meshes, *d.vertices, *d.indices, view,
+                                 cutouts ? BaseColorTexture::Sampled : BaseColorTexture::Unused);
         });
     return data.target;
 }

@@ -18,6 +18,7 @@
 #include "passes/frame/frame_needs.hpp"
 #include "passes/frame/renderer.hpp"
 #include "tests/caustics/caustics_support.hpp"
+#include "tests/scene/gltf_textured_square.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/reference/reference_renderer.hpp"
 
@@ -143,6 +144,46 @@ TEST_F(CameraSpaceCaustics, TiltedReceiverUnderTheWater) {
     std::printf("tilted square, camera-space splats: %d interior pixels, worst |E / E_ref - 1| = %.4f (allowed %.3f)\n",
                 result.compared, result.worst, kSplatTolerance);
     EXPECT_GT(result.compared, 500);
+    EXPECT_LE(result.worst, kSplatTolerance);
+}
+
+TEST_F(CameraSpaceCaustics, TheFloorThroughACutoutsHolesGetsItsCaustics) {
+    // A 3 m glTF square 1 m under flat water, alphaMode MASK with 4 x 4 squares of which every other
+    // one is a hole; the black-and-white floor 2 m below it. Through the holes the camera sees the
+    // floor, lit by the sun through the holes: the receivers view must hold the floor there (not the
+    // square), or the splats' irradiance at those pixels is looked up on the wrong receiver.
+    TexturedSquare square;
+    square.width = square.height = 16;
+    square.rgba.clear();
+    for (uint32_t y = 0; y < 16; ++y) {
+        for (uint32_t x = 0; x < 16; ++x) {
+            const uint8_t alpha = (x / 4 + y / 4) % 2 == 1 ? 0 : 255;
+            square.rgba.insert(square.rgba.end(), {255, 255, 255, alpha});
+        }
+    }
+    square.material_extra = R"("alphaMode": "MASK", )";
+    const std::filesystem::path dir = scratch_dir("camera_space_cutout");
+    write_text(dir / "square.gltf", textured_square_text(square));
+    const char* json = R"({
+      "camera": {"position": [0, 3.5, 0.5], "target": [0, -2, 0], "fov_y_deg": 50},
+      "sun": {"elevation_deg": 75, "azimuth_deg": 200, "irradiance": [3, 3, 3]},
+      "sky": {"radiance": [0, 0.2, 0.5]},
+      "floor": {"height": -3, "albedo": [0.5, 0.5, 0.5], "half_extent": 10},
+      "water": {"level": 0, "half_extent": 10, "grid_resolution": 512, "waves": {"model": "flat"}},
+      "medium": {"sigma_a": [0.1, 0.1, 0.1], "sigma_s": [0, 0, 0]},
+      "receivers": [{"type": "gltf", "file": "square.gltf", "translation": [0, -1, 0], "scale": [1.5, 1, 1.5]}]
+    })";
+    const Scene scene = parse_scene(json, dir / "scene.json", kCameraSpace);
+    Renderer renderer(context());
+    const RenderResult real_time = renderer.render(scene, with_layer(160, 120));
+    const ImageRGBA32F reference = ref::render_reference(scene, {160, 120, 0, {}});
+    // The interiors (away from every edge by the splats' reach) of the lit floor seen through the
+    // holes and of the square's opaque parts, within the splats' tolerance (the header): measured
+    // 0.94%, and 41% with the receivers view drawn without the cutouts.
+    const Comparison result = compare(real_time.image, reference, 1e-3, kSplatReach, false);
+    std::printf("cutout square, camera-space splats: %d interior pixels, worst |E / E_ref - 1| = %.4f (allowed %.3f)\n",
+                result.compared, result.worst, kSplatTolerance);
+    EXPECT_GT(result.compared, 300);
     EXPECT_LE(result.worst, kSplatTolerance);
 }
 
