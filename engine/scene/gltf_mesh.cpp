@@ -509,11 +509,29 @@ void check_file_uris(const nlohmann::json& document, const std::filesystem::path
             const std::string& uri = entry["uri"].get_ref<const std::string&>();
             if (uri.starts_with("data:")) continue;
             const std::string name = std::string(array) + "[" + std::to_string(i) + "].uri";
+            // tinygltf gives up decoding at a '%' that does not start a %XX escape and then reads the
+            // glTF's own folder as the file (exit 2 on a std::bad_alloc, found by fuzzing): refused here.
+            for (std::size_t at = uri.find('%'); at != std::string::npos; at = uri.find('%', at + 1)) {
+                const auto hex = [&](std::size_t k) {
+                    return k < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[k]));
+                };
+                if (!hex(at + 1) || !hex(at + 2)) {
+                    reader.fail(name + ": the '%' at character " + std::to_string(at + 1) +
+                                " does not start a %XX escape (accepted: '%' followed by two hex digits)");
+                }
+                at += 2;
+            }
+            std::filesystem::path resolved;
             try {
                 scope.resolve(file.parent_path(), uri, name);
-                scope.resolve(file.parent_path(), decode_uri_escapes(uri), name, uri);
+                resolved = scope.resolve(file.parent_path(), decode_uri_escapes(uri), name, uri);
             } catch (const UserError& error) {
                 reader.fail(error.what());
+            }
+            // tinygltf would read a folder as a file of 2^64 - 1 bytes (a std::bad_alloc, exit 2).
+            std::error_code ignored;
+            if (std::filesystem::is_directory(resolved, ignored)) {
+                reader.fail(name + " '" + shortened_input(uri, 60) + "' names a folder (accepted: a file)");
             }
         }
     }

@@ -306,6 +306,9 @@ def gltf_cases():
              "resolves outside the scene's folder")
     add_gltf("buffer-escaped", mutated(lambda d: d["buffers"][0].update(uri="%2e%2e/%2e%2e/%2e%2e/etc/passwd")),
              "resolves outside the scene's folder")
+    add_gltf("buffer-escape-broken", mutated(lambda d: d["buffers"][0].update(uri="%2e%%%2Ee2/rock.bin")),
+             r"buffers\[0\]\.uri: the '%' at character 4 does not start a %XX escape")
+    add_gltf("buffer-folder", mutated(lambda d: d["buffers"][0].update(uri=".")), r"buffers\[0\]\.uri '\.' names a folder")
     add_gltf("buffer-missing", mutated(lambda d: d["buffers"][0].update(uri="absent.bin")), "")
     add_gltf("image-outside", mutated(lambda d: d.update(images=[{"uri": "../../../secret.png"}])),
              r"images\[0\]\.uri")
