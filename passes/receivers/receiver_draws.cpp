@@ -2,13 +2,14 @@
 
 namespace vkw::passes {
 
-void use_receiver_mesh_vertices(GraphicsPipelineDesc& desc) {
+void use_receiver_mesh_vertices(GraphicsPipelineDesc& desc, bool with_normal) {
     desc.vertex_shader = "receivers/mesh.vert";
     desc.vertex_bindings = {{0, kReceiverVertexBytes, VK_VERTEX_INPUT_RATE_VERTEX}};
     desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
                               {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 3 * sizeof(float)},
                               {2, 0, VK_FORMAT_R32G32_SFLOAT, 6 * sizeof(float)},
                               {3, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 8 * sizeof(float)}};
+    if (!with_normal) desc.vertex_attributes.erase(desc.vertex_attributes.begin() + 1);  // location 1
 }
 
 GraphicsPipelineDesc receiver_mesh_pipeline(const LightingInputs& lighting, const ReceiverMeshes& meshes,

@@ -21,8 +21,9 @@ struct ReceiverPush {
 };
 
 // receivers/mesh.vert and its vertex layout (position, normal, texture coordinates, RGBA colour: 12
-// floats), for any fragment shader.
-void use_receiver_mesh_vertices(GraphicsPipelineDesc& desc);
+// floats), for any fragment shader. A vertex shader that reads no normal (the sun shadow map's) takes
+// the layout without that attribute: the validation layer reports an attribute no stage consumes.
+void use_receiver_mesh_vertices(GraphicsPipelineDesc& desc, bool with_normal = true);
 
 // The base colour texture's binding in receivers/receiver.frag's mesh variants.
 inline constexpr uint32_t kBaseColorTextureBinding = 8;

@@ -117,9 +117,7 @@ SunShadowMap add_sun_shadow_pass(fg::FrameGraph& graph, const ReceiverMeshes& me
             const bool cutouts = meshes.has_cutouts();
             GraphicsPipelineDesc desc;
             // Both variants clip the beam half at the water level; "cutout" also samples the parts' alpha.
-            // The meshes' vertex layout (use_receiver_mesh_vertices) less the normal, which nothing reads.
-            use_receiver_mesh_vertices(desc);
-            desc.vertex_attributes.erase(desc.vertex_attributes.begin() + 1);
+            use_receiver_mesh_vertices(desc, /*with_normal=*/false);
             desc.vertex_shader = "receivers/sun_shadow.vert";
             desc.fragment_shader = cutouts ? "receivers/sun_shadow.frag.cutout" : "receivers/sun_shadow.frag.solid";
             desc.layout.push_constant_bytes = sizeof(ShadowPush);

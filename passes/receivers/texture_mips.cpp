@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
+
+#include <glm/gtc/packing.hpp>
 
 namespace vkw::passes {
 namespace {
@@ -48,32 +49,12 @@ LinearLevel half_of(const LinearLevel& above) {
 
 MipLevel as_half(const LinearLevel& level) {
     MipLevel out{level.width, level.height, std::vector<uint16_t>(level.rgba.size())};
-    std::transform(level.rgba.begin(), level.rgba.end(), out.rgba.begin(), to_half);
+    // glm's conversion rounds to nearest (ties away from zero): within half an ulp, 2^-11 relative.
+    std::transform(level.rgba.begin(), level.rgba.end(), out.rgba.begin(), glm::packHalf1x16);
     return out;
 }
 
 }  // namespace
-
-uint16_t to_half(float value) {
-    uint32_t bits = 0;
-    std::memcpy(&bits, &value, sizeof bits);
-    const auto sign = uint16_t((bits >> 16) & 0x8000u);
-    const int exponent = int((bits >> 23) & 0xffu) - 127 + 15;
-    uint32_t mantissa = bits & 0x7fffffu;
-    if (exponent >= 31) return uint16_t(sign | 0x7c00u);  // beyond the range: infinity
-    // The kept bits, and the dropped ones rounded to nearest, ties to even; a carry out of the
-    // mantissa correctly steps the exponent (or makes a subnormal normal).
-    const auto rounded = [](uint32_t kept, uint32_t dropped, uint32_t halfway) {
-        return kept + ((dropped > halfway || (dropped == halfway && (kept & 1u))) ? 1u : 0u);
-    };
-    if (exponent <= 0) {  // subnormal half (or zero)
-        if (exponent < -10) return sign;
-        mantissa |= 0x800000u;
-        const auto shift = uint32_t(14 - exponent);
-        return uint16_t(sign | rounded(mantissa >> shift, mantissa & ((1u << shift) - 1u), 1u << (shift - 1u)));
-    }
-    return uint16_t(sign | rounded((uint32_t(exponent) << 10) | (mantissa >> 13), mantissa & 0x1fffu, 0x1000u));
-}
 
 std::vector<MipLevel> linear_mip_chain(const TextureImage& image) {
     const std::array<float, 256>& decode = srgb_table();

@@ -22,7 +22,4 @@ struct MipLevel {
 // itself.
 std::vector<MipLevel> linear_mip_chain(const TextureImage& image);
 
-// `value` (finite, at most 65504 in magnitude) as the nearest half float, ties to even.
-uint16_t to_half(float value);
-
 }  // namespace vkw::passes

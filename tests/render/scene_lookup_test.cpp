@@ -33,6 +33,14 @@ const char* kCameraAbove = R"({"position": [0.8, 2.2, 2.6], "target": [0, -0.8, 
 
 float red(const ImageRGBA32F& image, int x, int y) { return image.pixel(x, y)[0]; }
 
+float brightest_red(const ImageRGBA32F& image) {
+    float brightest = 0.0f;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) brightest = std::max(brightest, red(image, x, y));
+    }
+    return brightest;
+}
+
 struct EdgeReport {
     int mismatched = 0;      // pixels whose red differs from the reference by more than delta
     int far_from_edges = 0;  // of those, how many lie more than the allowed distance from an edge
@@ -89,10 +97,7 @@ TEST_P(SceneLookupEdges, ReflectedAndRefractedBoxEdgesLandWhereTheRayTracePutsTh
     Renderer renderer(context());
     const RenderResult real_time = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
     const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
-    float brightest = 0.0f;
-    for (int y = 0; y < kHeight; ++y) {
-        for (int x = 0; x < kWidth; ++x) brightest = std::max(brightest, red(reference, x, y));
-    }
+    const float brightest = brightest_red(reference);
     // delta: 1% of the brightest red. Inside a face the lookups return the radiance of the
     // nearest view texel, whose hit point lies within one texel (about 1 cm here) of the
     // exact one; the face's radiance changes by under 0.1% over that (flat lit faces are
@@ -137,10 +142,7 @@ TEST_P(SceneLookupEdges, AFloatingBoxUnderTheWaterLandsWhereTheRayTracePutsIt) {
     Renderer renderer(context());
     const RenderResult real_time = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
     const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
-    float brightest = 0.0f;
-    for (int y = 0; y < kHeight; ++y) {
-        for (int x = 0; x < kWidth; ++x) brightest = std::max(brightest, red(reference, x, y));
-    }
+    const float brightest = brightest_red(reference);
     // delta and reach as in the test above, for the same reasons.
     const EdgeReport report = compare_edges(real_time.image, reference, 0.01f * brightest, 2);
     EXPECT_EQ(report.far_from_edges, 0) << GetParam().name << ": " << report.mismatched << " pixels differ, "

@@ -102,7 +102,7 @@ struct CheckerView {
             // the value, an sRGB decoding skipped or approximated (lavapipe's sampler is 2% off in
             // dark texels) by far more than the bound.
             const double uploaded =
-                glm::unpackHalf1x16(passes::to_half(float(ref::srgb_to_linear(colour[std::size_t(c)]))));
+                glm::unpackHalf1x16(glm::packHalf1x16(float(ref::srgb_to_linear(colour[std::size_t(c)]))));
             EXPECT_NEAR(real_time.pixel(at.x, at.y)[c], uploaded * irradiance_over_pi[c], 1e-5 * brightest)
                 << "square (" << i << ", " << j << ") at pixel (" << at.x << ", " << at.y << "), channel " << c;
             // The reference: double precision, stored as fp32 (6e-8 relative): 1e-7.
@@ -146,7 +146,7 @@ TEST_F(TexturedReceiver, UnderFlatWaterEachTexelScalesTheIrradianceInBothRendere
                 const double rho = ref::srgb_to_linear(colour[std::size_t(c)]);
                 // The real-time texel as uploaded (the exact decoding as a half float; white is 1
                 // exactly), and the fp32 shading's 1e-5 of the brightest channel as above.
-                const double uploaded = glm::unpackHalf1x16(passes::to_half(float(rho)));
+                const double uploaded = glm::unpackHalf1x16(glm::packHalf1x16(float(rho)));
                 EXPECT_NEAR(view.real_time.pixel(at.x, at.y)[c], uploaded * white_rt[c], 1e-5 * brightest)
                     << "square (" << i << ", " << j << "), channel " << c;
                 // The reference: both images rounded to fp32 once (6e-8 relative each): 2e-7.
