@@ -28,6 +28,7 @@ std::vector<ImageAttribute> image_attributes(const ImageProvenance& provenance, 
         for (const std::string& text : provenance.overrides) joined += (joined.empty() ? "" : "; ") + text;
         attributes.push_back({"vkwater/overrides", joined});
     }
+    if (!provenance.frame.empty()) attributes.push_back({"vkwater/frame", provenance.frame});
     return attributes;
 }
 

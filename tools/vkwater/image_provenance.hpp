@@ -19,11 +19,12 @@ struct ImageProvenance {
     std::string filter;                  // e.g. "point: one sample at each pixel centre"
     std::string device;                  // the Vulkan device, or the reference's threads
     std::string time;                    // the frame's (or the whole reference's) time, with how it was measured
+    std::string frame;                   // a sequence's frame: its number, range and water time; empty otherwise
 };
 
 // software, vkwater/scene, vkwater/sceneHash (FNV-1a of the file's bytes), vkwater/camera,
 // vkwater/overrides (only when there are any), vkwater/renderer, vkwater/filter, vkwater/device,
-// vkwater/time.
+// vkwater/time, vkwater/frame (only in a sequence).
 std::vector<ImageAttribute> image_attributes(const ImageProvenance& provenance, const Camera& camera);
 
 // Refuses (vkw::UserError naming both filters and the file) to compare a box-filtered image with a

@@ -14,8 +14,8 @@
 #include "tools/metrics/reference_errors.hpp"
 #include "tools/vkwater/commands.hpp"
 #include "tools/vkwater/console.hpp"
-#include "tools/vkwater/cpu_frame_estimate.hpp"
 #include "tools/vkwater/image_provenance.hpp"
+#include "tools/vkwater/render_setup.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -27,26 +27,6 @@
 
 namespace vkw::cli {
 namespace {
-
-struct RenderArgs {
-    std::string scene;
-    std::string out;
-    uint32_t width = 800;
-    uint32_t height = 600;
-    bool half = false;
-    bool png = false;
-    bool check_finite = false;
-    bool no_caustic_layer = false;
-    bool no_inscatter_layer = false;
-    uint32_t repeat = 1;
-    int64_t spp = 1;
-    std::string recording = "dynamic";
-    std::vector<std::string> overrides;
-    bool allow_outside_paths = false;
-    std::string reference;
-    std::optional<double> exposure;  // the preview's, in place of the scene's camera.exposure
-    DeviceOptions device;
-};
 
 // What --out names, by its extension: the linear HDR OpenEXR (.exr), or the tone-mapped preview
 // alone (.png). A device or a pipe (/dev/stdout, a FIFO) has no extension to go by and gets the EXR.
@@ -79,10 +59,11 @@ std::string inscatter_text(const Scene& scene, const RenderOptions& options, con
 }
 
 int run_render(const RenderArgs& args) {
+    if (!args.frames.empty()) return run_render_sequence(args);
+    if (!args.shard.empty())
+        throw UserError("--shard '" + args.shard + "': a shard is a share of a sequence's frames; give --frames too");
     const auto start = std::chrono::steady_clock::now();
-    // --exposure is the override camera.exposure, so that the EXR's record of the settings names it.
-    std::vector<std::string> overrides = args.overrides;
-    if (args.exposure) overrides.push_back("camera.exposure=" + format_number(*args.exposure));
+    const std::vector<std::string> overrides = applied_overrides(args);
     const Scene scene = load_command_scene(args.scene, overrides, args.allow_outside_paths);
     const PixelFilter filter = pixel_filter_from_spp(args.spp);
     // Fail on an unwritable output before spending time on the render. Without --out, the scene's
@@ -106,37 +87,14 @@ int run_render(const RenderArgs& args) {
         require_comparable_filters(filter, *reference, args.reference);
     }
 
-    ContextOptions context_options;
-    context_options.validation = args.device.validation;
-    context_options.device_name = args.device.device;
-    const auto context_start = std::chrono::steady_clock::now();
-    auto context = std::make_unique<Context>(context_options);
-    const double context_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - context_start).count();
+    std::unique_ptr<Context> context = open_render_device(args.device);
     const std::shared_ptr<ValidationLog> validation_log = context->shared_validation_log();
-    std::printf("device: %s (instance + device created in %.1f ms%s)\n", context->device_name().c_str(), context_ms,
-                args.device.validation ? ", with validation" : "");
-
-    if (context->is_cpu_device()) {
-        const CpuFrameEstimate estimate = estimate_cpu_frame(
-            scene, decide_frame_needs(scene, double(args.width) / args.height), args.width, args.height);
-        const uint32_t frames = args.repeat * filter.samples;
-        if (estimate.seconds * frames > kSlowCpuFrameSeconds) {
-            std::printf("note: %s on this CPU device, %u frame(s)\n", estimate.describe().c_str(), frames);
-        }
-    }
+    note_slow_cpu_frames(*context, scene, args, args.repeat * filter.samples);
 
     // -v: the frame's decisions, as the renderer takes them (vkwater passes prints the whole graph).
     if (verbose()) std::printf("%s", decide_frame_needs(scene, double(args.width) / args.height).describe().c_str());
 
-    RenderOptions options;
-    options.width = args.width;
-    options.height = args.height;
-    options.check_finite = args.check_finite;
-    options.caustic_layer = !args.no_caustic_layer;
-    options.inscatter_layer = !args.no_inscatter_layer;
-    options.recording =
-        args.recording == "renderpass" ? fg::RecordingKind::RenderPassObject : fg::RecordingKind::DynamicRendering;
+    const RenderOptions options = render_options(args);
     RenderResult result;
     double declare_ms = 0.0;
     {
@@ -261,13 +219,25 @@ Run add_render_command(CLI::App& app) {
     command->add_option("--reference", args->reference,
                         "Also print the frame's error against this reference EXR (vkwater reference), next to "
                         "its time");
+    command->add_option(
+        "--frames", args->frames,
+        "Render a sequence: frames A to B inclusive (A:B, or A:B:STEP), frame f at water time "
+        "water.time + f / fps, each to --out's pattern (e.g. out/pool_%04d.exr), with out/manifest.json; "
+        "frames whose file still holds the pixels the manifest records are kept");
+    command->add_option("--fps", args->fps, "A sequence's frames per second")
+        ->check(finite_number() & positive_number())
+        ->capture_default_str();
+    command->add_option("--shard", args->shard,
+                        "Render only task I of N of a sequence (I/N): the frames at positions I, I + N, ... of the "
+                        "range, for a batch scheduler's array (tools/slurm/)");
     add_device_options(*command, args->device);
     command->footer(
         "Examples:\n"
         "  vkwater render scenes/pool.json --out build/pool.exr --png\n"
         "  vkwater render scenes/lake.json --out build/lake.png --exposure 2\n"
         "  vkwater render scenes/pool.json --width 1920 --height 1080 --set sun.elevation_deg=30\n"
-        "  vkwater render scenes/calm.json --width 400 --height 300 --reference build/calm-ref.exr\n");
+        "  vkwater render scenes/calm.json --width 400 --height 300 --reference build/calm-ref.exr\n"
+        "  vkwater render scenes/pool.json --frames 0:239 --fps 24 --out build/pool/pool_%04d.exr\n");
     return [args] { return run_render(*args); };
 }
 
