@@ -2,10 +2,13 @@
 #include "engine/core/errors.hpp"
 #include "tools/vkwater/sequence/frame_pattern.hpp"
 #include "tools/vkwater/sequence/frame_selection.hpp"
+#include "tools/vkwater/sequence/sequence_manifest.hpp"
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <set>
+#include <thread>
 
 namespace vkw::cli {
 namespace {
@@ -53,6 +56,42 @@ TEST(FramePattern, NamesEachFrame) {
     for (const char* bad : {"x.exr", "x_%d_%d.exr", "x_%04d.png", "x_%4d.exr", "x_%010d.exr", "x_%s.exr", "x_%.exr",
                             "d%d/x_%d.exr", "x_%00d.exr", "x_%d"}) {
         EXPECT_THROW(FramePattern{bad}, UserError) << bad;
+    }
+}
+
+// Tasks that finish frames at the same moment all end up in the one manifest: each adds its frame
+// under the folder's lock to the file as it is then (without the lock, concurrent read-modify-write
+// loses frames). Threads stand in for processes: each opens the lock file itself, and flock locks
+// per open file.
+TEST(SequenceManifest, ConcurrentTasksLoseNoFrame) {
+    const std::filesystem::path folder = std::filesystem::path(::testing::TempDir()) / "vkwater_manifest_concurrent";
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    const nlohmann::json identity = {{"sceneHash", "0123"}, {"settings", {{"width", 8}}}};
+    constexpr int kTasks = 6;
+    constexpr int kFramesEach = 25;
+    std::vector<std::thread> tasks;
+    for (int task = 0; task < kTasks; ++task) {
+        tasks.emplace_back([&, task] {
+            const SequenceManifest manifest(folder, "scene.json", identity);
+            for (int i = 0; i < kFramesEach; ++i) {
+                const int64_t frame = int64_t(i) * kTasks + task;
+                manifest.record({frame, "f" + std::to_string(frame) + ".exr", 0.0, "hash", 1.0, 2.0, "device"});
+            }
+        });
+    }
+    for (std::thread& task : tasks) task.join();
+    const std::map<int64_t, FrameRecord> frames = SequenceManifest(folder, "scene.json", identity).recorded();
+    ASSERT_EQ(frames.size(), size_t(kTasks * kFramesEach));
+    EXPECT_EQ(frames.begin()->first, 0);
+    EXPECT_EQ(frames.rbegin()->first, kTasks * kFramesEach - 1);
+    // Another sequence's settings are refused, naming the first that differs.
+    const nlohmann::json other = {{"sceneHash", "0123"}, {"settings", {{"width", 9}}}};
+    try {
+        SequenceManifest(folder, "scene.json", other).recorded();
+        FAIL() << "another sequence's manifest was accepted";
+    } catch (const UserError& e) {
+        EXPECT_NE(std::string(e.what()).find("settings.width is 8 (this run: 9)"), std::string::npos) << e.what();
     }
 }
 
