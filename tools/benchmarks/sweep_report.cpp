@@ -22,28 +22,6 @@ std::vector<size_t> pareto_front(const std::vector<SweepRow>& rows) {
     return front;
 }
 
-void write_csv(const std::filesystem::path& file, const std::vector<SweepRow>& rows, int downsample_factor) {
-    std::ostringstream out;
-    const std::string factor = std::to_string(downsample_factor) + "x";
-    out << "setting,median_ms,spread_ms,rel_mse,flip,bias,rel_mse_" << factor << ",flip_" << factor
-        << ",caustic_rel_mse,inscatter_rel_mse,memory_bytes\n";
-    out.precision(6);
-    for (const SweepRow& row : rows) {
-        out << '"' << row.setting << "\"," << row.median_ms << ',' << row.spread_ms << ',' << row.rel_mse << ','
-            << row.flip << ',' << row.bias << ',' << row.rel_mse_downsampled << ',' << row.flip_downsampled << ',';
-        for (const std::optional<double>& layer : {row.caustic_rel_mse, row.inscatter_rel_mse}) {
-            if (layer) {
-                out << *layer;
-            } else {
-                out << "n/a";
-            }
-            out << ',';
-        }
-        out << row.memory_bytes << '\n';
-    }
-    write_file_checked(file, out.str());
-}
-
 namespace {
 
 // Text as SVG (XML) character data: a setting may hold any scene value, a title any file name.

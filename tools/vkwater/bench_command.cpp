@@ -8,6 +8,8 @@
 // fields named with `--sweep key=v1,v2,...` (each a scene override, as `--set`) times any sets
 // of overrides given with `--alternatives 'k=v k=v|k=v'` (every combination is rendered);
 // without either, caustics on and off (the flat-surface stand-in).
+// --shard I/N times only the settings whose index is I modulo N (a batch array's task); `vkwater
+// bench merge DIR...` joins the shards' tables (tools/benchmarks/sweep_merge.hpp).
 // Every frame of a setting renders the same Scene: the water stays at the scene file's
 // `water.time` (the renderer keeps no clock), so the timed frames and the measured one agree.
 #include "engine/core/errors.hpp"
@@ -15,14 +17,17 @@
 #include "engine/image/file_paths.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
+#include "passes/common/calibration.hpp"
 #include "passes/frame/renderer.hpp"
 #include "passes/frame/supersampled_frame.hpp"
 #include "tools/benchmarks/frame_memory.hpp"
+#include "tools/benchmarks/sweep_merge.hpp"
 #include "tools/benchmarks/sweep_report.hpp"
 #include "tools/metrics/downsample.hpp"
 #include "tools/metrics/reference_errors.hpp"
 #include "tools/vkwater/commands.hpp"
 #include "tools/vkwater/image_provenance.hpp"
+#include "tools/vkwater/sequence/frame_selection.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -47,7 +52,29 @@ struct BenchArgs {
     std::vector<std::string> overrides;
     bool allow_outside_paths = false;
     DeviceOptions device;
+    std::string shard;  // "I/N"; empty: every setting
 };
+
+// Frames per setting timed pass by pass for the calibration pass's median (the timed frames are
+// one submission each, which has no per-pass times): enough for a median, few enough to add
+// about a sixth to a default bench.
+constexpr uint32_t kCalibrationFrames = 5;
+
+// The calibration pass's median time over frames timed pass by pass (passes/common/calibration.hpp).
+double calibration_pass_ms(Renderer& renderer, const Scene& scene, RenderOptions options, const PixelFilter& filter,
+                           uint32_t frames) {
+    options.timing = fg::TimingMode::Auto;
+    std::vector<double> times;
+    for (uint32_t frame = 0; frame < frames; ++frame) {
+        const RenderResult result = render_filtered(renderer, scene, options, filter);
+        for (const fg::PassTime& pass : result.timing.passes) {
+            if (pass.pass == passes::kCalibrationPassName) times.push_back(pass.ms);
+        }
+    }
+    if (times.empty()) throw InternalError("bench: the timed frames carry no calibration pass");
+    std::sort(times.begin(), times.end());
+    return times[times.size() / 2];
+}
 
 // One axis of the sweep: its values, each a list of scene overrides ("key.path=value").
 struct SweepAxis {
@@ -135,6 +162,12 @@ metrics::ReferenceErrors load_reference(const std::string& path) {
 }
 
 int run_bench(const BenchArgs& args) {
+    if (args.scene.empty() || args.reference.empty()) {
+        throw UserError(
+            "bench: give the SCENE and --reference REF.exr (or: vkwater bench merge DIR..., to join "
+            "shards' tables)");
+    }
+    const Shard shard = args.shard.empty() ? Shard{} : parse_shard(args.shard);
     const PixelFilter filter = pixel_filter_from_spp(args.spp);
     const metrics::ReferenceErrors reference = load_reference(args.reference);
     require_comparable_filters(filter, reference.reference(), args.reference);
@@ -155,14 +188,20 @@ int run_bench(const BenchArgs& args) {
     auto context = std::make_unique<Context>(context_options);
     std::vector<bench::SweepRow> rows;
     const std::string factor = std::to_string(metrics::kBenchDownsampleFactor) + "x";
-    std::printf("%-28s %10s %9s %12s %12s %9s %9s %12s %12s %9s\n", "setting", "ms", "spread", "relMSE",
+    std::printf("%-28s %10s %9s %8s %12s %12s %9s %9s %12s %12s %9s\n", "setting", "ms", "spread", "cal", "relMSE",
                 ("relMSE " + factor).c_str(), "FLIP", "bias", "caustic", "in-scatter", "MiB");
     std::vector<SweepAxis> axes(1);
     for (const uint32_t grid : args.grids) axes[0].values.push_back({"water.grid_resolution=" + std::to_string(grid)});
     if (args.sweeps.empty() && args.alternatives.empty()) axes.push_back(parse_sweep("effects.caustics.mode=on,off"));
     for (const std::string& sweep : args.sweeps) axes.push_back(parse_sweep(sweep));
     for (const std::string& alternatives : args.alternatives) axes.push_back(parse_alternatives(alternatives));
-    for (const std::vector<std::string>& setting : combinations(axes)) {
+    const std::vector<std::vector<std::string>> settings = combinations(axes);
+    if (!args.shard.empty()) {
+        std::printf("shard %s: the settings at positions %u, %u + %u, ... of %zu\n", args.shard.c_str(), shard.index,
+                    shard.index, shard.count, settings.size());
+    }
+    for (size_t index = shard.index; index < settings.size(); index += shard.count) {
+        const std::vector<std::string>& setting = settings[index];
         std::vector<std::string> overrides = args.overrides;
         overrides.insert(overrides.end(), setting.begin(), setting.end());
         // Its warnings once: the same files in every setting.
@@ -198,11 +237,15 @@ int run_bench(const BenchArgs& args) {
                             error.downsampled.flip_mean,
                             error.caustic.value,
                             error.inscatter.value,
-                            memory.total()};
-        std::printf("%-28s %10.2f %9.2f %12.6g %12.6g %9.4f %9.4f %12s %12s %9.2f\n", row.setting.c_str(),
-                    row.median_ms, row.spread_ms, row.rel_mse, row.rel_mse_downsampled, row.flip, row.bias,
-                    error.caustic.text().c_str(), error.inscatter.text().c_str(),
-                    static_cast<double>(row.memory_bytes) / (1024.0 * 1024.0));
+                            memory.total(),
+                            calibration_pass_ms(renderer, scene, options, filter, kCalibrationFrames),
+                            context->device_name(),
+                            index,
+                            settings.size()};
+        std::printf("%-28s %10.2f %9.2f %8.1f %12.6g %12.6g %9.4f %9.4f %12s %12s %9.2f\n", row.setting.c_str(),
+                    row.median_ms, row.spread_ms, row.median_ms / row.calibration_ms, row.rel_mse,
+                    row.rel_mse_downsampled, row.flip, row.bias, error.caustic.text().c_str(),
+                    error.inscatter.text().c_str(), static_cast<double>(row.memory_bytes) / (1024.0 * 1024.0));
         std::fflush(stdout);  // a long sweep shows its progress, also when its output goes to a file
         rows.push_back(row);
     }
@@ -214,12 +257,46 @@ int run_bench(const BenchArgs& args) {
                      rows, metrics::kBenchDownsampleFactor);
     std::printf(
         "time: median of %u frames after a warm-up (spread: interquartile range), one submission per "
-        "frame (whole frame), scene time frozen at water.time\n",
-        args.frames);
+        "frame (whole frame), scene time frozen at water.time; cal: the same in calibration passes (the median of "
+        "%u frames timed pass by pass)\n",
+        args.frames, kCalibrationFrames);
     if (args.frames < kRecommendedFrames) {
         std::printf("note: fewer than %u frames per setting: the medians and spreads are rough\n", kRecommendedFrames);
     }
     std::printf("memory: the frame graph's transient heap plus the imported buffers and images\n");
+    std::printf("wrote %s and %s\n", (out_dir / "sweep.csv").c_str(), (out_dir / "sweep.svg").c_str());
+    return kExitOk;
+}
+
+struct MergeArgs {
+    std::vector<std::string> folders;
+    std::string out_dir = "bench-merged";
+};
+
+int run_bench_merge(const MergeArgs& args) {
+    std::vector<std::pair<std::filesystem::path, bench::SweepTable>> shards;
+    for (const std::string& folder : args.folders) {
+        const std::filesystem::path file = std::filesystem::path(folder) / "sweep.csv";
+        shards.emplace_back(file, bench::read_csv(file));
+    }
+    const bench::MergedSweep merged = bench::merge_sweeps(shards);
+    const std::filesystem::path out_dir = args.out_dir;
+    std::error_code folder_error;
+    std::filesystem::create_directories(out_dir, folder_error);
+    if (folder_error || !std::filesystem::is_directory(out_dir)) {
+        throw UserError("--out-dir " + quoted_path(out_dir) + ": cannot make it a folder (" +
+                        (folder_error ? folder_error.message() : std::string("it is a file")) + ")");
+    }
+    bench::write_csv(out_dir / "sweep.csv", merged.rows, merged.downsample_factor);
+    char title[256];
+    std::snprintf(title, sizeof title,
+                  "%zu settings merged from %zu shard(s), on %s; times at the median calibration pass, %.3g ms",
+                  merged.rows.size(), shards.size(), merged.device.c_str(), merged.calibration_ms);
+    bench::write_svg(out_dir / "sweep.svg", title, merged.rows, merged.downsample_factor);
+    std::printf(
+        "merged %zu settings from %zu shard(s) on %s; each time scaled by the median calibration pass "
+        "(%.3f ms) over its own\n",
+        merged.rows.size(), shards.size(), merged.device.c_str(), merged.calibration_ms);
     std::printf("wrote %s and %s\n", (out_dir / "sweep.csv").c_str(), (out_dir / "sweep.svg").c_str());
     return kExitOk;
 }
@@ -230,8 +307,9 @@ Run add_bench_command(CLI::App& app) {
     auto args = std::make_shared<BenchArgs>();
     CLI::App* command = app.add_subcommand("bench", "Time and error of a scene over a sweep of quality settings");
     add_scene_options(*command, args->scene, args->overrides, args->allow_outside_paths);
-    command->add_option("--reference", args->reference, "Reference EXR (vkwater reference) at the bench's size")
-        ->required();
+    // Required unless the command is `bench merge` (run_bench checks them).
+    command->get_option("scene")->required(false);
+    command->add_option("--reference", args->reference, "Reference EXR (vkwater reference) at the bench's size");
     command->add_option("--grids", args->grids, "Water (and photon) grid resolutions to sweep")
         ->delimiter(',')
         ->capture_default_str();
@@ -252,12 +330,23 @@ Run add_bench_command(CLI::App& app) {
         ->check(CLI::Range(1u, 100000u))
         ->capture_default_str();
     command->add_option("--out-dir", args->out_dir, "Folder for sweep.csv and sweep.svg (default bench-<scene>)");
+    command->add_option("--shard", args->shard,
+                        "Time only task I of N of the sweep (I/N): the settings at positions I, I + N, ...; join the "
+                        "tasks' folders with vkwater bench merge");
     add_device_options(*command, args->device);
     command->footer(
         "Examples:\n"
-        "  vkwater bench scenes/pool.json --reference build/pool-ref.exr --width 400 --height 300 --grids "
-        "64,128,256\n");
-    return [args] { return run_bench(*args); };
+        "  vkwater bench scenes/pool.json --reference build/pool-ref.exr --grids 64,128,256\n"
+        "  vkwater bench scenes/pool.json --reference build/pool-ref.exr --shard 0/2 --out-dir build/bench-0\n"
+        "  vkwater bench merge build/bench-0 build/bench-1 --out-dir build/bench\n");
+
+    auto merge_args = std::make_shared<MergeArgs>();
+    CLI::App* merge = command->add_subcommand(
+        "merge", "Join the sweep.csv of a sweep's shards (bench --shard I/N) into one sweep.csv and sweep.svg");
+    merge->add_option("folders", merge_args->folders, "The shards' --out-dir folders")->required();
+    merge->add_option("--out-dir", merge_args->out_dir, "Folder for the merged sweep.csv and sweep.svg")
+        ->capture_default_str();
+    return [args, merge, merge_args] { return merge->parsed() ? run_bench_merge(*merge_args) : run_bench(*args); };
 }
 
 }  // namespace vkw::cli
