@@ -148,6 +148,16 @@ std::vector<std::vector<std::string>> combinations(const std::vector<SweepAxis>&
     return settings;
 }
 
+// --out-dir, made if it is missing; vkw::UserError when it cannot be a folder.
+void make_output_folder(const std::filesystem::path& out_dir) {
+    std::error_code folder_error;
+    std::filesystem::create_directories(out_dir, folder_error);
+    if (folder_error || !std::filesystem::is_directory(out_dir)) {
+        throw UserError("--out-dir " + quoted_path(out_dir) + ": cannot make it a folder (" +
+                        (folder_error ? folder_error.message() : std::string("it is a file")) + ")");
+    }
+}
+
 // The reference, with the bench's downsampling factor checked against its size (naming the file).
 metrics::ReferenceErrors load_reference(const std::string& path) {
     ImageRGBA32F image = read_exr(path);
@@ -175,12 +185,7 @@ int run_bench(const BenchArgs& args) {
     const uint32_t height = static_cast<uint32_t>(reference.reference().height);
     const std::filesystem::path out_dir =
         args.out_dir.empty() ? "bench-" + std::filesystem::path(args.scene).stem().string() : args.out_dir;
-    std::error_code folder_error;
-    std::filesystem::create_directories(out_dir, folder_error);
-    if (folder_error || !std::filesystem::is_directory(out_dir)) {
-        throw UserError("--out-dir " + quoted_path(out_dir) + ": cannot make it a folder (" +
-                        (folder_error ? folder_error.message() : std::string("it is a file")) + ")");
-    }
+    make_output_folder(out_dir);
 
     ContextOptions context_options;
     context_options.validation = args.device.validation;
@@ -281,12 +286,7 @@ int run_bench_merge(const MergeArgs& args) {
     }
     const bench::MergedSweep merged = bench::merge_sweeps(shards);
     const std::filesystem::path out_dir = args.out_dir;
-    std::error_code folder_error;
-    std::filesystem::create_directories(out_dir, folder_error);
-    if (folder_error || !std::filesystem::is_directory(out_dir)) {
-        throw UserError("--out-dir " + quoted_path(out_dir) + ": cannot make it a folder (" +
-                        (folder_error ? folder_error.message() : std::string("it is a file")) + ")");
-    }
+    make_output_folder(out_dir);
     bench::write_csv(out_dir / "sweep.csv", merged.rows, merged.downsample_factor);
     char title[256];
     std::snprintf(title, sizeof title,
