@@ -33,6 +33,9 @@ packages=(
   clang-14 libclang-rt-14-dev
   # the bundle that carries the build to a machine without these packages (tools/gpu-bundle.sh)
   xz-utils
+  # the batch scheduler test (tests/slurm): a single-node Slurm started in a temporary folder
+  # (tools/slurm/local_cluster.sh), its own munged included
+  slurm-wlm munge
 )
 
 sudo_cmd=()
@@ -41,4 +44,22 @@ if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
 export DEBIAN_FRONTEND=noninteractive
 "${sudo_cmd[@]}" apt-get update -qq
 "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${packages[@]}" >/dev/null
+
+# The packages' own munge, slurmctld and slurmd services: installing starts them where the init
+# system lets it, but tests/slurm starts its own daemons and nothing should run in the background.
+# Without systemd, each is disabled (`update-rc.d disable` keeps its stop links through upgrades,
+# where removed links would be put back) and stopped by its pid file alone: the Debian init scripts
+# of slurmd and slurmctld stop every process of that program, a test's local cluster too. A service
+# that is missing or not running is fine.
+stop_service() {  # NAME PIDFILE
+  if [ -d /run/systemd/system ]; then  # systemd is the running init
+    "${sudo_cmd[@]}" systemctl disable --now "$1" >/dev/null 2>&1 || true
+  elif [ -x "/etc/init.d/$1" ]; then
+    "${sudo_cmd[@]}" update-rc.d "$1" disable >/dev/null 2>&1 || true
+    "${sudo_cmd[@]}" start-stop-daemon --stop --quiet --oknodo --retry 10 --pidfile "$2" >/dev/null 2>&1 || true
+  fi
+}
+stop_service slurmd /run/slurmd.pid
+stop_service slurmctld /run/slurmctld.pid
+stop_service munge /run/munge/munged.pid
 echo "install-deps: ${#packages[@]} packages present"
