@@ -3,6 +3,7 @@
 
 // Debian's libstb is a compiled library: include the declarations only, no *_IMPLEMENTATION.
 #include <stb_image_write.h>
+#include <zlib.h>
 
 #include <array>
 #include <cmath>
@@ -20,6 +21,21 @@ namespace {
 
 // Magenta never comes out of the tone curve for a grey-ish water scene, so it stands out.
 constexpr std::array<std::uint8_t, 3> kNonFiniteColor = {255, 0, 255};
+
+// The sRGB chunk (PNG 1.2, 11.3.3.5) after IHDR: the pixels are sRGB-encoded, rendering intent 0
+// (perceptual), so colour-managed viewers show them as meant. stb_image_write writes no such chunk.
+void insert_srgb_chunk(std::string& png) {
+    constexpr std::size_t kAfterIhdr = 8 + 4 + 4 + 13 + 4;  // signature, IHDR's length, type, data, CRC
+    if (png.size() < kAfterIhdr || png.compare(12, 4, "IHDR") != 0) {
+        throw InternalError("PNG preview: the encoder's output does not start with IHDR");
+    }
+    const unsigned char type_and_data[] = {'s', 'R', 'G', 'B', 0};
+    const uLong crc = crc32(crc32(0L, Z_NULL, 0), type_and_data, sizeof type_and_data);
+    std::string chunk = {0, 0, 0, 1};
+    chunk.append(reinterpret_cast<const char*>(type_and_data), sizeof type_and_data);
+    for (int shift = 24; shift >= 0; shift -= 8) chunk += static_cast<char>((crc >> shift) & 0xffu);
+    png.insert(kAfterIhdr, chunk);
+}
 
 }  // namespace
 
@@ -41,7 +57,14 @@ std::size_t write_png_preview(const std::filesystem::path& path, const ImageRGBA
             ++nonfinite_pixels;
             continue;
         }
-        for (int c = 0; c < 3; ++c) out[c] = tonemap_to_srgb8(in[c] * exposure);
+        // Dithered before the 8-bit rounding: smooth gradients (a calm sky, deep water) band
+        // without it.
+        const auto x = static_cast<std::uint32_t>(i % static_cast<std::size_t>(image.width));
+        const auto y = static_cast<std::uint32_t>(i / static_cast<std::size_t>(image.width));
+        for (int c = 0; c < 3; ++c) {
+            out[c] = to_unorm8_dithered(linear_to_srgb(aces_narkowicz(in[c] * exposure)), x, y,
+                                        static_cast<std::uint32_t>(c));
+        }
     }
 
     // Row 0 is the top row in both ImageRGBA32F and PNG, so no flip.
@@ -54,6 +77,7 @@ std::size_t write_png_preview(const std::filesystem::path& path, const ImageRGBA
     if (stbi_write_png_to_func(append, &bytes, image.width, image.height, 3, rgb8.data(), row_bytes) == 0) {
         throw UserError("cannot write " + quoted_path(path) + ": stbi_write_png_to_func failed to encode");
     }
+    insert_srgb_chunk(bytes);
     write_file_checked(path, bytes);
     return nonfinite_pixels;
 }

@@ -1,5 +1,5 @@
-// The display transform of the PNG preview: ACES filmic curve, sRGB encoding, 8-bit rounding.
-// Header-only so the curve can be unit-tested at known points.
+// The display transform of the PNG preview: ACES filmic curve, sRGB encoding, 8-bit rounding
+// (with a dither, for the preview file). Header-only so the curve can be unit-tested at known points.
 #pragma once
 
 #include <algorithm>
@@ -35,6 +35,36 @@ inline std::uint8_t to_unorm8(float encoded) {
 // The whole chain for one finite channel value already multiplied by the exposure.
 inline std::uint8_t tonemap_to_srgb8(float exposed_linear) {
     return to_unorm8(linear_to_srgb(aces_narkowicz(exposed_linear)));
+}
+
+// Chris Wellons' "lowbias32" integer hash: every input bit changes about half the output bits.
+inline std::uint32_t dither_hash(std::uint32_t x) {
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+
+// The preview's dither at pixel (x, y), channel c, in 8-bit levels: the difference of two uniform
+// values from one hash of the three, so triangular on (-1, 1). A triangular dither of this width
+// makes the quantiser's error independent of the signal and its mean zero: a smooth gradient's
+// local average keeps its true value instead of stepping in bands, and the noise does not change
+// with the level. Keyed by the coordinates, so the same image gives the same bytes every time.
+inline float preview_dither(std::uint32_t x, std::uint32_t y, std::uint32_t c) {
+    const std::uint32_t h = dither_hash(x * 0x9e3779b9u ^ dither_hash(y * 0x85ebca6bu ^ dither_hash(c + 1u)));
+    const float u1 = (static_cast<float>(h >> 16) + 0.5f) / 65536.0f;
+    const float u2 = (static_cast<float>(h & 0xffffu) + 0.5f) / 65536.0f;
+    return u1 - u2;
+}
+
+// An encoded value in [0, 1] rounded to 8 bits after the dither: within one level of to_unorm8's
+// (|dither| < 1). Black and white (0 and 1, where the tone curve clamps) stay exact.
+inline std::uint8_t to_unorm8_dithered(float encoded, std::uint32_t x, std::uint32_t y, std::uint32_t c) {
+    if (!(encoded > 0.0f)) return 0;
+    if (encoded >= 1.0f) return 255;
+    return static_cast<std::uint8_t>(std::lround(std::clamp(encoded * 255.0f + preview_dither(x, y, c), 0.0f, 255.0f)));
 }
 
 }  // namespace vkw
