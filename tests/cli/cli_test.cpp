@@ -525,9 +525,12 @@ TEST(cli, BenchSweepsAnySceneFieldOverEveryCombination) {
         "grid_resolution=8 reflection.method=screen_space refraction.max_steps=8",
         "grid_resolution=8 reflection.method=screen_space refraction.max_steps=64"};
     EXPECT_EQ(settings, expected) << run.output;
-    expect_clean_failure(
-        run_vkwater("bench " + box + " --reference " + reference.string() + " --sweep effects.reflection.method"), 1,
-        "--sweep 'effects.reflection.method'");
+    const fs::path refused = scratch("bench_refused_out");
+    fs::remove_all(refused);
+    expect_clean_failure(run_vkwater("bench " + box + " --reference " + reference.string() +
+                                     " --sweep effects.reflection.method --out-dir " + refused.string()),
+                         1, "--sweep 'effects.reflection.method'");
+    EXPECT_FALSE(fs::exists(refused));  // refused before its folder was made
 }
 
 TEST(cli, BenchAlternativesSetSeveralFieldsAtOnce) {

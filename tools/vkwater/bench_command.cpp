@@ -179,6 +179,13 @@ int run_bench(const BenchArgs& args) {
     }
     const Shard shard = args.shard.empty() ? Shard{} : parse_shard(args.shard);
     const PixelFilter filter = pixel_filter_from_spp(args.spp);
+    // The sweep's settings before anything is made: a mistyped axis leaves no empty --out-dir behind.
+    std::vector<SweepAxis> axes(1);
+    for (const uint32_t grid : args.grids) axes[0].values.push_back({"water.grid_resolution=" + std::to_string(grid)});
+    if (args.sweeps.empty() && args.alternatives.empty()) axes.push_back(parse_sweep("effects.caustics.mode=on,off"));
+    for (const std::string& sweep : args.sweeps) axes.push_back(parse_sweep(sweep));
+    for (const std::string& alternatives : args.alternatives) axes.push_back(parse_alternatives(alternatives));
+    const std::vector<std::vector<std::string>> settings = combinations(axes);
     const metrics::ReferenceErrors reference = load_reference(args.reference);
     require_comparable_filters(filter, reference.reference(), args.reference);
     const uint32_t width = static_cast<uint32_t>(reference.reference().width);
@@ -195,12 +202,6 @@ int run_bench(const BenchArgs& args) {
     const std::string factor = std::to_string(metrics::kBenchDownsampleFactor) + "x";
     std::printf("%-28s %10s %9s %8s %12s %12s %9s %9s %12s %12s %9s\n", "setting", "ms", "spread", "cal", "relMSE",
                 ("relMSE " + factor).c_str(), "FLIP", "bias", "caustic", "in-scatter", "MiB");
-    std::vector<SweepAxis> axes(1);
-    for (const uint32_t grid : args.grids) axes[0].values.push_back({"water.grid_resolution=" + std::to_string(grid)});
-    if (args.sweeps.empty() && args.alternatives.empty()) axes.push_back(parse_sweep("effects.caustics.mode=on,off"));
-    for (const std::string& sweep : args.sweeps) axes.push_back(parse_sweep(sweep));
-    for (const std::string& alternatives : args.alternatives) axes.push_back(parse_alternatives(alternatives));
-    const std::vector<std::vector<std::string>> settings = combinations(axes);
     if (!args.shard.empty()) {
         std::printf("shard %s: the settings at positions %u, %u + %u, ... of %zu\n", args.shard.c_str(), shard.index,
                     shard.index, shard.count, settings.size());
