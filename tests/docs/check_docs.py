@@ -1,0 +1,83 @@
+#!/usr/bin/env python3
+"""The repository's documents stand on their own: run from the source tree's root (or with it as
+the argument), it fails, naming each file and line, on
+- a Markdown link or image to a file that is not in the tree;
+- a path into `../shared/`, or a name of the workplace's texts (PHYSICS.md, LAVAPIPE.md,
+  STYLE.md) outside docs/: a clone has none of them, so the model is cited as docs/model.md;
+- "seed 000" to "seed 004" or "issue <number>": nothing a clone can look up;
+- a README.md over 250 lines (its depth belongs in docs/).
+It reads the files git tracks, plus new ones not ignored, so build outputs are left out; outside a
+git checkout, every file but those under build*/ and dot-folders.
+"""
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(sys.argv[1] if len(sys.argv) > 1 else ".").resolve()
+README_MAX_LINES = 250
+# [text](target) and ![alt](target), the target up to a space or the closing parenthesis.
+LINK = re.compile(r"!?\[[^\]]*\]\(\s*<?([^)\s>]+)>?(?:\s+\"[^\"]*\")?\s*\)")
+FORBIDDEN = [
+    (re.compile(r"\.\./shared/"), "a path into ../shared/, which a clone does not have"),
+    (re.compile(r"seed 00[0-4]", re.IGNORECASE), "a seed text's number, which a clone cannot look up"),
+    (re.compile(r"\bissue #?[0-9]+", re.IGNORECASE), "an issue's number, which a clone cannot look up"),
+]
+OUTSIDE_TEXTS = re.compile(r"\b(PHYSICS|LAVAPIPE|STYLE)\.md\b")
+# This file names what it looks for.
+SELF = Path(__file__).resolve()
+
+
+def tracked_files():
+    try:
+        out = subprocess.run(["git", "-C", str(ROOT), "ls-files", "-z", "--cached", "--others", "--exclude-standard"],
+                             check=True, capture_output=True).stdout
+        return [ROOT / name for name in out.decode().split("\0") if name]
+    except (OSError, subprocess.CalledProcessError):
+        return [p for p in ROOT.rglob("*")
+                if not any(part.startswith(("build", ".")) for part in p.relative_to(ROOT).parts)]
+
+
+def main():
+    problems = []
+    for path in tracked_files():
+        if not path.is_file() or path.resolve() == SELF:
+            continue
+        try:
+            text = path.read_text(encoding="utf-8")
+        except UnicodeDecodeError:
+            continue  # images, EXR files
+        relative = path.relative_to(ROOT)
+        lines = text.splitlines()
+        for number, line in enumerate(lines, 1):
+            for pattern, why in FORBIDDEN:
+                if pattern.search(line):
+                    problems.append(f"{relative}:{number}: {why}: {line.strip()[:120]}")
+            if relative.parts[0] != "docs" and OUTSIDE_TEXTS.search(line):
+                problems.append(f"{relative}:{number}: names a workplace text outside docs/ (cite docs/model.md): "
+                                f"{line.strip()[:120]}")
+        if path.suffix.lower() != ".md":
+            continue
+        if relative.as_posix() == "README.md" and len(lines) > README_MAX_LINES:
+            problems.append(f"README.md: {len(lines)} lines (at most {README_MAX_LINES}; depth goes to docs/)")
+        in_code = False
+        for number, line in enumerate(lines, 1):
+            if line.lstrip().startswith("```"):
+                in_code = not in_code
+                continue
+            if in_code:
+                continue
+            for target in LINK.findall(re.sub(r"`[^`]*`", "", line)):
+                if re.match(r"^[a-z][a-z0-9+.-]*:", target, re.IGNORECASE) or target.startswith("#"):
+                    continue  # a URL, mailto: or an anchor in the same file
+                file_part = target.split("#", 1)[0]
+                if not (path.parent / file_part).exists():
+                    problems.append(f"{relative}:{number}: links to '{target}', which is not in the tree")
+    for problem in problems:
+        print(problem)
+    print(f"check_docs: {len(problems)} problem(s)")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
