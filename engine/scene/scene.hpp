@@ -61,10 +61,22 @@ struct Sky {
 
 // Horizontal Lambertian plane y = height: a square of side 2 * half_extent centred
 // under the origin (x and z in [-half_extent, half_extent]).
+// floor.tiles: square tiles of side `side` in x and z, their edges on the multiples of `side`,
+// with grout lines `grout` wide centred on the edges. The tiles take the floor's albedo.
+struct FloorTiles {
+    double side = 0.25;                      // metres, > 0
+    double grout = 0.01;                     // metres, 0 <= grout < side
+    glm::dvec3 grout_albedo{0.6, 0.6, 0.6};  // in [0, 1] per channel
+};
+
 struct FloorPlane {
     double height = -1.5;              // metres; the pool floor 1.5 m below the water level
     glm::dvec3 albedo{0.5, 0.5, 0.5};  // in [0, 1] per channel
     double half_extent = 10.0;         // metres, > 0
+    std::optional<FloorTiles> tiles;   // nullopt: one albedo everywhere
+    // The albedo at (x, z): the grout's within grout / 2 of a tile edge, the floor's elsewhere
+    // (shaders/receivers/floor_albedo.glsl evaluates the same pattern in float).
+    glm::dvec3 albedo_at(double x, double z) const;
 };
 
 inline constexpr uint32_t kDefaultWaterMeshResolution = 256;

@@ -24,9 +24,12 @@ FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t
     constants.sky_average = glm::vec4(glm::vec3(sky_average_radiance(scene.sky)), 0.0f);
     constants.sun_disk = glm::vec4(static_cast<float>(std::cos(glm::radians(kSunDiskAngularRadiusDeg))),
                                    static_cast<float>(kSunDiskSolidAngle), 0.0f, 0.0f);
+    const std::optional<FloorTiles>& tiles = scene.floor.tiles;
     constants.floor_plane =
-        glm::vec4(static_cast<float>(scene.floor.height), static_cast<float>(scene.floor.half_extent), 0.0f, 0.0f);
+        glm::vec4(static_cast<float>(scene.floor.height), static_cast<float>(scene.floor.half_extent),
+                  tiles ? static_cast<float>(tiles->side) : 0.0f, tiles ? static_cast<float>(tiles->grout) : 0.0f);
     constants.floor_albedo = glm::vec4(glm::vec3(scene.floor.albedo), 0.0f);
+    constants.floor_grout = glm::vec4(tiles ? glm::vec3(tiles->grout_albedo) : glm::vec3(0.0f), 0.0f);
     constants.camera_near = glm::vec4(static_cast<float>(scene.camera.near_plane), 0.0f, 0.0f, 0.0f);
     constants.viewport = glm::vec4(static_cast<float>(width), static_cast<float>(height), 0.0f, 0.0f);
     constants.medium_sigma_t = glm::vec4(glm::vec3(scene.medium.sigma_t()), 0.0f);

@@ -28,7 +28,7 @@ struct alignas(16) FrameConstants {
     glm::vec4 sky_params;  // x: model (0 constant, 1 gradient), y: exponent
     glm::vec4 sky_average;
     glm::vec4 sun_disk;     // x: cos(angular radius), y: solid angle
-    glm::vec4 floor_plane;  // x: height, y: half extent
+    glm::vec4 floor_plane;  // x: height, y: half extent, z: tile side (0: no tiles), w: grout width
     glm::vec4 floor_albedo;
     glm::vec4 viewport;  // xy: width, height in pixels
     glm::vec4 water;     // x: level, y: ior, z: half extent, w: has water
@@ -37,6 +37,7 @@ struct alignas(16) FrameConstants {
     glm::vec4 camera_medium;   // x: camera in the water (per frame; the camera-medium split refines it per pixel)
     glm::vec4 camera_near;     // x: near-plane distance, m
     glm::vec4 medium_options;  // x: 1 when the shading adds the analytic in-scatter, 0 when the godrays supply it
+    glm::vec4 floor_grout;     // rgb: the grout's albedo, where floor_plane.z > 0
 };
 static_assert(sizeof(FrameConstants) % 16 == 0, "std140 blocks are a multiple of 16 bytes");
 

@@ -16,7 +16,7 @@ layout(set = 0, binding = 0, std140) uniform FrameConstants {
     vec4 sky_params;          // x: model (0 constant, 1 gradient), y: gradient exponent
     vec4 sky_average;         // rgb: L_sky_avg (docs/model.md section 1), computed on the CPU
     vec4 sun_disk;            // x: cos of the disk's angular radius, y: its solid angle (sr)
-    vec4 floor_plane;         // x: height y of the floor, y: half extent
+    vec4 floor_plane;         // x: height y of the floor, y: half extent, z: tile side (0: no tiles), w: grout width
     vec4 floor_albedo;        // rgb
     vec4 viewport;            // xy: output size in pixels
     vec4 water;               // x: mean level y, y: index of refraction, z: half extent, w: 1 if the scene has water
@@ -27,6 +27,7 @@ layout(set = 0, binding = 0, std140) uniform FrameConstants {
     vec4 camera_near;         // x: near-plane distance, m (the stencil split's clip depth)
     vec4 medium_options;      // x: 1 when the shading adds the analytic in-scatter of the sun's beam; 0 when the
                               //    godray passes supply the in-scatter instead (counted once, docs/model.md section 1)
+    vec4 floor_grout;         // rgb: the grout's albedo, where floor_plane.z > 0 (receivers/floor_albedo.glsl)
 } frame;
 
 // sigma_s for the analytic single scattering along view rays: zero when the godrays

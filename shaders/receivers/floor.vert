@@ -16,6 +16,8 @@ void main() {
     vec3 world = vec3(xz.x, frame.floor_plane.x, xz.y);
     out_world_position = world;
     out_normal = vec3(0.0, 1.0, 0.0);
-    out_albedo = frame.floor_albedo.rgb;
+    // A tiled floor's albedo varies within a triangle: -1 asks receiver.frag to evaluate it per
+    // fragment (an albedo is never negative otherwise).
+    out_albedo = frame.floor_plane.z > 0.0 ? vec3(-1.0) : frame.floor_albedo.rgb;
     gl_Position = in_scene_view() ? scene_view_clip(world, scene_view_mirrored()) : frame.view_proj * vec4(world, 1.0);
 }

@@ -12,6 +12,7 @@
 // second output: the sun's irradiance on the receiver under the water, 0 above it;
 // passes/caustics/caustic_layer.hpp).
 #include "common/medium.glsl"
+#include "receivers/floor_albedo.glsl"
 #include "receivers/receiver_push.glsl"
 #include "scene_views/scene_view.glsl"
 #include "water/camera_medium.glsl"
@@ -41,7 +42,8 @@ void main() {
     vec3 normal = normalize(in_normal);
     // Lambertian surfaces are lit on the side the eye sees.
     if (dot(normal, eye - p) < 0.0) normal = -normal;
-    vec3 albedo = in_albedo;
+    // floor.vert's mark for a tiled floor (receivers/floor_albedo.glsl).
+    vec3 albedo = in_albedo.r < 0.0 ? floor_albedo_at(p.xz) : in_albedo;
 #ifdef VKWATER_MESH_BASE_COLOR
     vec4 base_color = texture(base_color_texture, in_uv) * in_color;
     // A cutout (glTF alphaMode MASK) is not there where its alpha falls below the threshold.

@@ -9,6 +9,7 @@
 
 #include "common/frame_constants.glsl"
 #include "common/lambert.glsl"
+#include "receivers/floor_albedo.glsl"
 #include "water/scene_optics.glsl"
 
 #if defined(VKWATER_CAUSTICS)
@@ -93,7 +94,7 @@ bool floor_along(vec3 p, vec3 d, SceneOptics optics, out float distance_to_floor
     vec3 hit = p + distance_to_floor * d;
     if (abs(hit.x) > frame.floor_plane.y || abs(hit.z) > frame.floor_plane.y) return false;
     const vec3 up = vec3(0.0, 1.0, 0.0);
-    radiance = lambert_radiance(frame.floor_albedo.rgb, receiver_irradiance(hit, up, optics));
+    radiance = lambert_radiance(floor_albedo_at(hit.xz), receiver_irradiance(hit, up, optics));
 #ifdef VKWATER_CAUSTIC_LAYER
     caustic = caustic_layer_value(hit, up, optics);
 #endif

@@ -144,3 +144,47 @@ TEST(scene_overrides, ArrayElementsByIndex) {
 
 }  // namespace
 }  // namespace vkw
+
+namespace vkw {
+namespace {
+
+// floor.tiles: the grout within grout / 2 of every multiple of the side, in x and in z, on both
+// sides of 0; the floor's albedo elsewhere.
+TEST(scene_floor, TilesPutGroutOnTheMultiplesOfTheSide) {
+    const FloorPlane floor =
+        with({"floor.albedo=[0.6,0.7,0.8]", "floor.tiles={\"side\":0.5,\"grout\":0.02,\"grout_albedo\":[0.1,0.2,0.3]}"})
+            .floor;
+    const glm::dvec3 tile(0.6, 0.7, 0.8), grout(0.1, 0.2, 0.3);
+    EXPECT_EQ(floor.albedo_at(0.25, 0.25), tile);  // a tile's centre
+    EXPECT_EQ(floor.albedo_at(-0.25, 1.75), tile);
+    EXPECT_EQ(floor.albedo_at(0.0, 0.25), grout);     // on the edge x = 0
+    EXPECT_EQ(floor.albedo_at(0.25, -1.0), grout);    // on the edge z = -1
+    EXPECT_EQ(floor.albedo_at(0.509, 0.25), grout);   // 9 mm from x = 0.5: within the 10 mm half-width
+    EXPECT_EQ(floor.albedo_at(0.511, 0.25), tile);    // 11 mm from it
+    EXPECT_EQ(floor.albedo_at(-0.491, 0.25), grout);  // 9 mm from x = -0.5
+    EXPECT_EQ(floor.albedo_at(-0.489, 0.25), tile);
+    // Without tiles, and with grout 0 (no lines at all), one albedo everywhere.
+    EXPECT_EQ(with({}).floor.albedo_at(0.0, 0.0), with({}).floor.albedo);
+    const FloorPlane no_grout = with({"floor.tiles={\"side\":0.5,\"grout\":0}"}).floor;
+    EXPECT_EQ(no_grout.albedo_at(0.0, 0.0), no_grout.albedo);
+    // The defaults: 25 cm tiles, 1 cm grout.
+    const FloorPlane defaults = with({"floor.tiles={}"}).floor;
+    ASSERT_TRUE(defaults.tiles);
+    EXPECT_EQ(defaults.tiles->side, 0.25);
+    EXPECT_EQ(defaults.tiles->grout, 0.01);
+}
+
+TEST(scene_floor, GroutAsWideAsATileIsRefused) {
+    const std::string message = test::user_error_of([] { with({"floor.tiles={\"side\":0.25,\"grout\":0.25}"}); });
+    EXPECT_NE(
+        message.find("floor.tiles.grout: 0.25 m is not below the tiles' side 0.25 m (accepted: 0 <= grout < side)"),
+        std::string::npos)
+        << message;
+    EXPECT_NE(test::user_error_of([] { with({"floor.tiles={\"side\":0}"}); }).find("floor.tiles.side"),
+              std::string::npos);
+    EXPECT_NE(test::user_error_of([] { with({"floor.tiles={\"sied\":1}"}); }).find("floor.tiles.sied"),
+              std::string::npos);
+}
+
+}  // namespace
+}  // namespace vkw

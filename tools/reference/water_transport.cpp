@@ -19,6 +19,8 @@
 namespace vkw::ref {
 namespace {
 
+// The floor is the first mesh of the BVH (the constructor puts it there).
+constexpr uint32_t kFloorReceiver = 0;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Ray origins are pushed off the surface they leave by this much (metres): far above
 // double rounding at scene scale (1e-15 * 1e3 m), far below any feature of a scene.
@@ -36,7 +38,7 @@ WaterTransport::WaterTransport(const Scene& scene, const Quality& quality)
     : scene_(scene), estimate_caustic_resolution_(quality.estimate_caustic_resolution) {
     const bool wavy = scene.water && scene.water->waves.model != WaveModel::Flat;
     const bool ocean = wavy && scene.water->waves.model == WaveModel::FftOcean;
-    // The floor joins the receivers as one more mesh.
+    // The floor joins the receivers as one more mesh, the first (kFloorReceiver).
     Mesh floor = make_plane_mesh({scene.floor.half_extent, scene.floor.half_extent});
     transform_mesh(floor, glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, scene.floor.height, 0.0)));
     extra_meshes_.push_back(std::move(floor));
@@ -346,6 +348,11 @@ glm::dvec4 WaterTransport::base_color_at(uint32_t receiver, uint32_t triangle, c
     const uint32_t index = 3 * triangle;
     const std::array<uint32_t, 3> corner = {mesh.indices[index], mesh.indices[index + 1], mesh.indices[index + 2]};
     const std::array<double, 3> weight = {1.0 - barycentric.x - barycentric.y, barycentric.x, barycentric.y};
+    if (receiver == kFloorReceiver && scene_.floor.tiles) {
+        glm::dvec3 point(0.0);
+        for (int k = 0; k < 3; ++k) point += weight[k] * glm::dvec3(mesh.positions[corner[k]]);
+        return glm::dvec4(scene_.floor.albedo_at(point.x, point.z), 1.0);
+    }
     glm::dvec4 color(part.base_color, part.alpha);
     if (part.texture >= 0) {
         glm::dvec2 uv(0.0);
