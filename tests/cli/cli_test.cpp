@@ -609,6 +609,22 @@ TEST(cli, BenchShardsMergeIntoTheWholeSweep) {
     expect_clean_failure(run_vkwater(bench + whole.string() + " --shard 2/2"), 1, "--shard '2/2'");
 }
 
+// Every showcase scene (scenes/showcase/) renders finite and validation-clean, the caustic and
+// in-scatter layers included.
+TEST(cli, EveryShowcaseSceneRendersCleanly) {
+    int scenes = 0;
+    for (const auto& file : fs::directory_iterator(std::string(VKWATER_SOURCE_DIR) + "/scenes/showcase")) {
+        if (file.path().extension() != ".json") continue;
+        ++scenes;
+        const fs::path out = scratch("showcase-" + file.path().stem().string() + ".exr");
+        const CommandRun run = run_vkwater("render " + file.path().string() +
+                                           " --width 64 --height 48 --validation --check-finite --out " + out.string());
+        EXPECT_EQ(run.exit_code, 0) << file.path() << "\n" << run.output;
+        EXPECT_TRUE(fs::exists(out)) << file.path();
+    }
+    EXPECT_GT(scenes, 0);
+}
+
 TEST(cli, PassesPrintsDecisionsOrderAndMemory) {
     const CommandRun run = run_vkwater("passes " + kPool + " --barriers --dot " + scratch("graph.dot").string());
     EXPECT_EQ(run.exit_code, 0) << run.output;

@@ -23,6 +23,9 @@ const std::filesystem::path kReferences = std::filesystem::path(VKWATER_SOURCE_D
 // The box-filtered set (16 samples per pixel, caustics over each stratum's footprint), beside
 // the point-sampled one.
 const std::filesystem::path kBoxReferences = kReferences / "box";
+// The showcase scenes' references (scenes/showcase/), point-sampled.
+const std::filesystem::path kShowcaseReferences = kReferences / "showcase";
+const std::filesystem::path kScenes = kReferences / "../../scenes";
 
 nlohmann::json manifest(const std::filesystem::path& folder = kReferences) {
     std::ifstream in(folder / "manifest.json");
@@ -32,6 +35,11 @@ nlohmann::json manifest(const std::filesystem::path& folder = kReferences) {
 std::string regenerate_hint(const std::filesystem::path& folder, const std::string& name) {
     const std::string stem = std::filesystem::path(name).stem().string();
     if (folder == kBoxReferences) return "tools/reference/make_box_references.sh " + stem;
+    if (folder == kShowcaseReferences) {
+        return "vkwater reference scenes/showcase/" + name +
+               " --cells-per-wavelength 64 --out tests/references/showcase/" + stem +
+               ".exr --manifest tests/references/showcase/manifest.json";
+    }
     return "vkwater reference scenes/" + name + " --out tests/references/" + stem +
            ".exr --manifest tests/references/manifest.json";
 }
@@ -54,11 +62,12 @@ void expect_entries_match_scene_files_and_images(const std::filesystem::path& fo
     }
 }
 
-void expect_every_built_in_scene(const std::filesystem::path& folder) {
-    // A 400x300 reference of every built-in scene (scenes/*.json).
+void expect_every_built_in_scene(const std::filesystem::path& folder,
+                                 const std::filesystem::path& scenes_folder = kScenes) {
+    // A 400x300 reference of every built-in scene (scenes/*.json, or scenes/showcase/*.json).
     const nlohmann::json entries = manifest(folder);
     int scenes = 0;
-    for (const auto& file : std::filesystem::directory_iterator(kReferences / "../../scenes")) {
+    for (const auto& file : std::filesystem::directory_iterator(scenes_folder)) {
         if (file.path().extension() != ".json") continue;
         ++scenes;
         const std::string name = file.path().filename().string();
@@ -109,6 +118,14 @@ TEST(reference_manifest, EveryBuiltInSceneHasAReference) { expect_every_built_in
 
 TEST(reference_manifest, TheReferenceRendererReproducesEveryCommittedImage) {
     expect_quick_entries_reproduced(kReferences);
+}
+
+TEST(showcase_reference_manifest, EveryEntryMatchesItsSceneFileAndImage) {
+    expect_entries_match_scene_files_and_images(kShowcaseReferences);
+}
+
+TEST(showcase_reference_manifest, EveryShowcaseSceneHasAReference) {
+    expect_every_built_in_scene(kShowcaseReferences, kScenes / "showcase");
 }
 
 TEST(box_reference_manifest, EveryEntryMatchesItsSceneFileAndImage) {
