@@ -18,6 +18,8 @@ TEST(FrameRange, ListsItsFramesInclusively) {
     EXPECT_EQ(parse_frame_range("10:20:5").frames(), (std::vector<int64_t>{10, 15, 20}));
     EXPECT_EQ(parse_frame_range("10:21:5").frames(), (std::vector<int64_t>{10, 15, 20}));
     EXPECT_EQ(parse_frame_range("7:7").frames(), (std::vector<int64_t>{7}));
+    EXPECT_EQ(parse_frame_range("10:21:5").count(), 3);
+    EXPECT_EQ(parse_frame_range("0:10000000").count(), 10000001);
     for (const char* bad : {"", "3", "a:b", "1:", ":4", "-1:3", "0:3:", "0:3:1:1", " 0:3", "0:3 ", "0x1:3", "5:2",
                             "0:3:0", "0:10000001"}) {
         EXPECT_THROW(parse_frame_range(bad), UserError) << bad;

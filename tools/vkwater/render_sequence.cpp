@@ -113,7 +113,7 @@ int run_render_sequence(const RenderArgs& args) {
     std::printf(
         "sequence: frames %s at %s fps (%zu), %zu in this task%s, %zu kept (their files match %s), %zu to "
         "render\n",
-        range.text().c_str(), format_number(args.fps).c_str(), range.frames().size(), mine.size(),
+        range.text().c_str(), format_number(args.fps).c_str(), static_cast<size_t>(range.count()), mine.size(),
         args.shard.empty() ? "" : (" (shard " + args.shard + ")").c_str(), kept, manifest.path().c_str(),
         to_render.size());
     if (to_render.empty()) return kExitOk;
@@ -151,15 +151,13 @@ int run_render_sequence(const RenderArgs& args) {
                 write_png_preview(std::filesystem::path(path).replace_extension(".png"), result.image,
                                   static_cast<float>(scene.camera.exposure));
             }
-            // The hash of the pixels as the file stores them (half floats, if asked), which is what
-            // a re-run reads back.
-            FrameRecord record{frame,
-                               path.filename().string(),
-                               water_time,
-                               pixel_hash(read_exr(path)),
-                               result.timing.total_ms,
-                               ms_since(frame_start),
-                               device_name};
+            // The hash of the pixels as the file stores them, which is what a re-run reads back: 32-bit
+            // floats are stored exactly, so the image in memory serves; half floats are rounded (and
+            // clamped) by write_exr, so that file is read back.
+            const std::string hash = args.half ? pixel_hash(read_exr(path)) : pixel_hash(result.image);
+            const FrameRecord record{frame,      path.filename().string(), water_time,
+                                     hash,       result.timing.total_ms,   ms_since(frame_start),
+                                     device_name};
             manifest.record(record);
             const double mean_ms = ms_since(render_start) / static_cast<double>(done + 1);
             const size_t left = to_render.size() - done - 1;

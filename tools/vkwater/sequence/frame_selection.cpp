@@ -49,9 +49,10 @@ FrameRange parse_frame_range(const std::string& text) {
 }
 
 std::vector<int64_t> Shard::frames_of(const FrameRange& range) const {
-    const std::vector<int64_t> all = range.frames();
     std::vector<int64_t> mine;
-    for (size_t position = index; position < all.size(); position += count) mine.push_back(all[position]);
+    for (int64_t position = index; position < range.count(); position += count) {
+        mine.push_back(range.first + position * range.step);
+    }
     return mine;
 }
 

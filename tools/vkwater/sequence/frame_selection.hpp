@@ -13,6 +13,7 @@ struct FrameRange {
     int64_t first = 0;
     int64_t last = 0;
     int64_t step = 1;
+    int64_t count() const { return (last - first) / step + 1; }
     std::vector<int64_t> frames() const;
     std::string text() const;  // "A:B:STEP"
 };
