@@ -18,8 +18,8 @@ packages=(
   # libraries
   libglm-dev libglfw3-dev libtinygltf-dev libopenexr-dev nlohmann-json3-dev libcli11-dev
   libimgui-dev libstb-dev libgtest-dev
-  # zlib: the CRC of the PNG preview's sRGB chunk
-  zlib1g-dev
+  # libpng: the PNG preview's encoder; zlib: the PNG test checks the sRGB chunk's CRC
+  libpng-dev zlib1g-dev
   # EXR inspection and conversion (exrheader, oiiotool)
   openexr openimageio-tools
   # window tests and screenshots; xdotool types and clicks in the viewer's window (tests/view)

@@ -1,9 +1,7 @@
-// PNG preview writer: tone maps with tone_curve.hpp and encodes with stb_image_write.
+// PNG preview writer: tone maps with tone_curve.hpp and encodes with libpng.
 #include "engine/image/png_preview.hpp"
 
-// Debian's libstb is a compiled library: include the declarations only, no *_IMPLEMENTATION.
-#include <stb_image_write.h>
-#include <zlib.h>
+#include <png.h>
 
 #include <array>
 #include <cmath>
@@ -22,19 +20,26 @@ namespace {
 // Magenta never comes out of the tone curve for a grey-ish water scene, so it stands out.
 constexpr std::array<std::uint8_t, 3> kNonFiniteColor = {255, 0, 255};
 
-// The sRGB chunk (PNG 1.2, 11.3.3.5) after IHDR: the pixels are sRGB-encoded, rendering intent 0
-// (perceptual), so colour-managed viewers show them as meant. stb_image_write writes no such chunk.
-void insert_srgb_chunk(std::string& png) {
-    constexpr std::size_t kAfterIhdr = 8 + 4 + 4 + 13 + 4;  // signature, IHDR's length, type, data, CRC
-    if (png.size() < kAfterIhdr || png.compare(12, 4, "IHDR") != 0) {
-        throw InternalError("PNG preview: the encoder's output does not start with IHDR");
+// Encodes 8-bit RGB rows with libpng's simplified API (no setjmp here: it reports failures through
+// its return value). It writes the sRGB chunk for 8-bit data that is not flagged linear, so
+// colour-managed viewers show the pixels as meant, and chooses each row's filter adaptively.
+std::string encode_png_rgb8(int width, int height, const std::vector<std::uint8_t>& rgb8) {
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    png.width = static_cast<png_uint_32>(width);
+    png.height = static_cast<png_uint_32>(height);
+    png.format = PNG_FORMAT_RGB;
+    const png_int_32 row_stride = width * 3;
+    png_alloc_size_t size = 0;
+    if (!png_image_write_get_memory_size(png, size, 0, rgb8.data(), row_stride, nullptr)) {
+        throw InternalError(std::string("PNG preview: libpng could not size the file: ") + png.message);
     }
-    const unsigned char type_and_data[] = {'s', 'R', 'G', 'B', 0};
-    const uLong crc = crc32(crc32(0L, Z_NULL, 0), type_and_data, sizeof type_and_data);
-    std::string chunk = {0, 0, 0, 1};
-    chunk.append(reinterpret_cast<const char*>(type_and_data), sizeof type_and_data);
-    for (int shift = 24; shift >= 0; shift -= 8) chunk += static_cast<char>((crc >> shift) & 0xffu);
-    png.insert(kAfterIhdr, chunk);
+    std::string bytes(size, '\0');
+    if (!png_image_write_to_memory(&png, bytes.data(), &size, 0, rgb8.data(), row_stride, nullptr)) {
+        throw InternalError(std::string("PNG preview: libpng could not encode the image: ") + png.message);
+    }
+    bytes.resize(size);
+    return bytes;
 }
 
 }  // namespace
@@ -67,18 +72,9 @@ std::size_t write_png_preview(const std::filesystem::path& path, const ImageRGBA
         }
     }
 
-    // Row 0 is the top row in both ImageRGBA32F and PNG, so no flip.
-    const int row_bytes = image.width * 3;
-    // Encoded in memory, then written whole (checked_write.hpp): no partial file under the name.
-    std::string bytes;
-    auto append = [](void* context, void* data, int size) {
-        static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
-    };
-    if (stbi_write_png_to_func(append, &bytes, image.width, image.height, 3, rgb8.data(), row_bytes) == 0) {
-        throw UserError("cannot write " + quoted_path(path) + ": stbi_write_png_to_func failed to encode");
-    }
-    insert_srgb_chunk(bytes);
-    write_file_checked(path, bytes);
+    // Row 0 is the top row in both ImageRGBA32F and PNG, so no flip. Encoded in memory, then
+    // written whole (checked_write.hpp): no partial file under the name.
+    write_file_checked(path, encode_png_rgb8(image.width, image.height, rgb8));
     return nonfinite_pixels;
 }
 
