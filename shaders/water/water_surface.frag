@@ -126,6 +126,33 @@ vec3 radiance_in_water(vec3 p, vec3 d, bool reflected, float weight, out float l
                                optics.e_perp0.rgb, behind);
 }
 
+// What a ray from the water's surface into the air brings back: the receiver it meets, else the sky
+// with the sun's disk.
+vec3 radiance_in_air_along(vec3 p, vec3 d, float weight) {
+    vec3 object;
+    float distance_to_object;
+    vec2 object_uv;
+    if (object_along(true, p, d, params.scene_size, weight, object, distance_to_object, object_uv)) return object;
+    return sky_radiance(d);
+}
+
+// A ray reflected from the air below the horizon meets the water again, not the sky's `ground`.
+// The stated approximation (docs/model.md section 1, "Reflections below the horizon"): it meets,
+// at the mean level, the mirror image of the face that turned it down (the wave's other flank,
+// tilted toward the ray as far as the first tilts away from the eye), or the flat level where that
+// face would not send it back up. There the Fresnel split at its own angle sends R of it up to the
+// sky or a receiver and lets T of the water's light out, taken to be what the pixel's own refracted
+// ray brings (`water_seen_from_air`, already divided by n^2): the two crossings lie within a
+// wavelength of each other. The reference traces the same path against the true surface.
+vec3 water_seen_below_horizon(vec3 p, vec3 d, vec3 normal, float weight, vec3 water_seen_from_air) {
+    const float n = frame.water.y, level = frame.water.x;
+    const vec3 q = p.y > level ? p + ((level - p.y) / d.y) * d : p;
+    vec3 facing = vec3(-normal.x, normal.y, -normal.z);
+    if (!(dot(d, facing) < 0.0) || reflect(d, facing).y < 0.0) facing = vec3(0.0, 1.0, 0.0);
+    const Fresnel f = surface_fresnel(-dot(d, facing), 1.0, n);
+    return f.R * radiance_in_air_along(q, reflect(d, facing), weight * f.R) + f.T * water_seen_from_air;
+}
+
 void main() {
     vec3 eye = frame.camera_position.xyz;
     const vec3 v = camera_ray_direction(gl_FragCoord.xy);  // the pixel's view ray
@@ -138,15 +165,6 @@ void main() {
     if (!eye_in_water()) {
         // From the air. A wave's back face seen from above keeps a grazing cosine of 0.
         Fresnel f = surface_fresnel(max(0.0, -dot(v, normal)), 1.0, n);
-        vec3 reflected_direction = reflect(v, normal);
-        vec3 reflected = sky_radiance(reflected_direction);
-        vec3 object;
-        float distance_to_object;
-        vec2 object_uv;
-        if (object_along(true, p, reflected_direction, params.scene_size, f.R, object, distance_to_object,
-                         object_uv)) {
-            reflected = object;
-        }
         vec3 refracted_direction;
         vec3 transmitted = vec3(0.0);
         vec3 caustic = vec3(0.0);
@@ -165,6 +183,10 @@ void main() {
             }
 #endif
         }
+        vec3 reflected_direction = reflect(v, normal);
+        vec3 reflected = reflected_direction.y < 0.0
+                             ? water_seen_below_horizon(p, reflected_direction, normal, f.R, transmitted)
+                             : radiance_in_air_along(p, reflected_direction, f.R);
         out_radiance = vec4(f.R * reflected + f.T * transmitted, 1.0);
 #ifdef VKWATER_CAUSTIC_LAYER
         out_caustic = vec4(caustic, 1.0);

@@ -25,6 +25,10 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Ray origins are pushed off the surface they leave by this much (metres): far above
 // double rounding at scene scale (1e-15 * 1e3 m), far below any feature of a scene.
 constexpr double kOffset = 1e-9;
+// Surface events along one path from the air: the camera's ray and up to three more reflections
+// between the waves. Each costs at least the reflectance at its angle; past the fourth the ray
+// takes what radiance_in_air sees.
+constexpr int kMaxSurfaceBounces = 4;
 constexpr double kSunDiskSolidAngle = 6.80e-5;  // docs/model.md section 1
 constexpr double kSunDiskAngularRadiusDeg = 0.2666;
 
@@ -456,6 +460,35 @@ glm::dvec3 WaterTransport::radiance_in_air(const Ray& ray) const {
     return radiance;
 }
 
+glm::dvec3 WaterTransport::radiance_reflected_into_air(const Ray& ray, int bounces) const {
+    if (bounces < kMaxSurfaceBounces) {
+        if (const std::optional<WaterHit> water = water_surface_hit(ray)) {
+            if (!closest_receiver(ray, water->distance)) {
+                return radiance_from_air_at_surface(ray.origin + water->distance * ray.direction, water->normal,
+                                                    ray.direction, bounces + 1, nullptr, nullptr);
+            }
+        }
+    }
+    return radiance_in_air(ray);
+}
+
+glm::dvec3 WaterTransport::radiance_from_air_at_surface(const glm::dvec3& p, const glm::dvec3& up,
+                                                        const glm::dvec3& direction, int bounces, PixelRadiance* pixel,
+                                                        const BeamIrradiance::Patch* footprint) const {
+    // A wave's back face seen from above: grazing incidence, all reflected.
+    const double cos_i = std::max(0.0, -glm::dot(direction, up));
+    const double reflectance = fresnel_reflectance(cos_i, 1.0, ior_);
+    const glm::dvec3 l_reflected =
+        radiance_reflected_into_air({p + kOffset * up, glm::reflect(direction, up)}, bounces);
+    glm::dvec3 l_water(0.0), in_scatter(0.0);
+    if (const auto refracted = refract(direction, up, 1.0 / ior_); refracted && cos_i > 0.0) {
+        l_water = radiance_in_water_to_receiver({p - kOffset * up, *refracted}, pixel, pixel ? &in_scatter : nullptr,
+                                                footprint);
+    }
+    if (pixel) pixel->in_scatter = (1.0 - reflectance) / (ior_ * ior_) * in_scatter;
+    return reflectance * l_reflected + (1.0 - reflectance) / (ior_ * ior_) * l_water;
+}
+
 glm::dvec3 WaterTransport::in_water_segment(const glm::dvec3& origin, double length, const glm::dvec3& direction,
                                             const glm::dvec3& behind, glm::dvec3* in_scatter) const {
     if (in_scatter_) return in_scatter_->segment_radiance(origin, direction, length, behind, in_scatter);
@@ -505,19 +538,8 @@ PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray, const BeamIrradia
             return pixel;
         }
         // The surface from above: reflect into the air, refract into the water.
-        const glm::dvec3 p = ray.origin + to_surface * ray.direction;
-        const glm::dvec3 up = surface_normal;
-        // A wave's back face seen from above: grazing incidence, all reflected.
-        const double cos_i = std::max(0.0, -glm::dot(ray.direction, up));
-        const double reflectance = fresnel_reflectance(cos_i, 1.0, ior_);
-        const glm::dvec3 reflected = glm::reflect(ray.direction, up);
-        const glm::dvec3 l_reflected = radiance_in_air({p + kOffset * up, reflected});
-        glm::dvec3 l_water(0.0), in_scatter(0.0);
-        if (const auto refracted = refract(ray.direction, up, 1.0 / ior_); refracted && cos_i > 0.0) {
-            l_water = radiance_in_water_to_receiver({p - kOffset * up, *refracted}, &pixel, &in_scatter, footprint);
-        }
-        pixel.radiance = reflectance * l_reflected + (1.0 - reflectance) / (ior_ * ior_) * l_water;
-        pixel.in_scatter = (1.0 - reflectance) / (ior_ * ior_) * in_scatter;
+        pixel.radiance = radiance_from_air_at_surface(ray.origin + to_surface * ray.direction, surface_normal,
+                                                      ray.direction, 1, &pixel, footprint);
         return pixel;
     }
 

@@ -144,13 +144,25 @@ private:
     // Radiance arriving along `ray` travelling in air (one surface event already spent
     // or none to come): receivers above the water, or the sky with the sun's disk.
     glm::dvec3 radiance_in_air(const Ray& ray) const;
+    // Radiance arriving along `ray` reflected into the air by the water's surface: what
+    // radiance_in_air sees, unless the ray meets the true surface again first (a reflection below
+    // the horizon, or one that meets the next crest), where it is split again as a camera ray from
+    // above is, up to kMaxSurfaceBounces surface events (docs/model.md section 1, "Surface events
+    // along a path").
+    glm::dvec3 radiance_reflected_into_air(const Ray& ray, int bounces) const;
+    // The split at a water surface point `p` (normal `up`) met from the air along `direction`:
+    // reflected into the air (radiance_reflected_into_air) and refracted into the water. The
+    // camera's ray passes `pixel` for its layers; later bounces pass nullptr.
+    glm::dvec3 radiance_from_air_at_surface(const glm::dvec3& p, const glm::dvec3& up, const glm::dvec3& direction,
+                                            int bounces, PixelRadiance* pixel,
+                                            const BeamIrradiance::Patch* footprint) const;
     // Radiance of a Lambertian receiver point, in air or under the water.
     // `primary`, when given, receives the point's sun irradiance under the water as the
     // pixel's caustic layer, and the point.
     glm::dvec3 receiver_radiance(const glm::dvec3& point, const SurfaceHit& hit, PixelRadiance* primary,
                                  const BeamIrradiance::Patch* footprint = nullptr) const;
     // Radiance arriving at `start` along `ray` inside the water, up to the receiver it
-    // meets (no surface event: the ray's one surface event is already spent); its in-scatter
+    // meets (a ray in the water meets the surface no more); its in-scatter
     // alone also in `in_scatter`, when given.
     glm::dvec3 radiance_in_water_to_receiver(const Ray& ray, PixelRadiance* primary, glm::dvec3* in_scatter = nullptr,
                                              const BeamIrradiance::Patch* footprint = nullptr) const;
