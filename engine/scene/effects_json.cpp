@@ -72,6 +72,7 @@ WaterShadingSettings read_water_shading(FieldReader& fields) {
     if (fields.has("depth_blend")) {
         shading.depth_blend = fields.object("depth_blend", Presence::optional, read_depth_blend);
     }
+    shading.glitter = fields.boolean("glitter", defaults.glitter);
     return shading;
 }
 

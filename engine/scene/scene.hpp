@@ -228,6 +228,9 @@ struct WaterShadingSettings {
     SurfaceFresnel fresnel = SurfaceFresnel::Exact;
     double fresnel_power = 4.5;  // q of the power term, in [1, 10] (the paper's table: 4.5)
     std::optional<DepthBlend> depth_blend;
+    // The sun's glitter: the slopes of the waves a pixel cannot resolve as a lobe for the sun's
+    // reflection (shaders/water/sun_glitter.glsl) in place of its disk where they spread it more.
+    bool glitter = false;
 };
 
 struct EffectsSettings {

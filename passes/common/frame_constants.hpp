@@ -3,6 +3,7 @@
 #pragma once
 
 #include "engine/scene/scene.hpp"
+#include "engine/water/unresolved_slopes.hpp"
 
 #include <glm/glm.hpp>
 
@@ -38,6 +39,11 @@ struct alignas(16) FrameConstants {
     glm::vec4 camera_near;     // x: near-plane distance, m
     glm::vec4 medium_options;  // x: 1 when the shading adds the analytic in-scatter, 0 when the godrays supply it
     glm::vec4 floor_grout;     // rgb: the grout's albedo, where floor_plane.z > 0
+    // The sun's glitter (engine/water/unresolved_slopes.hpp): x: log of the first cutoff
+    // wavenumber, y: the log step between entries, z: 1 when the waves have slopes, w: the slopes'
+    // whole variance (S_xx + S_zz).
+    glm::vec4 glitter;
+    glm::vec4 unresolved_slopes[kUnresolvedSlopeEntries];  // (S_xx, S_xz, S_zz, k_c) per cutoff
 };
 static_assert(sizeof(FrameConstants) % 16 == 0, "std140 blocks are a multiple of 16 bytes");
 

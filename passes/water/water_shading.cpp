@@ -26,6 +26,7 @@ WaterSurfaceShading water_surface_shading(const Scene& scene) {
     shading.eye_in_water = camera_eye_in_water(scene);
     shading.fresnel = settings.fresnel;
     shading.fresnel_power = static_cast<float>(settings.fresnel_power);
+    shading.glitter = settings.glitter;
     if (settings.depth_blend) {
         shading.depth_blend = true;
         shading.water_colour = glm::vec3(settings.depth_blend->colour);
@@ -91,12 +92,14 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
             const uint32_t reflection = lookup_code(d.reflection_view, lookups.reflection_method);
             const uint32_t refraction = lookup_code(d.refraction_view, lookups.refraction_method);
             const uint32_t fresnel = static_cast<uint32_t>(shading.fresnel), depth_blend = shading.depth_blend;
-            // Constant 5, the camera's side: 0 the air, 1 the water, 2 per pixel (the mask).
+            // Constant 5, the camera's side: 0 the air, 1 the water, 2 per pixel (the mask); 6, the glitter.
             const uint32_t side = d.lighting.camera_medium ? 2u : shading.eye_in_water ? 1u : 0u;
+            const uint32_t glitter = shading.glitter;
             desc.fragment_constants.insert(desc.fragment_constants.end(),
-                                           {fresnel, depth_blend, reflection, refraction, side});
+                                           {fresnel, depth_blend, reflection, refraction, side, glitter});
             key += "/fresnel " + std::to_string(fresnel) + "/blend " + std::to_string(depth_blend) + "/lookups " +
-                   std::to_string(reflection) + std::to_string(refraction) + "/side " + std::to_string(side);
+                   std::to_string(reflection) + std::to_string(refraction) + "/side " + std::to_string(side) +
+                   "/glitter " + std::to_string(glitter);
             const Pipeline& pipeline = context.pipeline(key, desc);
             std::vector<fg::DescriptorBinding> bindings;
             d.surface.add_bindings(context, bindings);

@@ -30,6 +30,7 @@ struct WaterSurfaceShading {
     SurfaceFresnel fresnel = SurfaceFresnel::Exact;
     float fresnel_power = 4.5f;
     bool depth_blend = false;
+    bool glitter = false;  // the sun's glitter lobe (shaders/water/sun_glitter.glsl)
     glm::vec3 water_colour{0.0f, 0.2f, 0.1f};
     float blend_k = 0.5f;
     // Newton steps per pixel from the mesh to the exact surface; 0 shades the mesh as drawn.

@@ -28,6 +28,9 @@ layout(set = 0, binding = 0, std140) uniform FrameConstants {
     vec4 medium_options;      // x: 1 when the shading adds the analytic in-scatter of the sun's beam; 0 when the
                               //    godray passes supply the in-scatter instead (counted once, docs/model.md section 1)
     vec4 floor_grout;         // rgb: the grout's albedo, where floor_plane.z > 0 (receivers/floor_albedo.glsl)
+    vec4 glitter;             // x: log of the first cutoff wavenumber, y: log step, z: 1 when the waves have slopes,
+                              // w: the slopes' whole variance S_xx + S_zz
+    vec4 unresolved_slopes[16];  // (S_xx, S_xz, S_zz, k_c): water/sun_glitter.glsl, engine/water/unresolved_slopes.hpp
 } frame;
 
 // sigma_s for the analytic single scattering along view rays: zero when the godrays

@@ -15,6 +15,7 @@
 #include "common/fresnel.glsl"
 #include "common/medium.glsl"
 #include "common/sky.glsl"
+#include "water/sun_glitter.glsl"
 #include "water/camera_medium.glsl"
 #include "water/surface_refinement.glsl"
 #include "water/underwater_light.glsl"
@@ -39,6 +40,7 @@ layout(constant_id = 4) const uint REFRACTION_METHOD = 0u;
 // per pixel, camera_in_water() (the stencil split's mask, or the frame constants).
 layout(constant_id = 5) const uint CAMERA_SIDE = 2u;
 bool eye_in_water() { return CAMERA_SIDE == 2u ? camera_in_water() : CAMERA_SIDE == 1u; }
+layout(constant_id = 6) const uint GLITTER = 0u;  // effects.water.glitter: 1 the sun's glitter lobe
 
 // The surface's Fresnel split as the scene chooses it (effects.water.fresnel): the exact equations
 // (the model, docs/model.md section 2); Schlick's approximation; or Optical Phenomena c. 2008's power term
@@ -126,14 +128,15 @@ vec3 radiance_in_water(vec3 p, vec3 d, bool reflected, float weight, out float l
                                optics.e_perp0.rgb, behind);
 }
 
-// What a ray from the water's surface into the air brings back: the receiver it meets, else the sky
-// with the sun's disk.
-vec3 radiance_in_air_along(vec3 p, vec3 d, float weight) {
+// What a ray from the water's surface into the air brings back: the receiver it meets, else the sky,
+// with the sun's disk unless the glitter stands for it (`with_sun_disk`); `met_object` tells which.
+vec3 radiance_in_air_along(vec3 p, vec3 d, float weight, bool with_sun_disk, out bool met_object) {
     vec3 object;
     float distance_to_object;
     vec2 object_uv;
-    if (object_along(true, p, d, params.scene_size, weight, object, distance_to_object, object_uv)) return object;
-    return sky_radiance(d);
+    met_object = object_along(true, p, d, params.scene_size, weight, object, distance_to_object, object_uv);
+    if (met_object) return object;
+    return with_sun_disk ? sky_radiance(d) : sky_base_radiance(d);
 }
 
 // A ray reflected from the air below the horizon meets the water again, not the sky's `ground`.
@@ -150,7 +153,9 @@ vec3 water_seen_below_horizon(vec3 p, vec3 d, vec3 normal, float weight, vec3 wa
     vec3 facing = vec3(-normal.x, normal.y, -normal.z);
     if (!(dot(d, facing) < 0.0) || reflect(d, facing).y < 0.0) facing = vec3(0.0, 1.0, 0.0);
     const Fresnel f = surface_fresnel(-dot(d, facing), 1.0, n);
-    return f.R * radiance_in_air_along(q, reflect(d, facing), weight * f.R) + f.T * water_seen_from_air;
+    bool met_object;
+    return f.R * radiance_in_air_along(q, reflect(d, facing), weight * f.R, true, met_object) +
+           f.T * water_seen_from_air;
 }
 
 void main() {
@@ -161,6 +166,8 @@ void main() {
     vec3 p, normal;  // normal: toward the air
     water_surface_of_pixel(eye, v, in_position, in_normal, in_parameter, p, normal);
     float n = frame.water.y;
+    // The slopes this pixel cannot resolve (their screen derivatives need uniform control flow).
+    const vec3 unresolved = GLITTER != 0u ? pixel_unresolved_slopes(p) : vec3(0.0);
 
     if (!eye_in_water()) {
         // From the air. A wave's back face seen from above keeps a grazing cosine of 0.
@@ -183,11 +190,20 @@ void main() {
             }
 #endif
         }
+        // The sun's glitter stands for its disk in reflections where the unresolved slopes spread it
+        // more than the disk (water/sun_glitter.glsl); a reflected ray that meets a receiver hides it.
+        const bool glitter = GLITTER != 0u && glitter_replaces_disk(unresolved);
         vec3 reflected_direction = reflect(v, normal);
+        bool met_object = false;
         vec3 reflected = reflected_direction.y < 0.0
                              ? water_seen_below_horizon(p, reflected_direction, normal, f.R, transmitted)
-                             : radiance_in_air_along(p, reflected_direction, f.R);
-        out_radiance = vec4(f.R * reflected + f.T * transmitted, 1.0);
+                             : radiance_in_air_along(p, reflected_direction, f.R, !glitter, met_object);
+        vec3 sun = vec3(0.0);
+        if (glitter && !met_object) {
+            const float facet_cos = max(0.0, dot(-v, glitter_half_vector(-v, -frame.sun_direction.xyz)));
+            sun = sun_glitter_radiance(-v, normal, unresolved, surface_fresnel(facet_cos, 1.0, n).R);
+        }
+        out_radiance = vec4(f.R * reflected + f.T * transmitted + sun, 1.0);
 #ifdef VKWATER_CAUSTIC_LAYER
         out_caustic = vec4(caustic, 1.0);
 #endif

@@ -3,6 +3,7 @@
 // cosine form the shader uses) and against docs/model.md section 2's table:
 // R + T = 1, both in [0, 1], 10^4 angles from each side; TIR exactly R = 1 beyond
 // the critical angle; the tabulated air-to-water transmittances.
+#include "tests/optics/fresnel_angle_form.hpp"
 #include "tests/support/compute_runner.hpp"
 #include "tests/support/gpu_test.hpp"
 
@@ -15,20 +16,6 @@ namespace {
 constexpr double kIor = 1.333;
 constexpr uint32_t kSamples = 10000;
 constexpr int kStride = 10;
-
-// Unpolarised reflectance in the angle form: r_s = -sin(i - t) / sin(i + t),
-// r_p = tan(i - t) / tan(i + t); its limit at normal incidence is ((n1 - n2)/(n1 + n2))^2.
-double reflectance(double cos_i, double n_i, double n_t) {
-    const double sin_i = std::sqrt(std::max(0.0, 1.0 - cos_i * cos_i));
-    const double sin_t = n_i / n_t * sin_i;
-    if (sin_t >= 1.0) return 1.0;
-    if (sin_i < 1e-9) return std::pow((n_i - n_t) / (n_i + n_t), 2);
-    const double i = std::asin(sin_i), t = std::asin(sin_t);
-    if (cos_i == 0.0) return 1.0;  // grazing: both amplitudes are -1 (tan(i + t) is infinite)
-    const double rs = -std::sin(i - t) / std::sin(i + t);
-    const double rp = std::tan(i - t) / std::tan(i + t);
-    return 0.5 * (rs * rs + rp * rp);
-}
 
 // Bound on the fp32 error of the shader's R at cos_i. The arithmetic after cos_t
 // (a few multiplies, two divisions, squares) costs at most ~16 roundings of 2^-24

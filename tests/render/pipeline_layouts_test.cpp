@@ -92,7 +92,8 @@ TEST_F(PipelineLayouts, PoolShaderVariants) {
     render("pool.json", effects_on(true, {"effects.caustics.method=procedural"}));
     render("pool.json",
            effects_on(true, {"effects.reflection.method=screen_space", "effects.refraction.method=screen_space"}));
-    render("pool.json", effects_on(true, {"effects.water.fresnel=schlick", "effects.water.depth_blend={}"}));
+    render("pool.json", effects_on(true, {"effects.water.fresnel=schlick", "effects.water.depth_blend={}",
+                                          "effects.water.glitter=true"}));
     RenderOptions render_pass;
     render_pass.recording = fg::RecordingKind::RenderPassObject;
     render("pool.json", {}, render_pass);
