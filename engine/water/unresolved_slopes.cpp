@@ -103,14 +103,4 @@ UnresolvedSlopeTable unresolved_slope_table(const WaveSettings& waves) {
     return {};
 }
 
-glm::dvec3 unresolved_slope_covariance(const UnresolvedSlopeTable& table, double cutoff) {
-    if (!table.any) return glm::dvec3(0.0);
-    const double x = (std::log(cutoff) - table.log_k0) / table.log_step;
-    if (x <= 0.0) return glm::dvec3(table.entries.front());
-    if (x >= double(kUnresolvedSlopeEntries - 1)) return glm::dvec3(table.entries.back());
-    const auto i = std::size_t(x);
-    const double f = x - double(i);
-    return glm::mix(glm::dvec3(table.entries[i]), glm::dvec3(table.entries[i + 1]), f);
-}
-
 }  // namespace vkw

@@ -24,7 +24,8 @@ namespace vkw {
 inline constexpr std::size_t kUnresolvedSlopeEntries = 16;
 
 // Entry i holds, for the cutoff k_c(i) = exp(log_k0 + i * log_step): (S_xx, S_xz, S_zz, k_c),
-// from half the smallest wavenumber to 30 times the largest; outside, the end entries stand.
+// from half the smallest wavenumber to 30 times the largest; outside, the end entries stand
+// (shaders/water/sun_glitter.glsl interpolates it in log k_c).
 struct UnresolvedSlopeTable {
     std::array<glm::vec4, kUnresolvedSlopeEntries> entries{};
     double log_k0 = 0.0;
@@ -39,8 +40,5 @@ double unresolved_weight(double k_over_cutoff);
 // The table for these waves. For the FFT ocean it is kept with the spectrum it was made from
 // (shared_ocean_spectrum), so a frame computes it once per spectrum. Thread-safe.
 UnresolvedSlopeTable unresolved_slope_table(const WaveSettings& waves);
-
-// The covariance (S_xx, S_xz, S_zz) at cutoff k_c, interpolated in log k_c as the shader does.
-glm::dvec3 unresolved_slope_covariance(const UnresolvedSlopeTable& table, double cutoff);
 
 }  // namespace vkw

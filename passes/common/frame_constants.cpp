@@ -42,10 +42,15 @@ FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t
         // The fallback for frames whose camera-medium split is culled (passes/water/camera_medium.hpp
         // classifies every pixel otherwise).
         constants.camera_medium = glm::vec4(camera_eye_in_water(scene) ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
-        const UnresolvedSlopeTable slopes = unresolved_slope_table(water.waves);
-        constants.glitter = glm::vec4(static_cast<float>(slopes.log_k0), static_cast<float>(slopes.log_step),
-                                      slopes.any ? 1.0f : 0.0f, static_cast<float>(slopes.total_variance));
-        for (std::size_t i = 0; i < kUnresolvedSlopeEntries; ++i) constants.unresolved_slopes[i] = slopes.entries[i];
+        // Only the glitter reads the table (its shader variant); without it the fields stay 0.
+        if (scene.effects.water.glitter) {
+            const UnresolvedSlopeTable slopes = unresolved_slope_table(water.waves);
+            constants.glitter = glm::vec4(static_cast<float>(slopes.log_k0), static_cast<float>(slopes.log_step),
+                                          slopes.any ? 1.0f : 0.0f, static_cast<float>(slopes.total_variance));
+            for (std::size_t i = 0; i < kUnresolvedSlopeEntries; ++i) {
+                constants.unresolved_slopes[i] = slopes.entries[i];
+            }
+        }
     }
     return constants;
 }
