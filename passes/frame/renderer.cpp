@@ -15,6 +15,7 @@
 #include "passes/common/frame_constants_upload.hpp"
 #include "passes/common/frame_keys.hpp"
 #include "passes/frame/frame_needs.hpp"
+#include "passes/frame/upscale.hpp"
 #include "passes/godrays/godrays.hpp"
 #include "passes/godrays/godrays_composite.hpp"
 #include "passes/present/readback.hpp"
@@ -139,7 +140,7 @@ passes::CausticReadInputs caustic_read_inputs(const Scene& scene, double aspect,
 void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
                        uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
                        const passes::ReceiverMeshes* receivers, const FrameOutput* output, LayerReadbacks layers,
-                       passes::CausticReadRegionCache* read_regions) {
+                       passes::CausticReadRegionCache* read_regions, VkExtent2D output_size) {
     const bool caustic_layer = layers.caustic != VK_NULL_HANDLE && !output;
     const bool inscatter_layer = layers.inscatter != VK_NULL_HANDLE && !output;
     // The waves' amplitude bound, once: for the FFT ocean it builds the CPU surface.
@@ -252,18 +253,36 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
         passes::add_godray_passes(graph, {*surface, scene.water->grid_resolution, amplitude, scene.effects.godrays,
                                           width, height, inscatter_layer});
     }
+    if (output_size.width == 0) output_size = {width, height};
+    if (output_size.width != width || output_size.height != height) {
+        // The resolution scale: every image the frame hands on, stretched to the output size.
+        fg::Blackboard& board = graph.blackboard();
+        board.put(keys::kHdrColor, passes::add_upscale_pass(graph, board.get(keys::kHdrColor), output_size.width,
+                                                            output_size.height, "upscale"));
+        if (caustic_layer) {
+            board.put(keys::kCausticLayer,
+                      passes::add_upscale_pass(graph, board.get(keys::kCausticLayer), output_size.width,
+                                               output_size.height, "caustic layer upscale"));
+        }
+        if (inscatter_layer && board.has(keys::kInScatterLayer)) {
+            board.put(keys::kInScatterLayer,
+                      passes::add_upscale_pass(graph, board.get(keys::kInScatterLayer), output_size.width,
+                                               output_size.height, "in-scatter layer upscale"));
+        }
+    }
     if (output) {
         output->add_passes(graph, graph.blackboard().get(keys::kHdrColor));
         return;
     }
-    passes::add_readback_pass(graph, graph.blackboard().get(keys::kHdrColor), readback, hdr_bytes(width, height));
+    const VkDeviceSize bytes = hdr_bytes(output_size.width, output_size.height);
+    passes::add_readback_pass(graph, graph.blackboard().get(keys::kHdrColor), readback, bytes);
     if (caustic_layer) {
-        passes::add_readback_pass(graph, graph.blackboard().get(keys::kCausticLayer), layers.caustic,
-                                  hdr_bytes(width, height), "caustic layer readback");
+        passes::add_readback_pass(graph, graph.blackboard().get(keys::kCausticLayer), layers.caustic, bytes,
+                                  "caustic layer readback");
     }
     if (inscatter_layer && graph.blackboard().has(keys::kInScatterLayer)) {
-        passes::add_readback_pass(graph, graph.blackboard().get(keys::kInScatterLayer), layers.inscatter,
-                                  hdr_bytes(width, height), "in-scatter layer readback");
+        passes::add_readback_pass(graph, graph.blackboard().get(keys::kInScatterLayer), layers.inscatter, bytes,
+                                  "in-scatter layer readback");
     }
 }
 
@@ -394,15 +413,21 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
                             std::to_string(largest_grid) + ")");
         }
     }
+    if (!(options.render_scale > 0.0 && options.render_scale <= 1.0)) {
+        throw UserError("--render-scale: " + std::to_string(options.render_scale) +
+                        " is out of range (accepted: 0 < value <= 1)");
+    }
+    // The size the scene's passes render at (the frame is stretched to the options' size at its end).
+    const uint32_t width = passes::scaled_size(options.width, options.render_scale);
+    const uint32_t height = passes::scaled_size(options.height, options.render_scale);
     if (scene.water && scene.effects.caustics.splat == CausticSplat::CameraSpace) {
         // The camera-space splats' flux buffer is one storage binding.
-        const passes::CameraCausticExtent extent = passes::camera_caustic_extent(options.width, options.height);
+        const passes::CameraCausticExtent extent = passes::camera_caustic_extent(width, height);
         const VkDeviceSize range = context_.properties().limits.maxStorageBufferRange;
-        const double bytes_per_pixel =
-            double(passes::camera_caustic_flux_bytes(extent)) / (double(options.width) * options.height);
+        const double bytes_per_pixel = double(passes::camera_caustic_flux_bytes(extent)) / (double(width) * height);
         if (passes::camera_caustic_flux_bytes(extent) > range) {
             throw UserError(scene.source.string() + ": effects.caustics.splat: camera-space splats at " +
-                            std::to_string(options.width) + "x" + std::to_string(options.height) + " need " +
+                            std::to_string(width) + "x" + std::to_string(height) + " need " +
                             std::to_string(passes::camera_caustic_flux_bytes(extent) >> 20) +
                             " MiB of flux in one storage binding (accepted on '" + context_.device_name() +
                             "': up to " + std::to_string(range >> 20) + " MiB, about " +
@@ -413,8 +438,8 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
     // The CPU's share of the frame, timed from the needs' decision to the compiled graph: the
     // decision runs every frame too (it reads the camera and the waves' bounds).
     const auto declare_start = std::chrono::steady_clock::now();
-    fg::FrameNeeds needs = decide_frame_needs(scene, double(options.width) / double(options.height));
-    *constants_ = make_frame_constants(scene, options.width, options.height);
+    fg::FrameNeeds needs = decide_frame_needs(scene, double(width) / double(height));
+    *constants_ = make_frame_constants(scene, width, height);
     // Counted once (docs/model.md section 1): the godray passes, when they run, are the
     // in-scatter of sunlight, and the shading's analytic in-scatter is switched off. (An
     // effect without a decision counts as needed; godrays have passes only once decided.)
@@ -429,11 +454,12 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
     // graph's physical signature changes.
     auto graph = std::make_unique<fg::FrameGraph>(std::move(needs));
     graph->set_default_recording(options.recording);
-    build_frame_graph(*graph, scene, constants_.get(), options.width, options.height, readback.hdr.handle(), ocean,
-                      receivers, output, {readback.caustic.handle(), readback.inscatter.handle()}, &read_regions_);
+    build_frame_graph(*graph, scene, constants_.get(), width, height, readback.hdr.handle(), ocean, receivers, output,
+                      {readback.caustic.handle(), readback.inscatter.handle()}, &read_regions_,
+                      {options.width, options.height});
     // Timed frames carry the unit their times are reported in; untimed ones (tests) need none.
     if (options.timing != fg::TimingMode::None) passes::add_calibration_pass(*graph);
-    graph->compile(options.width, options.height);
+    graph->compile(width, height);
     const fg::ExecutorOptions executor_options{options.check_finite, options.timing};
     const bool reuse = frame_ && frame_->executor->can_adopt(*graph, executor_options);
     last_declare_ms_ =

@@ -35,6 +35,9 @@ struct RenderOptions {
     // Also render the in-scatter layer (keys::kInScatterLayer, passes/godrays/godrays_composite.hpp)
     // into the image's layer "inscatter" when the godrays run; a frame without them has no such layer.
     bool inscatter_layer = false;
+    // The scene's passes render at this fraction of width x height per side, in (0, 1], and the
+    // frame is stretched to width x height at its end (passes/frame/upscale.hpp), layers included.
+    double render_scale = 1.0;
 };
 
 struct RenderResult {
@@ -61,6 +64,8 @@ struct FrameOutput {
 // `layers`' buffers, when given (and no `output`), receive the caustic layer
 // (passes/caustics/caustic_layer.hpp) and the in-scatter layer (passes/godrays/godrays_composite.hpp),
 // which the frame then renders (the in-scatter layer only where the godrays run).
+// `width` x `height` is the size the scene's passes render at; `output`, when larger, the size the
+// frame's image and layers are stretched to before the readback or `output`'s passes.
 // What the photon pass's culling needs to know of the frame (passes/caustics/caustics_read_region.hpp):
 // the camera at `aspect`, the waves' bounds (`amplitude`, the slope from the wave model), the
 // lowest receiver, and from `needs` whether a ray can start in the water and whether the blur runs.
@@ -75,7 +80,8 @@ struct LayerReadbacks {
 void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
                        uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
                        const passes::ReceiverMeshes* receivers, const FrameOutput* output = nullptr,
-                       LayerReadbacks layers = {}, passes::CausticReadRegionCache* read_regions = nullptr);
+                       LayerReadbacks layers = {}, passes::CausticReadRegionCache* read_regions = nullptr,
+                       VkExtent2D output_size = {0, 0});
 
 class Renderer {
 public:

@@ -42,6 +42,10 @@ void add_image_size_options(CLI::App& command, uint32_t& width, uint32_t& height
 // command does with them.
 void add_spp_option(CLI::App& command, int64_t& spp, const std::string& how);
 
+// --render-scale S: the scene's passes render at S times the image's size per side, stretched to it
+// at the frame's end (passes/frame/upscale.hpp).
+void add_render_scale_option(CLI::App& command, double& render_scale);
+
 // A check for number options that must be above 0, with a message that says so (CLI::PositiveNumber
 // prints the whole double range). Put finite_number() before it.
 inline CLI::Validator positive_number() {

@@ -29,6 +29,8 @@ std::vector<ImageAttribute> image_attributes(const ImageProvenance& provenance, 
         attributes.push_back({"vkwater/overrides", joined});
     }
     if (!provenance.frame.empty()) attributes.push_back({"vkwater/frame", provenance.frame});
+    if (!provenance.render_scale.empty()) attributes.push_back({"vkwater/renderScale", provenance.render_scale});
+    if (!provenance.budget.empty()) attributes.push_back({"vkwater/budget", provenance.budget});
     return attributes;
 }
 

@@ -20,11 +20,14 @@ struct ImageProvenance {
     std::string device;                  // the Vulkan device, or the reference's threads
     std::string time;                    // the frame's (or the whole reference's) time, with how it was measured
     std::string frame;                   // a sequence's frame: its number, range and water time; empty otherwise
+    std::string render_scale;            // "0.5: rendered at 400x300, stretched bilinearly"; empty at 1
+    std::string budget;                  // what --budget-ms chose, as the options that repeat it; empty without
 };
 
 // software, vkwater/scene, vkwater/sceneHash (FNV-1a of the file's bytes), vkwater/camera,
 // vkwater/overrides (only when there are any), vkwater/renderer, vkwater/filter, vkwater/device,
-// vkwater/time, vkwater/frame (only in a sequence).
+// vkwater/time, vkwater/frame (only in a sequence), vkwater/renderScale (only below 1),
+// vkwater/budget (only under --budget-ms).
 std::vector<ImageAttribute> image_attributes(const ImageProvenance& provenance, const Camera& camera);
 
 // Refuses (vkw::UserError naming both filters and the file) to compare a box-filtered image with a

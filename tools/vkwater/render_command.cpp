@@ -139,8 +139,9 @@ int run_render(const RenderArgs& args) {
     char time[96];
     std::snprintf(time, sizeof time, "%.2f ms, frame %u of %u (%s)", result.timing.total_ms, args.repeat, args.repeat,
                   result.timing.method_name().c_str());
-    result.image.attributes =
-        image_attributes({args.scene, overrides, "real-time", filter.describe(), device_name, time}, scene.camera);
+    result.image.attributes = image_attributes(
+        {args.scene, overrides, "real-time", filter.describe(), device_name, time, "", render_scale_text(options)},
+        scene.camera);
     if (kind == OutputKind::Exr) {
         const ExrWriteReport report =
             write_exr(out, result.image, args.half ? ExrPixelType::Half : ExrPixelType::Float);
@@ -205,6 +206,7 @@ Run add_render_command(CLI::App& app) {
     add_spp_option(*command, args->spp,
                    "more average k^2 sub-frames shifted to the centres of the pixel's k x k strata (a box filter; the "
                    "time is their sum)");
+    add_render_scale_option(*command, args->render_scale);
     command->add_flag("--no-caustic-layer", args->no_caustic_layer,
                       "Leave out the EXR layer caustic.R/G/B (the sun's irradiance on the receiver each pixel sees "
                       "under the water), and the second colour target its passes write");

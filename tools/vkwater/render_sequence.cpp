@@ -143,8 +143,9 @@ int run_render_sequence(const RenderArgs& args) {
             const std::string frame_text = std::to_string(frame) + " of " + range.text() + " at " +
                                            format_number(args.fps) + " fps, water.time " + format_number(water_time) +
                                            " s";
-            result.image.attributes = image_attributes(
-                {args.scene, overrides, "real-time", filter.describe(), device_name, time, frame_text}, scene.camera);
+            result.image.attributes = image_attributes({args.scene, overrides, "real-time", filter.describe(),
+                                                        device_name, time, frame_text, render_scale_text(options)},
+                                                       scene.camera);
             const std::filesystem::path path = pattern.file_for(frame);
             write_exr(path, result.image, args.half ? ExrPixelType::Half : ExrPixelType::Float);
             if (args.png) {

@@ -3,6 +3,7 @@
 
 #include "engine/scene/range.hpp"
 #include "passes/frame/frame_needs.hpp"
+#include "passes/frame/upscale.hpp"
 #include "tools/vkwater/cpu_frame_estimate.hpp"
 
 #include <chrono>
@@ -23,9 +24,18 @@ RenderOptions render_options(const RenderArgs& args) {
     options.check_finite = args.check_finite;
     options.caustic_layer = !args.no_caustic_layer;
     options.inscatter_layer = !args.no_inscatter_layer;
+    options.render_scale = args.render_scale;
     options.recording =
         args.recording == "renderpass" ? fg::RecordingKind::RenderPassObject : fg::RecordingKind::DynamicRendering;
     return options;
+}
+
+std::string render_scale_text(const RenderOptions& options) {
+    if (options.render_scale == 1.0) return "";
+    return format_number(options.render_scale) + ": the scene rendered at " +
+           std::to_string(passes::scaled_size(options.width, options.render_scale)) + "x" +
+           std::to_string(passes::scaled_size(options.height, options.render_scale)) +
+           ", stretched to the image bilinearly";
 }
 
 std::unique_ptr<Context> open_render_device(const DeviceOptions& device) {

@@ -27,6 +27,7 @@ struct RenderArgs {
     bool no_inscatter_layer = false;
     uint32_t repeat = 1;
     int64_t spp = 1;
+    double render_scale = 1.0;  // RenderOptions::render_scale
     std::string recording = "dynamic";
     std::vector<std::string> overrides;
     bool allow_outside_paths = false;
@@ -44,6 +45,10 @@ struct RenderArgs {
 std::vector<std::string> applied_overrides(const RenderArgs& args);
 
 RenderOptions render_options(const RenderArgs& args);
+
+// The EXR's record of the resolution scale: "0.5: the scene rendered at 400x300, stretched to the
+// image bilinearly"; empty at 1.
+std::string render_scale_text(const RenderOptions& options);
 
 // The Vulkan device the options name, with a line saying which and how long it took.
 std::unique_ptr<Context> open_render_device(const DeviceOptions& options);

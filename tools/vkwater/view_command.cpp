@@ -57,6 +57,7 @@ Run add_view_command(CLI::App& app) {
     command->add_option("--height", args->viewer.height, "Initial window height in pixels")
         ->check(CLI::Range(1u, 16384u))
         ->capture_default_str();
+    add_render_scale_option(*command, args->viewer.render_scale);
     command->add_option("--present", args->present, "Present mode: fifo, mailbox or immediate")
         ->check(CLI::IsMember({"fifo", "mailbox", "immediate"}))
         ->capture_default_str();

@@ -361,6 +361,7 @@ fg::FrameExecutor& Viewer::prepare_scene_frame() {
     RenderOptions options;
     options.width = swapchain_->extent().width;
     options.height = swapchain_->extent().height;
+    options.render_scale = options_.render_scale;
     // The hand-off image is imported: a new one (a new size) is a new graph.
     const FrameOutput output{[this](fg::FrameGraph& graph, fg::ImageHandle hdr) {
         fg::ImportedImage target;

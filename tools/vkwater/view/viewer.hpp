@@ -24,6 +24,7 @@ struct ViewerOptions {
     std::vector<std::string> overrides;  // --set, applied in order when loading the scene
     bool allow_outside_paths = false;    // --allow-outside-paths
     uint32_t width = 800, height = 600;  // the window's initial framebuffer size
+    double render_scale = 1.0;           // RenderOptions::render_scale: the scene's fraction of the window per side
     PresentMode present = PresentMode::Fifo;
     uint32_t frames = 0;                             // stop after this many frames; 0: when the window closes
     std::filesystem::path script;                    // empty: none (view_script.hpp)
