@@ -1,0 +1,199 @@
+// The budget's controller against a scripted device: every pass costs its prior formula times a
+// factor of the device's own (not the priors': the model must fit them), the whole frame a fixed
+// fraction of the passes' sum (one submission against one per pass), with +-5% noise from a fixed
+// sequence. Per-pass timings come every 30 frames and on the frame after each change, as the
+// viewer gives them.
+#include "tools/vkwater/budget/budget_controller.hpp"
+
+#include "engine/scene/scene_loader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+namespace vkw::budget {
+namespace {
+
+constexpr uint32_t kWidth = 800, kHeight = 600;
+
+// The passes pool runs at a setting, as the renderer names them.
+std::vector<std::string> pool_passes(const Quality& q) {
+    std::vector<std::string> names = {"upload frame constants",
+                                      "scene optics",
+                                      "water surface (wave sum)",
+                                      "water mesh (wave sum)",
+                                      "caustic flux clear",
+                                      "caustic photons",
+                                      "caustic resolve",
+                                      "sky",
+                                      "water",
+                                      "floor",
+                                      "calibration",
+                                      "present handoff"};
+    if (q.godray_grid > 0) {
+        for (const char* name : {"godray depth", "godray beams", "godray clear", "godray lines", "godray resolve",
+                                 "godray blur x", "godray blur y", "godray composite"}) {
+            names.push_back(name);
+        }
+    }
+    if (q.render_scale < 1.0) names.push_back("upscale");
+    return names;
+}
+
+class ScriptedDevice {
+public:
+    explicit ScriptedDevice(const Scene& scene) : scene_(scene) {}
+    double load = 1.0;  // a step in the machine's load multiplies every pass
+
+    // This device's factor over the priors: not one number, so that the frame's mix matters.
+    static double device_factor(const std::string& pass) {
+        if (pass == "water") return 1.6;
+        if (pass == "caustic photons") return 0.7;
+        if (pass.rfind("godray", 0) == 0) return 1.3;
+        return 1.1;
+    }
+    std::vector<fg::PassTime> pass_times(const Quality& q) {
+        const CostDrivers drivers = cost_drivers(scene_, q, kWidth, kHeight);
+        std::vector<fg::PassTime> times;
+        for (const std::string& name : pool_passes(q)) {
+            const PassFormula formula = pass_formula(name);
+            const double ms = formula.ns_per_unit.empty() ? 0.1 : device_factor(name) * formula.prior_ms(drivers);
+            times.push_back({name, ms * load * noise()});
+        }
+        return times;
+    }
+    double frame_ms(const Quality& q) {
+        double sum = 0.0;
+        for (const fg::PassTime& pass : pass_times(q)) sum += pass.ms;
+        return 0.8 * sum;  // one submission: faster than one per pass
+    }
+    // The frame time without noise: what the setting really costs.
+    double true_frame_ms(const Quality& q) {
+        const uint64_t saved = step_;
+        noiseless_ = true;
+        const double ms = frame_ms(q);
+        noiseless_ = false;
+        step_ = saved;
+        return ms;
+    }
+
+private:
+    double noise() {
+        if (noiseless_) return 1.0;
+        // A fixed sequence in [0.95, 1.05]: the golden-ratio walk modulo 1.
+        step_ += 1;
+        const double u = std::fmod(0.5 + 0.6180339887498949 * double(step_), 1.0);
+        return 0.95 + 0.1 * u;
+    }
+    const Scene& scene_;
+    uint64_t step_ = 0;
+    bool noiseless_ = false;
+};
+
+struct BudgetRun {
+    std::vector<Quality> settings;  // the setting of each frame
+    uint64_t changes = 0;
+};
+
+// `frames` frames of pool under `budget_ms`; `load_at(frame)` is the machine's load.
+BudgetRun run_budget(double budget_ms, uint32_t frames, const std::function<double(uint32_t)>& load_at) {
+    static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
+    ScriptedDevice device(scene);
+    BudgetController controller(budget_ms, scene_quality(scene, true),
+                                [](const Quality& q) { return cost_drivers(scene, q, kWidth, kHeight); });
+    BudgetRun run;
+    uint64_t timing_due = 3;  // after the warm-up frames, as the viewer
+    for (uint32_t frame = 0; frame < frames; ++frame) {
+        device.load = load_at(frame);
+        run.settings.push_back(controller.current());
+        if (frame >= timing_due) {
+            controller.add_pass_times(device.pass_times(controller.current()));
+            timing_due = frame + 30;
+        }
+        if (controller.add_frame(device.frame_ms(controller.current()))) timing_due = frame + 1;
+    }
+    run.changes = controller.changes();
+    return run;
+}
+
+double true_ms(const Quality& q, double load) {
+    static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
+    ScriptedDevice device(scene);
+    device.load = load;
+    return device.true_frame_ms(q);
+}
+
+TEST(BudgetController, ConvergesUnderTheBudgetAndStays) {
+    for (double budget : {66.0, 150.0, 400.0}) {
+        const BudgetRun run = run_budget(budget, 600, [](uint32_t) { return 1.0; });
+        // Settled within 120 frames: no change after, and under the budget.
+        for (size_t f = 120; f < run.settings.size(); ++f) {
+            EXPECT_EQ(run.settings[f], run.settings.back()) << "budget " << budget << ": changed at frame " << f;
+        }
+        EXPECT_LE(true_ms(run.settings.back(), 1.0), budget) << budget;
+        // Without oscillating on the way: a handful of changes.
+        EXPECT_LE(run.changes, 6u) << budget;
+        // And it uses the budget: the scene's own settings take 550 ms here, so every budget
+        // below that must turn something down, and none may sit at a tenth of it.
+        EXPECT_GT(true_ms(run.settings.back(), 1.0), 0.25 * budget) << budget;
+    }
+}
+
+TEST(BudgetController, ReactsToAStepInLoadWithinBoundedFrames) {
+    const double budget = 100.0;
+    const uint32_t step_at = 300;
+    const BudgetRun run = run_budget(budget, 600, [](uint32_t frame) { return frame < step_at ? 1.0 : 2.0; });
+    ASSERT_LE(true_ms(run.settings[step_at - 1], 1.0), budget);
+    // The frames judged after the step: kSettleFrames to see it, then one change per settle at most.
+    const uint32_t bound = 4 * BudgetController::kSettleFrames + BudgetController::kWindowFrames;
+    EXPECT_LE(true_ms(run.settings[step_at + bound], 2.0), budget)
+        << "still over the budget " << bound << " frames after the load doubled";
+    for (size_t f = step_at + bound + 60; f < run.settings.size(); ++f) {
+        EXPECT_EQ(run.settings[f], run.settings.back()) << "changed at frame " << f;
+    }
+}
+
+TEST(BudgetController, NeverPicksASettingTheTableRanksWorseAtEqualCost) {
+    static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
+    ScriptedDevice device(scene);
+    const Quality top = scene_quality(scene, true);
+    BudgetController controller(100.0, top, [](const Quality& q) { return cost_drivers(scene, q, kWidth, kHeight); });
+    controller.add_pass_times(device.pass_times(top));
+    const std::vector<Quality> candidates = quality_candidates(top);
+    for (double limit : {20.0, 50.0, 100.0, 200.0, 400.0}) {
+        const Choice chosen = controller.choose(limit);
+        EXPECT_LE(chosen.predicted_ms, limit);
+        for (const Quality& other : candidates) {
+            const Choice alternative = controller.describe(other);
+            if (alternative.predicted_ms <= chosen.predicted_ms) {
+                EXPECT_GE(alternative.error.excess, chosen.error.excess)
+                    << describe_quality(other) << " is as cheap and ranked better than "
+                    << describe_quality(chosen.quality);
+            }
+        }
+    }
+}
+
+TEST(BudgetController, TheFittedModelPredictsTheDevice) {
+    static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
+    ScriptedDevice device(scene);
+    const Quality top = scene_quality(scene, true);
+    CostModel model;
+    const CostDrivers top_drivers = cost_drivers(scene, top, kWidth, kHeight);
+    model.observe_passes(device.pass_times(top), top_drivers);
+    model.observe_frame(device.true_frame_ms(top), top_drivers);
+    // Every candidate with the godrays on and at full scale runs the timed frame's passes: the
+    // prediction is the device's own cost within the timing's noise (5%).
+    for (const Quality& q : quality_candidates(top)) {
+        const double predicted =
+            model.predict_ms(cost_drivers(scene, q, kWidth, kHeight), q.godray_grid > 0, q.render_scale < 1.0);
+        const double truth = device.true_frame_ms(q);
+        const double tolerance = q.godray_grid > 0 && q.render_scale == 1.0 ? 0.06 : 0.15;
+        EXPECT_NEAR(predicted / truth, 1.0, tolerance) << describe_quality(q);
+    }
+}
+
+}  // namespace
+}  // namespace vkw::budget

@@ -1,0 +1,73 @@
+// The budget's candidates: each knob at most the scene's own value, every combination once, and
+// the options that name a candidate give the scene that apply_quality makes.
+#include "tools/vkwater/budget/quality.hpp"
+
+#include "engine/scene/scene_loader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+namespace vkw::budget {
+namespace {
+
+const std::filesystem::path kPool = std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json";
+
+TEST(BudgetQuality, CandidatesNeverExceedTheScenesOwnSettings) {
+    const Scene scene = load_scene(kPool);
+    const Quality top = scene_quality(scene, true);
+    EXPECT_EQ(top.photon_grid, 1024u);
+    EXPECT_EQ(top.mesh_resolution, 256u);
+    EXPECT_EQ(top.godray_grid, 64u);
+    const std::vector<Quality> candidates = quality_candidates(top);
+    // 5 scales x 4 godray settings x (grids 1024, 512, 256 with meshes 256, 128, 64, and grid 128
+    // with meshes 128 and 64: its mesh has at most 128 cells), all distinct.
+    EXPECT_EQ(candidates.size(), 5u * 4u * (3u * 3u + 2u));
+    EXPECT_NE(std::find(candidates.begin(), candidates.end(), top), candidates.end());
+    for (const Quality& q : candidates) {
+        EXPECT_LE(q.render_scale, top.render_scale);
+        EXPECT_LE(q.photon_grid, top.photon_grid);
+        EXPECT_LE(q.mesh_resolution, q.photon_grid);
+        EXPECT_LE(q.godray_grid, top.godray_grid);
+        EXPECT_EQ(std::count(candidates.begin(), candidates.end(), q), 1);
+    }
+}
+
+TEST(BudgetQuality, ASceneWithoutWaterTurnsOnlyTheResolution) {
+    Scene scene = load_scene(kPool);
+    scene.water.reset();
+    const Quality top = scene_quality(scene, false);
+    EXPECT_EQ(quality_candidates(top).size(), std::size(kRenderScales));
+}
+
+// The options a budgeted render prints, given back as --set and --render-scale, make the same scene.
+TEST(BudgetQuality, ItsOptionsGiveTheSceneApplyQualityMakes) {
+    const Scene original = load_scene(kPool);
+    const Quality top = scene_quality(original, true);
+    for (const Quality& q : {Quality{0.5, 256, 128, 0}, Quality{1.0, 512, 256, 32}, Quality{0.35, 128, 64, 16}, top}) {
+        Scene applied = original;
+        apply_quality(q, top, applied);
+        std::vector<std::string> overrides;
+        double scale = 1.0;
+        for (const std::string& argument : quality_arguments(q, top)) {
+            std::istringstream words(argument);
+            std::string option, value;
+            words >> option >> value;
+            if (option == "--set") overrides.push_back(value);
+            if (option == "--render-scale") scale = std::stod(value);
+        }
+        const Scene given = load_scene(kPool, overrides);
+        EXPECT_EQ(scale, q.render_scale);
+        EXPECT_EQ(given.water->grid_resolution, applied.water->grid_resolution);
+        EXPECT_EQ(given.water->drawn_mesh_resolution(), applied.water->drawn_mesh_resolution());
+        EXPECT_EQ(given.effects[Effect::VolumeCaustics].mode, applied.effects[Effect::VolumeCaustics].mode);
+        EXPECT_EQ(given.effects.godrays.grid, applied.effects.godrays.grid);
+        EXPECT_EQ(scene_quality(given, q.godray_grid > 0).godray_grid, q.godray_grid);
+    }
+    EXPECT_EQ(describe_arguments(quality_arguments(top, top)), "the scene's own settings");
+}
+
+}  // namespace
+}  // namespace vkw::budget

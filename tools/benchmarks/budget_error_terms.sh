@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# tools/benchmarks/budget_error_terms.sh [SCENE...]: the error table of the frame-time budget
+# (tools/vkwater/budget/error_model.hpp). For each scene (default: pool, lake and ocean, against
+# their box-filtered references in tests/references/box/, and the two showcase scenes against their
+# point-sampled ones in tests/references/showcase/), renders it at 400x300 with one quality
+# knob changed at a time from the scene's own settings, and prints one CSV row per render: the
+# knob, its value, the relMSE against the scene's box reference, and the excess over the
+# scene's own settings. The knobs and their values are the budget's candidates
+# (tools/vkwater/budget/quality.hpp): the resolution scale; the photon grid as a fraction of the
+# scene's; the water mesh's cells per side; the godray grid (0: godrays off). Writes
+# docs/sweeps/budget_error_terms.csv. About 2 min on 2 cores.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+vk=${VKWATER:-build/tools/vkwater/vkwater}
+scenes=("$@")
+[ ${#scenes[@]} -gt 0 ] || scenes=(pool lake ocean showcase/pool showcase/lagoon)
+csv=docs/sweeps/budget_error_terms.csv
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+
+reference() {  # SCENE: its box-filtered reference where there is one, else its point-sampled one
+    if [ -f "tests/references/box/$1.exr" ]; then echo "tests/references/box/$1.exr"; else echo "tests/references/$1.exr"; fi
+}
+
+relmse() {  # SCENE ARGS...: the relMSE of one render against the scene's reference
+    local scene=$1
+    shift
+    "$vk" render "scenes/$scene.json" --width 400 --height 300 --out "$out/frame.exr" \
+        --reference "$(reference "$scene")" "$@" 2>/dev/null | awk '/^error against/ {print $5; exit}' |
+        tr -d ,
+}
+
+echo "scene,knob,value,rel_mse,excess" >"$csv.tmp"
+for scene in "${scenes[@]}"; do
+    # The scene's own settings: its photon grid, the mesh it draws, its godray grid.
+    read -r grid mesh godrays < <(python3 - "scenes/$scene.json" <<'PY'
+import json, sys
+scene = json.load(open(sys.argv[1]))
+water = scene.get("water", {})
+grid = water.get("grid_resolution", 256)
+mesh = water.get("mesh_resolution", min(256, grid))
+godrays = scene.get("effects", {}).get("godrays", {}).get("grid", 64)
+print(grid, mesh, godrays)
+PY
+    )
+    base=$(relmse "$scene")
+    row() { echo "$scene,$1,$2,$3,$(python3 -c "print(f'{max(0.0, $3 - $base):.6g}')")" >>"$csv.tmp"; }
+    for scale in 1 0.75 0.5 0.35 0.25; do
+        row render_scale "$scale" "$(relmse "$scene" --render-scale "$scale")"
+    done
+    for fraction in 1 0.5 0.25 0.125; do
+        g=$(python3 -c "print(max(2, round($grid * $fraction)))")
+        m=$((mesh < g ? mesh : g))
+        row photon_grid_fraction "$fraction" \
+            "$(relmse "$scene" --set "water.grid_resolution=$g" --set "water.mesh_resolution=$m")"
+    done
+    for m in 256 128 64; do
+        [ "$m" -le "$mesh" ] || continue
+        row mesh_resolution "$m" "$(relmse "$scene" --set "water.mesh_resolution=$m")"
+    done
+    for g in 64 32 16 0; do
+        [ "$g" -le "$godrays" ] || continue
+        if [ "$g" = 0 ]; then
+            row godray_grid 0 "$(relmse "$scene" --set effects.godrays.mode=off)"
+        else
+            row godray_grid "$g" "$(relmse "$scene" --set "effects.godrays.grid=$g")"
+        fi
+    done
+done
+mv "$csv.tmp" "$csv"
+cat "$csv"

@@ -1,0 +1,82 @@
+// The frame-time budget (vkwater render/view --budget-ms): among the candidate settings
+// (quality.hpp), the one with the lowest predicted error (error_model.hpp) whose predicted time
+// (cost_model.hpp) fits the budget.
+//
+// The viewer feeds it every counted frame's interval and, every few frames, a per-pass timing;
+// it answers whether to change the setting. Changes are throttled so that the picture does not
+// flicker between settings:
+//   - a setting is judged on the median of the frames since it began, after kSettleFrames;
+//   - over the budget it steps down at once, to the best candidate predicted within
+//     kTargetFraction of it (the cheapest if none is);
+//   - it steps up only when the median stays below kUpgradeFraction of the budget for
+//     kUpgradeFrames, to a candidate predicted within kTargetFraction, and only for a lower
+//     predicted error;
+//   - a setting measured over the budget is not stepped up to again for kBanFrames frames.
+#pragma once
+
+#include "tools/vkwater/budget/cost_model.hpp"
+#include "tools/vkwater/budget/error_model.hpp"
+#include "tools/vkwater/budget/quality.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vkw::budget {
+
+struct Choice {
+    Quality quality;
+    double predicted_ms = 0.0;
+    ErrorPrediction error;
+};
+
+class BudgetController {
+public:
+    static constexpr uint32_t kSettleFrames = 6;
+    static constexpr uint32_t kWindowFrames = 15;
+    static constexpr uint32_t kUpgradeFrames = 30;
+    static constexpr uint32_t kBanFrames = 300;
+    static constexpr double kTargetFraction = 0.85;
+    static constexpr double kUpgradeFraction = 0.7;
+
+    // `drivers` gives a candidate's cost drivers (cost_drivers() for the scene and output size).
+    BudgetController(double budget_ms, const Quality& top, std::function<CostDrivers(const Quality&)> drivers);
+
+    double budget_ms() const { return budget_ms_; }
+    const Quality& current() const { return current_; }
+    const Quality& top() const { return top_; }
+    const CostModel& model() const { return model_; }
+
+    // A per-pass timing of a frame at current().
+    void add_pass_times(const std::vector<fg::PassTime>& passes);
+    // A frame's interval (or its fence time) at current(). Returns true when it changed current():
+    // the caller renders the next frame with it.
+    bool add_frame(double ms);
+
+    // The best candidate predicted within `limit_ms`, or the cheapest when none is.
+    Choice choose(double limit_ms) const;
+    Choice describe(const Quality& quality) const;  // its predicted time and error
+    // The median frame time measured at current() so far (0 before any frame).
+    double measured_ms() const;
+    uint64_t changes() const { return changes_; }
+    // "budget 66 ms: 58 ms measured, 55 predicted; relMSE +0.048 (resolution scale)".
+    std::string status() const;
+
+private:
+    void change_to(const Quality& quality);
+    double budget_ms_;
+    Quality top_;
+    std::function<CostDrivers(const Quality&)> drivers_;
+    std::vector<Quality> candidates_;
+    CostModel model_;
+    Quality current_;
+    std::vector<double> frames_at_current_;
+    uint64_t frame_ = 0;
+    uint64_t changes_ = 0;
+    std::map<size_t, uint64_t> banned_until_;  // candidate index -> frame
+};
+
+}  // namespace vkw::budget

@@ -1,0 +1,171 @@
+// The budget's cost model (cost_model.hpp).
+#include "tools/vkwater/budget/cost_model.hpp"
+
+#include "passes/frame/upscale.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vkw::budget {
+namespace {
+
+double& at(CostDrivers& drivers, Driver driver) { return drivers[static_cast<size_t>(driver)]; }
+double at(const CostDrivers& drivers, Driver driver) { return drivers[static_cast<size_t>(driver)]; }
+
+struct KnownPass {
+    const char* name;
+    PassFormula formula;
+};
+
+// Prior rates on lavapipe (Mesa 22.3, 2 cores), from `vkwater render scenes/pool.json --repeat 2`
+// at 800x600 and 400x300 with mesh resolutions 256 and 64 (docs/performance.md "The frame-time
+// budget"). Only their ratios matter once a frame has been timed; a GPU refits every factor.
+const std::vector<KnownPass>& known_passes() {
+    using D = Driver;
+    static const std::vector<KnownPass> table = {
+        {"water", {{{D::Pixels, 130.0}, {D::MeshTriangles, 300.0}}}},
+        {"camera medium", {{{D::Pixels, 30.0}, {D::MeshTriangles, 100.0}}}},
+        {"sky", {{{D::Pixels, 20.0}}}},
+        {"floor", {{{D::Pixels, 5.0}}}},
+        {"receivers", {{{D::Pixels, 40.0}}}},
+        {"refraction view", {{{D::Pixels, 50.0}}}},
+        {"mirrored reflection view", {{{D::Pixels, 50.0}}}},
+        {"calibration", {{{D::Pixels, 2.0}}}},
+        {"water surface (wave sum)", {{{D::SurfaceVertices, 20.0}}}},
+        {"water surface (ocean grid)", {{{D::SurfaceVertices, 20.0}}}},
+        {"water mesh (wave sum)", {{{D::MeshVertices, 21.0}}}},
+        {"water mesh (ocean grid)", {{{D::MeshVertices, 21.0}}}},
+        {"caustic photons", {{{D::Photons, 250.0}}}},
+        {"caustic flux clear", {{{D::MapTexels, 2.3}}}},
+        {"caustic resolve", {{{D::MapTexels, 18.0}}}},
+        {"caustic blur x", {{{D::MapTexels, 5.0}}}},
+        {"caustic blur y", {{{D::MapTexels, 5.0}}}},
+        {"godray lines", {{{D::BeamColumns, 46.0}}, true}},
+        {"godray beams", {{{D::Beams, 190.0}}, true}},
+        {"godray depth", {{{D::GodrayPixels, 34.0}}, true}},
+        {"godray clear", {{{D::GodrayPixels, 5.0}}, true}},
+        {"godray resolve", {{{D::GodrayPixels, 180.0}}, true}},
+        {"godray blur x", {{{D::GodrayPixels, 32.0}}, true}},
+        {"godray blur y", {{{D::GodrayPixels, 32.0}}, true}},
+        {"godray composite", {{{D::Pixels, 32.0}}, true}},
+        {"upscale", {{{D::OutputPixels, 4.0}}, false, true}},
+        {"caustic layer upscale", {{{D::OutputPixels, 4.0}}, false, true}},
+        {"in-scatter layer upscale", {{{D::OutputPixels, 4.0}}, false, true}},
+        {"readback", {{{D::OutputPixels, 2.0}}}},
+        {"caustic layer readback", {{{D::OutputPixels, 2.0}}}},
+        {"in-scatter layer readback", {{{D::OutputPixels, 2.0}}}},
+        {"present handoff", {{{D::OutputPixels, 2.0}}}},
+    };
+    return table;
+}
+
+bool runs(const PassFormula& formula, bool godrays, bool upscale) {
+    return (godrays || !formula.godray) && (upscale || !formula.upscale);
+}
+
+}  // namespace
+
+CostDrivers cost_drivers(const Scene& scene, const Quality& quality, uint32_t width, uint32_t height) {
+    CostDrivers drivers{};
+    const double scaled_width = passes::scaled_size(width, quality.render_scale);
+    const double scaled_height = passes::scaled_size(height, quality.render_scale);
+    at(drivers, Driver::Pixels) = scaled_width * scaled_height;
+    at(drivers, Driver::OutputPixels) = double(width) * height;
+    if (scene.water && quality.photon_grid > 0) {
+        const double grid = quality.photon_grid;
+        const double mesh = quality.mesh_resolution;
+        at(drivers, Driver::SurfaceVertices) = (grid + 1.0) * (grid + 1.0);
+        at(drivers, Driver::MeshVertices) = (mesh + 1.0) * (mesh + 1.0);
+        at(drivers, Driver::MeshTriangles) = 2.0 * mesh * mesh;
+        const double photons_per_side = grid * scene.effects.caustics.sub_photons;
+        at(drivers, Driver::Photons) = photons_per_side * photons_per_side;
+        const double texels_per_side = std::max(1.0, std::round(grid * scene.effects.caustics.map_scale));
+        at(drivers, Driver::MapTexels) = texels_per_side * texels_per_side;
+    }
+    if (quality.godray_grid > 0) {
+        const double beams = double(quality.godray_grid) * quality.godray_grid;
+        const double godray_scale = scene.effects.godrays.resolution_scale;
+        at(drivers, Driver::Beams) = beams;
+        at(drivers, Driver::BeamColumns) = beams * std::max(1.0, std::round(godray_scale * scaled_width));
+        at(drivers, Driver::GodrayPixels) = at(drivers, Driver::Pixels) * godray_scale * godray_scale;
+    }
+    return drivers;
+}
+
+double PassFormula::prior_ms(const CostDrivers& drivers) const {
+    double ns = 0.0;
+    for (const auto& [driver, rate] : ns_per_unit) ns += rate * at(drivers, driver);
+    return ns * 1e-6;
+}
+
+PassFormula pass_formula(const std::string& pass) {
+    for (const KnownPass& known : known_passes()) {
+        if (pass == known.name) return known.formula;
+    }
+    return {};
+}
+
+void CostModel::observe_passes(const std::vector<fg::PassTime>& passes, const CostDrivers& drivers) {
+    passes_.clear();  // the frame's pass list is the one to predict from
+    for (const fg::PassTime& pass : passes) {
+        FittedPass fitted;
+        fitted.formula = pass_formula(pass.pass);
+        const double prior = fitted.formula.prior_ms(drivers);
+        if (prior > 0.0) {
+            fitted.factor = pass.ms / prior;
+        } else {
+            fitted.formula = {};
+            fitted.fixed_ms = pass.ms;
+        }
+        passes_[pass.pass] = fitted;
+    }
+}
+
+void CostModel::observe_frame(double ms, const CostDrivers& drivers) {
+    bool godrays = false, upscale = false;
+    for (const auto& [name, pass] : passes_) {
+        godrays = godrays || pass.formula.godray;
+        upscale = upscale || pass.formula.upscale;
+    }
+    const double passes = predict_passes_ms(drivers, godrays, upscale);
+    if (passes > 0.0 && ms > 0.0) frame_factor_ = ms / passes;
+}
+
+double CostModel::typical_factor() const {
+    std::vector<double> factors;
+    for (const auto& [name, pass] : passes_) {
+        if (!pass.formula.ns_per_unit.empty()) factors.push_back(pass.factor);
+    }
+    if (factors.empty()) return 1.0;
+    std::nth_element(factors.begin(), factors.begin() + factors.size() / 2, factors.end());
+    return factors[factors.size() / 2];
+}
+
+double CostModel::predict_passes_ms(const CostDrivers& drivers, bool godrays, bool upscale) const {
+    double ms = 0.0;
+    bool has_godrays = false, has_upscale = false;
+    for (const auto& [name, pass] : passes_) {
+        has_godrays = has_godrays || pass.formula.godray;
+        has_upscale = has_upscale || pass.formula.upscale;
+        if (!runs(pass.formula, godrays, upscale)) continue;
+        ms += pass.formula.ns_per_unit.empty() ? pass.fixed_ms : pass.factor * pass.formula.prior_ms(drivers);
+    }
+    // Passes the timed frame did not run (godrays it had turned off, the upscale at full
+    // resolution): their priors, at the factor typical of this device.
+    if ((godrays && !has_godrays) || (upscale && !has_upscale)) {
+        const double factor = typical_factor();
+        for (const KnownPass& known : known_passes()) {
+            const bool missing =
+                (godrays && !has_godrays && known.formula.godray) ||
+                (upscale && !has_upscale && known.formula.upscale && std::string(known.name) == "upscale");
+            if (missing) ms += factor * known.formula.prior_ms(drivers);
+        }
+    }
+    return ms;
+}
+
+double CostModel::predict_ms(const CostDrivers& drivers, bool godrays, bool upscale) const {
+    return frame_factor_ * predict_passes_ms(drivers, godrays, upscale);
+}
+
+}  // namespace vkw::budget

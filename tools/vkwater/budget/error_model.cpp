@@ -1,0 +1,88 @@
+// The budget's error table (error_model.hpp).
+#include "tools/vkwater/budget/error_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace vkw::budget {
+namespace {
+
+struct Entry {
+    double value;
+    double excess;  // the largest relMSE excess over pool, lake, ocean, showcase/pool, showcase/lagoon
+};
+
+// docs/sweeps/budget_error_terms.csv, the largest excess of each knob's value over its scenes
+// (tests/budget/error_model_test.cpp checks that this table is that file's).
+const std::vector<Entry>& table(Knob knob) {
+    static const std::vector<Entry> render_scale = {
+        {1.0, 0.0}, {0.75, 0.0132873}, {0.5, 0.0481425}, {0.35, 0.0834085}, {0.25, 0.119518}};
+    static const std::vector<Entry> photon_grid_fraction = {
+        {1.0, 0.0}, {0.5, 0.0188401}, {0.25, 0.0226672}, {0.125, 0.0612845}};
+    static const std::vector<Entry> mesh_resolution = {{256, 0.0}, {128, 0.0022011}, {64, 0.0150635}};
+    static const std::vector<Entry> godray_grid = {
+        {64, 0.00216019}, {32, 0.00337094}, {16, 0.00301504}, {0, 0.00357104}};
+    switch (knob) {
+        case Knob::RenderScale: return render_scale;
+        case Knob::PhotonGridFraction: return photon_grid_fraction;
+        case Knob::MeshResolution: return mesh_resolution;
+        case Knob::GodrayGrid: return godray_grid;
+    }
+    return render_scale;
+}
+
+}  // namespace
+
+const char* knob_name(Knob knob) {
+    switch (knob) {
+        case Knob::RenderScale: return "render_scale";
+        case Knob::PhotonGridFraction: return "photon_grid_fraction";
+        case Knob::MeshResolution: return "mesh_resolution";
+        case Knob::GodrayGrid: return "godray_grid";
+    }
+    return "";
+}
+
+double error_term(Knob knob, double value) {
+    const std::vector<Entry>& entries = table(knob);
+    // Above the table's first (finest) step nothing is lost: the measured scenes' own settings.
+    const bool finer = knob == Knob::GodrayGrid ? value > entries.front().value : value >= entries.front().value;
+    if (finer && value != 0.0) return knob == Knob::GodrayGrid ? 0.0 : entries.front().excess;
+    const Entry* nearest = &entries.front();
+    for (const Entry& entry : entries) {
+        if (std::abs(entry.value - value) < std::abs(nearest->value - value)) nearest = &entry;
+    }
+    return nearest->excess;
+}
+
+ErrorPrediction predict_error(const Quality& quality, const Quality& top) {
+    std::vector<std::pair<const char*, double>> terms = {
+        {"resolution scale",
+         error_term(Knob::RenderScale, quality.render_scale) - error_term(Knob::RenderScale, top.render_scale)},
+    };
+    if (top.photon_grid > 0) {
+        terms.push_back(
+            {"photon grid", error_term(Knob::PhotonGridFraction, double(quality.photon_grid) / top.photon_grid)});
+        terms.push_back({"water mesh", error_term(Knob::MeshResolution, quality.mesh_resolution) -
+                                           error_term(Knob::MeshResolution, top.mesh_resolution)});
+    }
+    if (top.godray_grid > 0) {
+        terms.push_back({"godrays", error_term(Knob::GodrayGrid, quality.godray_grid) -
+                                        error_term(Knob::GodrayGrid, top.godray_grid)});
+    }
+    ErrorPrediction prediction;
+    double largest = 0.0;
+    for (const auto& [name, term] : terms) {
+        const double added = std::max(0.0, term);
+        prediction.excess += added;
+        if (added > largest) {
+            largest = added;
+            prediction.dominant = name;
+        }
+    }
+    return prediction;
+}
+
+}  // namespace vkw::budget

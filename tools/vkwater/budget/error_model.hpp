@@ -1,0 +1,32 @@
+// The frame-time budget's error model: how much error a candidate setting adds to the scene's own
+// settings, without a reference. One term per knob, looked up in a table measured once on the
+// five scenes that have a reference (tools/benchmarks/budget_error_terms.sh writes
+// docs/sweeps/budget_error_terms.csv): each entry is the largest relMSE excess any of those scenes
+// showed with that knob alone at that value, so the table errs towards overestimating. Terms add
+// up: docs/performance.md "The frame-time budget" checks that against combined settings.
+//
+// What it is not yet: the error bounds derived per effect (the mesh's sag in pixels, the photons
+// seen per texel) with fitted weights, which would follow a scene's wavelengths and depths
+// instead of the measured scenes' worst case.
+#pragma once
+
+#include "tools/vkwater/budget/quality.hpp"
+
+#include <string>
+
+namespace vkw::budget {
+
+struct ErrorPrediction {
+    double excess = 0.0;   // predicted relMSE above the scene's own settings
+    std::string dominant;  // the knob whose term is largest ("" when none adds any)
+};
+
+ErrorPrediction predict_error(const Quality& quality, const Quality& top);
+
+// One knob's term: the table's excess at `value` (a resolution scale, a photon grid fraction, a
+// mesh resolution, a godray grid), the nearest step's where the table has no such value.
+enum class Knob : uint8_t { RenderScale, PhotonGridFraction, MeshResolution, GodrayGrid };
+double error_term(Knob knob, double value);
+const char* knob_name(Knob knob);  // its name in docs/sweeps/budget_error_terms.csv
+
+}  // namespace vkw::budget

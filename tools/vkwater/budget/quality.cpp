@@ -1,0 +1,117 @@
+// The budget's knobs and candidates (quality.hpp).
+#include "tools/vkwater/budget/quality.hpp"
+
+#include "engine/scene/range.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vkw::budget {
+namespace {
+
+// Each knob's values for a scene whose own value is `own`: its own, then the steps below it.
+std::vector<uint32_t> steps_below(uint32_t own, const uint32_t* steps, size_t count) {
+    std::vector<uint32_t> values = {own};
+    for (size_t i = 0; i < count; ++i) {
+        if (steps[i] < own) values.push_back(steps[i]);
+    }
+    return values;
+}
+
+}  // namespace
+
+Quality scene_quality(const Scene& scene, bool godrays_run) {
+    Quality quality;
+    if (scene.water) {
+        quality.photon_grid = scene.water->grid_resolution;
+        quality.mesh_resolution = scene.water->drawn_mesh_resolution();
+        if (godrays_run && scene.effects.godrays.method == GodrayMethod::Lines) {
+            quality.godray_grid = scene.effects.godrays.grid;
+        }
+    }
+    return quality;
+}
+
+std::vector<Quality> quality_candidates(const Quality& top) {
+    std::vector<uint32_t> grids = {top.photon_grid};
+    if (top.photon_grid > 0) {
+        for (double fraction : kPhotonGridFractions) {
+            const auto grid = std::max<uint32_t>(2, static_cast<uint32_t>(std::lround(top.photon_grid * fraction)));
+            if (grid < top.photon_grid) grids.push_back(grid);
+        }
+    }
+    const std::vector<uint32_t> meshes =
+        top.mesh_resolution > 0 ? steps_below(top.mesh_resolution, kMeshResolutions, std::size(kMeshResolutions))
+                                : std::vector<uint32_t>{0};
+    const std::vector<uint32_t> godrays = top.godray_grid > 0
+                                              ? steps_below(top.godray_grid, kGodrayGrids, std::size(kGodrayGrids))
+                                              : std::vector<uint32_t>{0};
+    std::vector<Quality> candidates;
+    for (double scale : kRenderScales) {
+        for (uint32_t grid : grids) {
+            for (uint32_t mesh : meshes) {
+                // The mesh is drawn from the surface grid: it has at most as many cells.
+                const uint32_t drawn = std::min(mesh, grid);
+                for (uint32_t godray : godrays) {
+                    const Quality candidate{scale, grid, drawn, godray};
+                    if (std::find(candidates.begin(), candidates.end(), candidate) == candidates.end()) {
+                        candidates.push_back(candidate);
+                    }
+                }
+            }
+        }
+    }
+    return candidates;
+}
+
+void apply_quality(const Quality& quality, const Quality& top, Scene& scene) {
+    if (scene.water && quality.photon_grid > 0) {
+        scene.water->grid_resolution = quality.photon_grid;
+        scene.water->mesh_resolution = quality.mesh_resolution;
+    }
+    if (top.godray_grid > 0) {
+        if (quality.godray_grid == 0) {
+            scene.effects[Effect::VolumeCaustics].mode = EffectMode::Off;
+        } else {
+            scene.effects.godrays.grid = quality.godray_grid;
+        }
+    }
+}
+
+std::vector<std::string> quality_arguments(const Quality& quality, const Quality& top) {
+    std::vector<std::string> arguments;
+    if (quality.render_scale != top.render_scale)
+        arguments.push_back("--render-scale " + format_number(quality.render_scale));
+    if (quality.photon_grid != top.photon_grid) {
+        arguments.push_back("--set water.grid_resolution=" + std::to_string(quality.photon_grid));
+    }
+    if (quality.mesh_resolution != top.mesh_resolution || quality.photon_grid != top.photon_grid) {
+        if (quality.mesh_resolution != 0) {
+            arguments.push_back("--set water.mesh_resolution=" + std::to_string(quality.mesh_resolution));
+        }
+    }
+    if (quality.godray_grid != top.godray_grid) {
+        arguments.push_back(quality.godray_grid == 0
+                                ? "--set effects.godrays.mode=off"
+                                : "--set effects.godrays.grid=" + std::to_string(quality.godray_grid));
+    }
+    return arguments;
+}
+
+std::string describe_arguments(const std::vector<std::string>& arguments) {
+    std::string text;
+    for (const std::string& argument : arguments) text += (text.empty() ? "" : " ") + argument;
+    return text.empty() ? "the scene's own settings" : text;
+}
+
+std::string describe_quality(const Quality& quality) {
+    std::string text = "scale " + format_number(quality.render_scale);
+    if (quality.photon_grid > 0) {
+        text +=
+            ", photons " + std::to_string(quality.photon_grid) + "^2, mesh " + std::to_string(quality.mesh_resolution);
+    }
+    if (quality.godray_grid > 0) text += ", godrays " + std::to_string(quality.godray_grid) + "^2";
+    return text;
+}
+
+}  // namespace vkw::budget

@@ -1,0 +1,54 @@
+// The knobs the frame-time budget turns (vkwater render/view --budget-ms), and the candidate
+// settings it chooses among. A setting is at most the scene's own: the budget only ever gives
+// up quality to meet a time, never adds what the scene file did not ask for.
+//
+// The knobs, by what they save (docs/performance.md "The frame-time budget"):
+//   render_scale     every per-pixel pass, as its square (passes/frame/upscale.hpp)
+//   photon_grid      water.grid_resolution: the photons traced, the surface grid, the caustic map
+//   mesh_resolution  water.mesh_resolution: the triangles the water and its stencil draw
+//   godray_grid      effects.godrays.grid, the beams walked; 0 turns the godrays off
+#pragma once
+
+#include "engine/scene/scene.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vkw::budget {
+
+struct Quality {
+    double render_scale = 1.0;
+    uint32_t photon_grid = 0;      // 0: the scene has no water
+    uint32_t mesh_resolution = 0;  // 0: the scene has no water
+    uint32_t godray_grid = 0;      // 0: no godrays (the scene's decision, or turned off)
+    bool operator==(const Quality&) const = default;
+};
+
+// The scene's own settings at full resolution. `godrays_run`: the frame's needs decide that the
+// godray lines run (a scene without them has nothing to turn down there).
+Quality scene_quality(const Scene& scene, bool godrays_run);
+
+// Every setting the budget may choose for a scene whose own settings are `top`: each knob at
+// its own value or one of the lower steps below, all combinations. `top` is among them.
+std::vector<Quality> quality_candidates(const Quality& top);
+
+// The scene with `quality`'s knobs (the resolution scale is the renderer's option, not the scene's).
+void apply_quality(const Quality& quality, const Quality& top, Scene& scene);
+
+// The command-line options that give `quality` explicitly, relative to the scene's own settings
+// `top`: "--render-scale 0.5 --set water.grid_resolution=256 ..." ("" when it is `top`). Given to
+// vkwater render, they reproduce the budget's image bit for bit.
+std::vector<std::string> quality_arguments(const Quality& quality, const Quality& top);
+std::string describe_arguments(const std::vector<std::string>& arguments);
+
+// A short line for the overlay: "scale 0.5, photons 256^2, mesh 128, godrays 32^2".
+std::string describe_quality(const Quality& quality);
+
+// The steps each knob may take (the error table, error_model.hpp, has a term for each).
+inline constexpr double kRenderScales[] = {1.0, 0.75, 0.5, 0.35, 0.25};
+inline constexpr double kPhotonGridFractions[] = {1.0, 0.5, 0.25, 0.125};
+inline constexpr uint32_t kMeshResolutions[] = {256, 128, 64};
+inline constexpr uint32_t kGodrayGrids[] = {64, 32, 16, 0};
+
+}  // namespace vkw::budget
