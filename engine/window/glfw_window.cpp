@@ -74,6 +74,12 @@ VkExtent2D GlfwWindow::framebuffer_size() const {
     return {static_cast<uint32_t>(std::max(width, 0)), static_cast<uint32_t>(std::max(height, 0))};
 }
 
+double GlfwWindow::refresh_interval_ms() const {
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+    return mode && mode->refreshRate > 0 ? 1000.0 / mode->refreshRate : 0.0;
+}
+
 bool GlfwWindow::should_close() const { return glfwWindowShouldClose(window_); }
 void GlfwWindow::request_close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 void GlfwWindow::poll_events() { glfwPollEvents(); }

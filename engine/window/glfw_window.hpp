@@ -34,6 +34,8 @@ public:
     VkSurfaceKHR create_surface(VkInstance instance) const;
 
     VkExtent2D framebuffer_size() const;  // pixels; 0 x 0 while minimised
+    // The primary monitor's refresh interval in milliseconds; 0 when the window system does not say.
+    double refresh_interval_ms() const;
     bool should_close() const;
     void request_close();
     void poll_events();

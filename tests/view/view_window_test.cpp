@@ -334,6 +334,30 @@ TEST_F(ViewWindow, ASlowSceneIsAnnouncedOnACpuDevice) {
     EXPECT_EQ(ordinary.output.find("note:"), std::string::npos) << ordinary.output;
 }
 
+// With a frame-time budget the viewer says so at start, changes its settings under validation
+// (each change makes new targets and pipelines) and prints where it ended; a scripted run has no
+// budget unless asked, so that it repeats. Which settings a budget reaches depends on the
+// machine's speed: pool's own take 20 to 40 ms a frame at 320x240 here, so 5 ms must turn
+// something down on lavapipe (on a GPU the scene's own settings may fit, and the test says so).
+TEST_F(ViewWindow, ABudgetIsAnnouncedChangesSettingsCleanlyAndEndsWithThem) {
+    const std::string view = "view " + kScenes + "pool.json --width 320 --height 240 --validation";
+    const Outcome budgeted = vkwater(view + " --frames 60 --budget-ms 5");
+    ASSERT_EQ(budgeted.exit_code, 0) << budgeted.output;
+    EXPECT_NE(budgeted.output.find("budget: 5 ms a frame (--budget-ms;"), std::string::npos) << budgeted.output;
+    const size_t settings = budgeted.output.find("settings at exit: ");
+    ASSERT_NE(settings, std::string::npos) << budgeted.output;
+    if (budgeted.output.find("llvmpipe") != std::string::npos) {
+        EXPECT_EQ(budgeted.output.find("settings at exit: the scene's own settings"), std::string::npos)
+            << budgeted.output;
+    }
+    const Outcome scripted = vkwater(view + " --frames 2");
+    ASSERT_EQ(scripted.exit_code, 0) << scripted.output;
+    EXPECT_EQ(scripted.output.find("budget"), std::string::npos) << scripted.output;
+    const Outcome both = vkwater(view + " --frames 2 --budget-ms 5 --render-scale 0.5");
+    EXPECT_EQ(both.exit_code, 1) << both.output;
+    EXPECT_NE(both.output.find("--budget-ms chooses the resolution scale itself"), std::string::npos) << both.output;
+}
+
 TEST_F(ViewWindow, MissingSceneIsAUserError) {
     const Outcome run = vkwater("view /nonexistent/scene.json --frames 1");
     EXPECT_EQ(run.exit_code, 1) << run.output;

@@ -15,6 +15,7 @@
 #include "tools/vkwater/commands.hpp"
 #include "tools/vkwater/console.hpp"
 #include "tools/vkwater/image_provenance.hpp"
+#include "tools/vkwater/render_budget.hpp"
 #include "tools/vkwater/render_setup.hpp"
 
 #include <algorithm>
@@ -58,13 +59,33 @@ std::string inscatter_text(const Scene& scene, const RenderOptions& options, con
     return error.text(true);
 }
 
+// The budget chooses the resolution scale, at one sample per pixel, for one image.
+void require_budget_alone(const RenderArgs& args) {
+    if (args.render_scale != 1.0) {
+        throw UserError("--render-scale " + format_number(args.render_scale) +
+                        ": --budget-ms chooses the resolution scale itself (accepted: one of the two)");
+    }
+    if (args.spp != 1) {
+        throw UserError("--spp " + std::to_string(args.spp) +
+                        ": --budget-ms chooses its settings at one sample per pixel (accepted: --spp 1 with it)");
+    }
+}
+
 int run_render(const RenderArgs& args) {
-    if (!args.frames.empty()) return run_render_sequence(args);
+    if (!args.frames.empty()) {
+        if (args.budget_ms > 0.0) {
+            throw UserError(
+                "--budget-ms: a sequence renders every frame at the same settings (accepted: "
+                "--budget-ms on one frame, then its printed settings with --frames)");
+        }
+        return run_render_sequence(args);
+    }
     if (!args.shard.empty())
         throw UserError("--shard '" + args.shard + "': a shard is a share of a sequence's frames; give --frames too");
     const auto start = std::chrono::steady_clock::now();
     const std::vector<std::string> overrides = applied_overrides(args);
-    const Scene scene = load_command_scene(args.scene, overrides, args.allow_outside_paths);
+    Scene scene = load_command_scene(args.scene, overrides, args.allow_outside_paths);
+    if (args.budget_ms > 0.0) require_budget_alone(args);
     const PixelFilter filter = pixel_filter_from_spp(args.spp);
     // Fail on an unwritable output before spending time on the render. Without --out, the scene's
     // name with .exr, in the current folder.
@@ -94,11 +115,18 @@ int run_render(const RenderArgs& args) {
     // -v: the frame's decisions, as the renderer takes them (vkwater passes prints the whole graph).
     if (verbose()) std::printf("%s", decide_frame_needs(scene, double(args.width) / args.height).describe().c_str());
 
-    const RenderOptions options = render_options(args);
+    RenderOptions options = render_options(args);
     RenderResult result;
     double declare_ms = 0.0;
+    std::string budget_record;
     {
         Renderer renderer(*context);  // its pipelines must go before the device
+        if (args.budget_ms > 0.0) {
+            // The budget's choice leaves the scene and the resolution scale at its settings.
+            const BudgetedSettings chosen = choose_budgeted_settings(renderer, scene, options, args.budget_ms);
+            std::printf("%s\n", chosen.describe(args.budget_ms).c_str());
+            budget_record = chosen.describe(args.budget_ms) + " on " + context->device_name();
+        }
         // After the first second only: most renders take less (console.hpp).
         Progress progress("render", 1.0);
         const double sub_frames = double(args.repeat) * filter.samples;
@@ -139,9 +167,9 @@ int run_render(const RenderArgs& args) {
     char time[96];
     std::snprintf(time, sizeof time, "%.2f ms, frame %u of %u (%s)", result.timing.total_ms, args.repeat, args.repeat,
                   result.timing.method_name().c_str());
-    result.image.attributes = image_attributes(
-        {args.scene, overrides, "real-time", filter.describe(), device_name, time, "", render_scale_text(options)},
-        scene.camera);
+    result.image.attributes = image_attributes({args.scene, overrides, "real-time", filter.describe(), device_name,
+                                                time, "", render_scale_text(options), budget_record},
+                                               scene.camera);
     if (kind == OutputKind::Exr) {
         const ExrWriteReport report =
             write_exr(out, result.image, args.half ? ExrPixelType::Half : ExrPixelType::Float);
@@ -207,6 +235,12 @@ Run add_render_command(CLI::App& app) {
                    "more average k^2 sub-frames shifted to the centres of the pixel's k x k strata (a box filter; the "
                    "time is their sum)");
     add_render_scale_option(*command, args->render_scale);
+    command
+        ->add_option("--budget-ms", args->budget_ms,
+                     "Choose the settings (resolution scale, photon grid, water mesh, godrays) with the lowest "
+                     "expected error whose measured frame time fits this many milliseconds; prints them and "
+                     "records them in the EXR (given explicitly they give the same image)")
+        ->check(finite_number() & positive_number());
     command->add_flag("--no-caustic-layer", args->no_caustic_layer,
                       "Leave out the EXR layer caustic.R/G/B (the sun's irradiance on the receiver each pixel sees "
                       "under the water), and the second colour target its passes write");

@@ -28,6 +28,7 @@ struct RenderArgs {
     uint32_t repeat = 1;
     int64_t spp = 1;
     double render_scale = 1.0;  // RenderOptions::render_scale
+    double budget_ms = 0.0;     // --budget-ms: 0 none; else the budget chooses the settings (render_budget.hpp)
     std::string recording = "dynamic";
     std::vector<std::string> overrides;
     bool allow_outside_paths = false;

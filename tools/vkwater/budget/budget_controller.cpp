@@ -53,6 +53,13 @@ void BudgetController::add_pass_times(const std::vector<fg::PassTime>& passes) {
     model_.observe_passes(passes, drivers_(current_));
 }
 
+void BudgetController::add_timed_frame(const std::vector<fg::PassTime>& passes, double frame_ms) {
+    const CostDrivers drivers = drivers_(current_);
+    model_.observe_passes(passes, drivers);
+    model_.observe_frame(frame_ms, drivers);
+    frames_at_current_.push_back(frame_ms);
+}
+
 double BudgetController::measured_ms() const {
     const size_t count = std::min<size_t>(frames_at_current_.size(), kWindowFrames);
     return median_of(std::vector<double>(frames_at_current_.end() - count, frames_at_current_.end()));

@@ -56,6 +56,12 @@ public:
     // the caller renders the next frame with it.
     bool add_frame(double ms);
 
+    // A one-shot plan (vkwater render --budget-ms): a timed frame at current() fits the model, and
+    // plan() is the candidate to render next; set_current() makes it current().
+    void add_timed_frame(const std::vector<fg::PassTime>& passes, double frame_ms);
+    Choice plan() const { return choose(kTargetFraction * budget_ms_); }
+    void set_current(const Quality& quality) { change_to(quality); }
+
     // The best candidate predicted within `limit_ms`, or the cheapest when none is.
     Choice choose(double limit_ms) const;
     Choice describe(const Quality& quality) const;  // its predicted time and error

@@ -42,6 +42,7 @@ void draw_stats_overlay(const OverlayInfo& info) {
     } else {
         ImGui::TextUnformatted("caustic photons: none (caustics culled)");
     }
+    for (const std::string& line : info.budget) ImGui::TextWrapped("%s", line.c_str());
     if (!info.message.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.5f, 0.4f, 1.0f));
         ImGui::TextWrapped("%s", info.message.c_str());

@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace vkw::window {
 
@@ -31,6 +32,9 @@ struct OverlayInfo {
     glm::dvec3 camera_position{0.0};
     bool camera_in_water = false;
     bool paused = false;
+    // With a frame-time budget: its status (budget, measured and predicted time, predicted error and
+    // what dominates it) and the settings it chose; empty without one.
+    std::vector<std::string> budget;
 };
 
 void draw_stats_overlay(const OverlayInfo& info);

@@ -5,6 +5,7 @@
 #include "engine/core/errors.hpp"
 #include "engine/image/file_paths.hpp"
 #include "engine/scene/pixel_filter.hpp"
+#include "engine/scene/range.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
 #include "engine/vk/shader_module.hpp"
@@ -12,9 +13,11 @@
 #include "engine/window/glfw_window.hpp"
 #include "engine/window/imgui_layer.hpp"
 #include "engine/window/screenshot.hpp"
+#include "passes/frame/frame_needs.hpp"
 #include "passes/frame/renderer.hpp"
 #include "passes/present/present_graph.hpp"
 #include "passes/present/present_handoff.hpp"
+#include "tools/vkwater/budget/budget_controller.hpp"
 #include "tools/vkwater/image_provenance.hpp"
 #include "tools/vkwater/view/camera_controller.hpp"
 #include "tools/vkwater/view/frame_stats.hpp"
@@ -96,6 +99,10 @@ private:
     fg::FrameExecutor& prepare_scene_frame();
     bool render_frame();
     void note_pass_list(const fg::FrameGraph& graph);
+    double choose_budget_ms() const;
+    void start_budget();
+    void apply_budget(RenderOptions& options);
+    void feed_budget(double interval_ms);
 
     ViewerOptions options_;
     bool scripted_ = false;
@@ -129,7 +136,10 @@ private:
     size_t next_command_ = 0;
 
     FrameStats stats_;
-    uint64_t frame_ = 0;  // frames shown so far: the number of the next one
+    double budget_ms_ = 0.0;                             // 0: no budget
+    std::unique_ptr<budget::BudgetController> budget_;   // with a budget, for the scene as loaded
+    EffectMode godray_mode_at_load_ = EffectMode::Auto;  // the budget turns the godrays off and on again
+    uint64_t frame_ = 0;                                 // frames shown so far: the number of the next one
     uint64_t timing_due_ = FrameStats::kWarmupFrames;
     std::vector<std::string> pass_list_;           // the scene graph's living passes, last frame
     fg::FrameExecutor* scene_executor_ = nullptr;  // valid until the next prepare or reload
@@ -168,6 +178,14 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options) {
         const std::string note = options_.cpu_frame_note(*scene_, options_.width, options_.height);
         if (!note.empty()) std::printf("note: %s\n", note.c_str());
     }
+    budget_ms_ = choose_budget_ms();
+    if (budget_ms_ > 0.0) {
+        std::printf("budget: %.4g ms a frame (%s; --budget-ms sets another, 0 turns it off)\n", budget_ms_,
+                    options_.budget_ms          ? "--budget-ms"
+                    : context_->is_cpu_device() ? "the default on a CPU device"
+                                                : "the default: the display's refresh interval");
+        start_budget();
+    }
     swapchain_ =
         std::make_unique<Swapchain>(*context_, window_->create_surface(context_->instance()), options_.present);
     frames_ = std::make_unique<FramesInFlight>(*context_);
@@ -198,6 +216,55 @@ void Viewer::load_scene_state() {
     previous_scene_ = std::move(scene_);
     scene_ = std::move(next);
     panel_.reset(*scene_);
+    if (budget_ms_ > 0.0) start_budget();  // the budget's top is the scene as loaded
+}
+
+double Viewer::choose_budget_ms() const {
+    if (options_.budget_ms) {
+        if (*options_.budget_ms > 0.0 && options_.render_scale != 1.0) {
+            throw UserError("--render-scale " + format_number(options_.render_scale) +
+                            ": --budget-ms chooses the resolution scale itself (accepted: one of the two)");
+        }
+        return *options_.budget_ms;
+    }
+    // Scripted runs repeat exactly (a screenshot equals vkwater render's image); a chosen
+    // resolution scale is the user's setting.
+    if (scripted_ || options_.render_scale != 1.0) return 0.0;
+    if (context_->is_cpu_device()) return kCpuBudgetMs;
+    const double refresh = window_->refresh_interval_ms();
+    return refresh > 0.0 ? refresh : kGpuBudgetMs;
+}
+
+void Viewer::start_budget() {
+    godray_mode_at_load_ = scene_->effects[Effect::VolumeCaustics].mode;
+    const fg::FrameNeeds needs = decide_frame_needs(*scene_, double(options_.width) / double(options_.height));
+    const fg::EffectDecision* godrays = needs.find(Effect::VolumeCaustics);
+    budget_ = std::make_unique<budget::BudgetController>(
+        budget_ms_, budget::scene_quality(*scene_, godrays && godrays->needed), [this](const budget::Quality& q) {
+            const VkExtent2D extent = swapchain_ ? swapchain_->extent() : VkExtent2D{options_.width, options_.height};
+            return budget::cost_drivers(*scene_, q, extent.width, extent.height);
+        });
+}
+
+void Viewer::apply_budget(RenderOptions& options) {
+    if (!budget_) return;
+    // The budget's knobs over the scene as loaded (or as the panel left it): every frame, since a
+    // panel edit or a reload may have changed them.
+    scene_->effects[Effect::VolumeCaustics].mode = godray_mode_at_load_;
+    budget::apply_quality(budget_->current(), budget_->top(), *scene_);
+    options.render_scale = budget_->current().render_scale;
+}
+
+void Viewer::feed_budget(double interval_ms) {
+    if (!budget_ || !budget_->add_frame(interval_ms)) return;
+    // A new setting: its first frame makes new pipelines and targets (not a fair interval), and
+    // its passes are timed soon, to refit the cost model where it now runs.
+    disturbed_ = true;
+    if (options_.timing_every > 0) timing_due_ = std::min(timing_due_, frame_ + 3);
+    if (cli::verbose()) {
+        std::printf("frame %llu: budget chose %s (%s)\n", static_cast<unsigned long long>(frame_),
+                    budget::describe_quality(budget_->current()).c_str(), budget_->status().c_str());
+    }
 }
 
 std::unique_ptr<PresentGraph> Viewer::make_present_graph(uint32_t image, VkBuffer readback) {
@@ -323,6 +390,7 @@ void Viewer::update_ui_and_camera(double wall_dt) {
         info.camera_position = camera_.position();
         info.camera_in_water = scene_->water && camera_.position().y < scene_->water->level;
         info.paused = controls_.paused;
+        if (budget_) info.budget = {budget_->status(), budget::describe_quality(budget_->current())};
         draw_stats_overlay(info);
     }
     imgui_->finish_frame();
@@ -362,6 +430,7 @@ fg::FrameExecutor& Viewer::prepare_scene_frame() {
     options.width = swapchain_->extent().width;
     options.height = swapchain_->extent().height;
     options.render_scale = options_.render_scale;
+    apply_budget(options);
     // The hand-off image is imported: a new one (a new size) is a new graph.
     const FrameOutput output{[this](fg::FrameGraph& graph, fg::ImageHandle hdr) {
         fg::ImportedImage target;
@@ -430,15 +499,23 @@ bool Viewer::render_frame() {
     if (timing || screenshot) {
         frames_->wait_all();
         if (timing) {
-            stats_.add_timing(report, ms_since(submitted), frame_);
+            const double present_ms = ms_since(submitted);
+            stats_.add_timing(report, present_ms, frame_);
+            if (budget_) {
+                std::vector<fg::PassTime> passes = report.passes;
+                passes.push_back({"present", present_ms, 0});  // the window's own passes: a fixed cost
+                budget_->add_pass_times(passes);
+            }
             timing_due_ = frame_ + options_.timing_every;
         }
     }
     const SwapchainStatus presented = swapchain_->present(frames_->rendered(image), image);
 
     if (last_frame_start_) {
-        stats_.add_frame(std::chrono::duration<double, std::milli>(start - *last_frame_start_).count(),
-                         !last_frame_waited_);
+        const double interval = std::chrono::duration<double, std::milli>(start - *last_frame_start_).count();
+        const bool counted = !last_frame_waited_ && frame_ > FrameStats::kWarmupFrames;
+        stats_.add_frame(interval, !last_frame_waited_);
+        if (counted) feed_budget(interval);
     }
     last_frame_start_ = start;
     last_frame_waited_ = timing || screenshot || disturbed_;
@@ -493,6 +570,11 @@ void Viewer::run() {
     }
     frames_->wait_all();
     std::printf("%s", stats_.summary(frame_).c_str());
+    if (budget_) {
+        std::printf("%s; settings at exit: %s (%llu changes)\n", budget_->status().c_str(),
+                    budget::describe_arguments(budget::quality_arguments(budget_->current(), budget_->top())).c_str(),
+                    static_cast<unsigned long long>(budget_->changes()));
+    }
     std::printf("frame graph device objects made %zu times; present mode %s\n", renderer_->realize_count(),
                 present_mode_name(swapchain_->mode()));
     // The view at exit as vkwater render takes it, to render the same picture offscreen.

@@ -14,10 +14,16 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace vkw::window {
+
+// The default frame-time budget on a CPU device (lavapipe): 15 frames a second.
+inline constexpr double kCpuBudgetMs = 66.0;
+// On a GPU when the window system does not say its refresh interval: 60 Hz.
+inline constexpr double kGpuBudgetMs = 16.7;
 
 struct ViewerOptions {
     std::filesystem::path scene;
@@ -25,6 +31,9 @@ struct ViewerOptions {
     bool allow_outside_paths = false;    // --allow-outside-paths
     uint32_t width = 800, height = 600;  // the window's initial framebuffer size
     double render_scale = 1.0;           // RenderOptions::render_scale: the scene's fraction of the window per side
+    // The frame-time budget (tools/vkwater/budget/): nullopt for the default (the present interval
+    // on a GPU, kCpuBudgetMs on a CPU device, none in scripted runs or with a render_scale); 0 none.
+    std::optional<double> budget_ms;
     PresentMode present = PresentMode::Fifo;
     uint32_t frames = 0;                             // stop after this many frames; 0: when the window closes
     std::filesystem::path script;                    // empty: none (view_script.hpp)
