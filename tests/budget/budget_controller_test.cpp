@@ -6,6 +6,7 @@
 #include "tools/vkwater/budget/budget_controller.hpp"
 
 #include "engine/scene/scene_loader.hpp"
+#include "passes/frame/frame_needs.hpp"
 
 #include <gtest/gtest.h>
 
@@ -101,7 +102,7 @@ struct BudgetRun {
 BudgetRun run_budget(double budget_ms, uint32_t frames, const std::function<double(uint32_t)>& load_at) {
     static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
     ScriptedDevice device(scene);
-    BudgetController controller(budget_ms, scene_quality(scene, true),
+    BudgetController controller(budget_ms, scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0)),
                                 [](const Quality& q) { return cost_drivers(scene, q, kWidth, kHeight); });
     BudgetRun run;
     uint64_t timing_due = 3;  // after the warm-up frames, as the viewer
@@ -158,7 +159,7 @@ TEST(BudgetController, ReactsToAStepInLoadWithinBoundedFrames) {
 TEST(BudgetController, NeverPicksASettingTheTableRanksWorseAtEqualCost) {
     static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
     ScriptedDevice device(scene);
-    const Quality top = scene_quality(scene, true);
+    const Quality top = scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0));
     BudgetController controller(100.0, top, [](const Quality& q) { return cost_drivers(scene, q, kWidth, kHeight); });
     controller.add_pass_times(device.pass_times(top));
     const std::vector<Quality> candidates = quality_candidates(top);
@@ -179,7 +180,7 @@ TEST(BudgetController, NeverPicksASettingTheTableRanksWorseAtEqualCost) {
 TEST(BudgetController, TheFittedModelPredictsTheDevice) {
     static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
     ScriptedDevice device(scene);
-    const Quality top = scene_quality(scene, true);
+    const Quality top = scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0));
     CostModel model;
     const CostDrivers top_drivers = cost_drivers(scene, top, kWidth, kHeight);
     model.observe_passes(device.pass_times(top), top_drivers);

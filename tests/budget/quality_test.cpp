@@ -3,6 +3,7 @@
 #include "tools/vkwater/budget/quality.hpp"
 
 #include "engine/scene/scene_loader.hpp"
+#include "passes/frame/frame_needs.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,13 +15,15 @@ namespace vkw::budget {
 namespace {
 
 const std::filesystem::path kPool = std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json";
+const std::filesystem::path kLake = std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/lake.json";
 
 TEST(BudgetQuality, CandidatesNeverExceedTheScenesOwnSettings) {
     const Scene scene = load_scene(kPool);
-    const Quality top = scene_quality(scene, true);
+    const Quality top = scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0));
     EXPECT_EQ(top.photon_grid, 1024u);
     EXPECT_EQ(top.mesh_resolution, 256u);
     EXPECT_EQ(top.godray_grid, 64u);
+    EXPECT_EQ(top.lookup_steps, 0u) << "pool's water looks up no scene view";
     const std::vector<Quality> candidates = quality_candidates(top);
     // 5 scales x 4 godray settings x (grids 1024, 512, 256 with meshes 256, 128, 64, and grid 128
     // with meshes 128 and 64: its mesh has at most 128 cells), all distinct.
@@ -38,15 +41,20 @@ TEST(BudgetQuality, CandidatesNeverExceedTheScenesOwnSettings) {
 TEST(BudgetQuality, ASceneWithoutWaterTurnsOnlyTheResolution) {
     Scene scene = load_scene(kPool);
     scene.water.reset();
-    const Quality top = scene_quality(scene, false);
+    const Quality top = scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0));
     EXPECT_EQ(quality_candidates(top).size(), std::size(kRenderScales));
 }
 
-// The options a budgeted render prints, given back as --set and --render-scale, make the same scene.
+// The options a budgeted render prints, given back as --set and --render-scale, make the same scene
+// (lake: it has every knob, the scene lookups' steps too).
 TEST(BudgetQuality, ItsOptionsGiveTheSceneApplyQualityMakes) {
-    const Scene original = load_scene(kPool);
-    const Quality top = scene_quality(original, true);
-    for (const Quality& q : {Quality{0.5, 256, 128, 0}, Quality{1.0, 512, 256, 32}, Quality{0.35, 128, 64, 16}, top}) {
+    const Scene original = load_scene(kLake);
+    const Quality top = scene_quality(original, decide_frame_needs(original, 4.0 / 3.0));
+    ASSERT_EQ(top.scene_lookups, 2u) << "lake looks up both scene views";
+    ASSERT_EQ(top.lookup_steps, 64u);
+    ASSERT_EQ(top.godray_grid, 64u);
+    for (const Quality& q :
+         {Quality{0.5, 128, 128, 0, 8, 2}, Quality{1.0, 256, 256, 32, 64, 2}, Quality{0.35, 64, 64, 16, 16, 2}, top}) {
         Scene applied = original;
         apply_quality(q, top, applied);
         std::vector<std::string> overrides;
@@ -58,13 +66,17 @@ TEST(BudgetQuality, ItsOptionsGiveTheSceneApplyQualityMakes) {
             if (option == "--set") overrides.push_back(value);
             if (option == "--render-scale") scale = std::stod(value);
         }
-        const Scene given = load_scene(kPool, overrides);
+        const Scene given = load_scene(kLake, overrides);
         EXPECT_EQ(scale, q.render_scale);
         EXPECT_EQ(given.water->grid_resolution, applied.water->grid_resolution);
         EXPECT_EQ(given.water->drawn_mesh_resolution(), applied.water->drawn_mesh_resolution());
         EXPECT_EQ(given.effects[Effect::VolumeCaustics].mode, applied.effects[Effect::VolumeCaustics].mode);
         EXPECT_EQ(given.effects.godrays.grid, applied.effects.godrays.grid);
-        EXPECT_EQ(scene_quality(given, q.godray_grid > 0).godray_grid, q.godray_grid);
+        EXPECT_EQ(given.effects[Effect::Reflection].max_steps, applied.effects[Effect::Reflection].max_steps);
+        EXPECT_EQ(given.effects[Effect::Refraction].max_steps, applied.effects[Effect::Refraction].max_steps);
+        Quality in_the_scene = q;  // the resolution scale is the renderer's option, not the scene's
+        in_the_scene.render_scale = 1.0;
+        EXPECT_EQ(scene_quality(given, decide_frame_needs(given, 4.0 / 3.0)), in_the_scene);
     }
     EXPECT_EQ(describe_arguments(quality_arguments(top, top)), "the scene's own settings");
 }

@@ -7,7 +7,8 @@
 # knob, its value, the relMSE against the scene's box reference, and the excess over the
 # scene's own settings. The knobs and their values are the budget's candidates
 # (tools/vkwater/budget/quality.hpp): the resolution scale; the photon grid as a fraction of the
-# scene's; the water mesh's cells per side; the godray grid (0: godrays off). Writes
+# scene's; the water mesh's cells per side; the godray grid (0: godrays off); and, where the water
+# looks the scene up (`vkwater passes` says reflection or refraction: on), the lookups' steps. Writes
 # docs/sweeps/budget_error_terms.csv. About 2 min on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -58,6 +59,13 @@ PY
         [ "$m" -le "$mesh" ] || continue
         row mesh_resolution "$m" "$(relmse "$scene" --set "water.mesh_resolution=$m")"
     done
+    needs=$("$vk" passes "scenes/$scene.json" --width 400 --height 300)
+    if grep -qE '^  (reflection|refraction): on' <<<"$needs"; then
+        for steps in 16 8; do
+            row lookup_steps "$steps" "$(relmse "$scene" --set "effects.reflection.max_steps=$steps" \
+                --set "effects.refraction.max_steps=$steps")"
+        done
+    fi
     for g in 64 32 16 0; do
         [ "$g" -le "$godrays" ] || continue
         if [ "$g" = 0 ]; then

@@ -29,8 +29,7 @@ std::string BudgetedSettings::describe(double budget_ms) const {
 BudgetedSettings choose_budgeted_settings(Renderer& renderer, Scene& scene, RenderOptions& options, double budget_ms) {
     const Scene original = scene;
     const fg::FrameNeeds needs = decide_frame_needs(scene, double(options.width) / double(options.height));
-    const fg::EffectDecision* godrays = needs.find(Effect::VolumeCaustics);
-    const budget::Quality top = budget::scene_quality(scene, godrays && godrays->needed);
+    const budget::Quality top = budget::scene_quality(scene, needs);
     const uint32_t width = options.width, height = options.height;
     budget::BudgetController controller(budget_ms, top, [&original, width, height](const budget::Quality& q) {
         return budget::cost_drivers(original, q, width, height);

@@ -18,12 +18,12 @@ struct KnownPass {
 };
 
 // Prior rates on lavapipe (Mesa 22.3, 2 cores), from `vkwater render scenes/pool.json --repeat 2`
-// at 800x600 and 400x300 with mesh resolutions 256 and 64 (docs/performance.md "The frame-time
-// budget"). Only their ratios matter once a frame has been timed; a GPU refits every factor.
+// at 800x600 and 400x300 with mesh resolutions 256 and 64; the lookup steps from lake's water
+// pass at max_steps 64, 16 and 8 (docs/performance.md "The frame-time budget"). Only their ratios matter once a frame has been timed; a GPU refits every factor.
 const std::vector<KnownPass>& known_passes() {
     using D = Driver;
     static const std::vector<KnownPass> table = {
-        {"water", {{{D::Pixels, 130.0}, {D::MeshTriangles, 300.0}}}},
+        {"water", {{{D::Pixels, 130.0}, {D::MeshTriangles, 300.0}, {D::LookupSteps, 1.6}}}},
         {"camera medium", {{{D::Pixels, 30.0}, {D::MeshTriangles, 100.0}}}},
         {"sky", {{{D::Pixels, 20.0}}}},
         {"floor", {{{D::Pixels, 5.0}}}},
@@ -82,6 +82,7 @@ CostDrivers cost_drivers(const Scene& scene, const Quality& quality, uint32_t wi
         const double texels_per_side = std::max(1.0, std::round(grid * scene.effects.caustics.map_scale));
         at(drivers, Driver::MapTexels) = texels_per_side * texels_per_side;
     }
+    at(drivers, Driver::LookupSteps) = at(drivers, Driver::Pixels) * quality.scene_lookups * quality.lookup_steps;
     if (quality.godray_grid > 0) {
         const double beams = double(quality.godray_grid) * quality.godray_grid;
         const double godray_scale = scene.effects.godrays.resolution_scale;

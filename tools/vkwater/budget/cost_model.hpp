@@ -35,6 +35,7 @@ enum class Driver : uint8_t {
     Beams,            // godray beams
     BeamColumns,      // godray beams times the godray image's columns (a beam's walk)
     GodrayPixels,     // the godray image's pixels
+    LookupSteps,      // pixels times scene lookups times their most steps
     Count
 };
 

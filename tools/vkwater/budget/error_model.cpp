@@ -24,7 +24,9 @@ const std::vector<Entry>& table(Knob knob) {
     static const std::vector<Entry> mesh_resolution = {{256, 0.0}, {128, 0.0022011}, {64, 0.0150635}};
     static const std::vector<Entry> godray_grid = {
         {64, 0.00216019}, {32, 0.00337094}, {16, 0.00301504}, {0, 0.00357104}};
+    static const std::vector<Entry> lookup_steps = {{64, 0.0}, {16, 0.0}, {8, 0.0025276}};
     switch (knob) {
+        case Knob::LookupSteps: return lookup_steps;
         case Knob::RenderScale: return render_scale;
         case Knob::PhotonGridFraction: return photon_grid_fraction;
         case Knob::MeshResolution: return mesh_resolution;
@@ -41,6 +43,7 @@ const char* knob_name(Knob knob) {
         case Knob::PhotonGridFraction: return "photon_grid_fraction";
         case Knob::MeshResolution: return "mesh_resolution";
         case Knob::GodrayGrid: return "godray_grid";
+        case Knob::LookupSteps: return "lookup_steps";
     }
     return "";
 }
@@ -67,6 +70,10 @@ ErrorPrediction predict_error(const Quality& quality, const Quality& top) {
             {"photon grid", error_term(Knob::PhotonGridFraction, double(quality.photon_grid) / top.photon_grid)});
         terms.push_back({"water mesh", error_term(Knob::MeshResolution, quality.mesh_resolution) -
                                            error_term(Knob::MeshResolution, top.mesh_resolution)});
+    }
+    if (top.lookup_steps > 0) {
+        terms.push_back({"scene lookup steps", error_term(Knob::LookupSteps, quality.lookup_steps) -
+                                                   error_term(Knob::LookupSteps, top.lookup_steps)});
     }
     if (top.godray_grid > 0) {
         terms.push_back({"godrays", error_term(Knob::GodrayGrid, quality.godray_grid) -

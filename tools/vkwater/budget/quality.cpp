@@ -20,13 +20,20 @@ std::vector<uint32_t> steps_below(uint32_t own, const uint32_t* steps, size_t co
 
 }  // namespace
 
-Quality scene_quality(const Scene& scene, bool godrays_run) {
+Quality scene_quality(const Scene& scene, const fg::FrameNeeds& needs) {
     Quality quality;
     if (scene.water) {
         quality.photon_grid = scene.water->grid_resolution;
         quality.mesh_resolution = scene.water->drawn_mesh_resolution();
-        if (godrays_run && scene.effects.godrays.method == GodrayMethod::Lines) {
+        const fg::EffectDecision* godrays = needs.find(Effect::VolumeCaustics);
+        if (godrays && godrays->needed && scene.effects.godrays.method == GodrayMethod::Lines) {
             quality.godray_grid = scene.effects.godrays.grid;
+        }
+        for (Effect lookup : {Effect::Reflection, Effect::Refraction}) {
+            const fg::EffectDecision* decision = needs.find(lookup);
+            if (!decision || !decision->needed) continue;
+            ++quality.scene_lookups;
+            quality.lookup_steps = std::max<uint32_t>(quality.lookup_steps, scene.effects[lookup].max_steps);
         }
     }
     return quality;
@@ -46,6 +53,9 @@ std::vector<Quality> quality_candidates(const Quality& top) {
     const std::vector<uint32_t> godrays = top.godray_grid > 0
                                               ? steps_below(top.godray_grid, kGodrayGrids, std::size(kGodrayGrids))
                                               : std::vector<uint32_t>{0};
+    const std::vector<uint32_t> lookups = top.lookup_steps > 0
+                                              ? steps_below(top.lookup_steps, kLookupSteps, std::size(kLookupSteps))
+                                              : std::vector<uint32_t>{0};
     std::vector<Quality> candidates;
     for (double scale : kRenderScales) {
         for (uint32_t grid : grids) {
@@ -53,9 +63,11 @@ std::vector<Quality> quality_candidates(const Quality& top) {
                 // The mesh is drawn from the surface grid: it has at most as many cells.
                 const uint32_t drawn = std::min(mesh, grid);
                 for (uint32_t godray : godrays) {
-                    const Quality candidate{scale, grid, drawn, godray};
-                    if (std::find(candidates.begin(), candidates.end(), candidate) == candidates.end()) {
-                        candidates.push_back(candidate);
+                    for (uint32_t steps : lookups) {
+                        const Quality candidate{scale, grid, drawn, godray, steps, top.scene_lookups};
+                        if (std::find(candidates.begin(), candidates.end(), candidate) == candidates.end()) {
+                            candidates.push_back(candidate);
+                        }
                     }
                 }
             }
@@ -74,6 +86,11 @@ void apply_quality(const Quality& quality, const Quality& top, Scene& scene) {
             scene.effects[Effect::VolumeCaustics].mode = EffectMode::Off;
         } else {
             scene.effects.godrays.grid = quality.godray_grid;
+        }
+    }
+    if (quality.lookup_steps < top.lookup_steps) {
+        for (Effect lookup : {Effect::Reflection, Effect::Refraction}) {
+            scene.effects[lookup].max_steps = static_cast<int>(quality.lookup_steps);
         }
     }
 }
@@ -95,6 +112,12 @@ std::vector<std::string> quality_arguments(const Quality& quality, const Quality
                                 ? "--set effects.godrays.mode=off"
                                 : "--set effects.godrays.grid=" + std::to_string(quality.godray_grid));
     }
+    if (quality.lookup_steps < top.lookup_steps) {
+        for (const char* lookup : {"reflection", "refraction"}) {
+            arguments.push_back(std::string("--set effects.") + lookup +
+                                ".max_steps=" + std::to_string(quality.lookup_steps));
+        }
+    }
     return arguments;
 }
 
@@ -111,6 +134,7 @@ std::string describe_quality(const Quality& quality) {
             ", photons " + std::to_string(quality.photon_grid) + "^2, mesh " + std::to_string(quality.mesh_resolution);
     }
     if (quality.godray_grid > 0) text += ", godrays " + std::to_string(quality.godray_grid) + "^2";
+    if (quality.lookup_steps > 0) text += ", lookup steps " + std::to_string(quality.lookup_steps);
     return text;
 }
 

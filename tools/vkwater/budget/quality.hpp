@@ -7,8 +7,11 @@
 //   photon_grid      water.grid_resolution: the photons traced, the surface grid, the caustic map
 //   mesh_resolution  water.mesh_resolution: the triangles the water and its stencil draw
 //   godray_grid      effects.godrays.grid, the beams walked; 0 turns the godrays off
+//   lookup_steps     effects.reflection/refraction.max_steps: each pixel's refinement or march
+//                    steps through the scene views, where the water looks the scene up
 #pragma once
 
+#include "engine/framegraph/frame_needs.hpp"
 #include "engine/scene/scene.hpp"
 
 #include <cstdint>
@@ -22,18 +25,22 @@ struct Quality {
     uint32_t photon_grid = 0;      // 0: the scene has no water
     uint32_t mesh_resolution = 0;  // 0: the scene has no water
     uint32_t godray_grid = 0;      // 0: no godrays (the scene's decision, or turned off)
+    uint32_t lookup_steps = 0;     // 0: the water looks no scene view up
+    uint32_t scene_lookups = 0;    // how many of reflection and refraction look the scene up (0 to 2)
     bool operator==(const Quality&) const = default;
 };
 
-// The scene's own settings at full resolution. `godrays_run`: the frame's needs decide that the
-// godray lines run (a scene without them has nothing to turn down there).
-Quality scene_quality(const Scene& scene, bool godrays_run);
+// The scene's own settings at full resolution, for the effects `needs` decides to run (a scene
+// without godrays or scene lookups has nothing to turn down there). Its lookup steps are the larger
+// of reflection's and refraction's.
+Quality scene_quality(const Scene& scene, const fg::FrameNeeds& needs);
 
 // Every setting the budget may choose for a scene whose own settings are `top`: each knob at
 // its own value or one of the lower steps below, all combinations. `top` is among them.
 std::vector<Quality> quality_candidates(const Quality& top);
 
 // The scene with `quality`'s knobs (the resolution scale is the renderer's option, not the scene's).
+// Below the top's lookup steps both reflection and refraction take `quality.lookup_steps`.
 void apply_quality(const Quality& quality, const Quality& top, Scene& scene);
 
 // The command-line options that give `quality` explicitly, relative to the scene's own settings
@@ -50,5 +57,6 @@ inline constexpr double kRenderScales[] = {1.0, 0.75, 0.5, 0.35, 0.25};
 inline constexpr double kPhotonGridFractions[] = {1.0, 0.5, 0.25, 0.125};
 inline constexpr uint32_t kMeshResolutions[] = {256, 128, 64};
 inline constexpr uint32_t kGodrayGrids[] = {64, 32, 16, 0};
+inline constexpr uint32_t kLookupSteps[] = {16, 8};
 
 }  // namespace vkw::budget

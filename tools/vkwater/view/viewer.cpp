@@ -136,10 +136,13 @@ private:
     size_t next_command_ = 0;
 
     FrameStats stats_;
-    double budget_ms_ = 0.0;                             // 0: no budget
-    std::unique_ptr<budget::BudgetController> budget_;   // with a budget, for the scene as loaded
-    EffectMode godray_mode_at_load_ = EffectMode::Auto;  // the budget turns the godrays off and on again
-    uint64_t frame_ = 0;                                 // frames shown so far: the number of the next one
+    double budget_ms_ = 0.0;                            // 0: no budget
+    std::unique_ptr<budget::BudgetController> budget_;  // with a budget, for the scene as loaded
+    // What the budget changes and must give back when it steps up: the godrays' mode (it turns
+    // them off) and the scene lookups' steps, as loaded.
+    EffectMode godray_mode_at_load_ = EffectMode::Auto;
+    int reflection_steps_at_load_ = 0, refraction_steps_at_load_ = 0;
+    uint64_t frame_ = 0;  // frames shown so far: the number of the next one
     uint64_t timing_due_ = FrameStats::kWarmupFrames;
     std::vector<std::string> pass_list_;           // the scene graph's living passes, last frame
     fg::FrameExecutor* scene_executor_ = nullptr;  // valid until the next prepare or reload
@@ -237,10 +240,11 @@ double Viewer::choose_budget_ms() const {
 
 void Viewer::start_budget() {
     godray_mode_at_load_ = scene_->effects[Effect::VolumeCaustics].mode;
+    reflection_steps_at_load_ = scene_->effects[Effect::Reflection].max_steps;
+    refraction_steps_at_load_ = scene_->effects[Effect::Refraction].max_steps;
     const fg::FrameNeeds needs = decide_frame_needs(*scene_, double(options_.width) / double(options_.height));
-    const fg::EffectDecision* godrays = needs.find(Effect::VolumeCaustics);
     budget_ = std::make_unique<budget::BudgetController>(
-        budget_ms_, budget::scene_quality(*scene_, godrays && godrays->needed), [this](const budget::Quality& q) {
+        budget_ms_, budget::scene_quality(*scene_, needs), [this](const budget::Quality& q) {
             const VkExtent2D extent = swapchain_ ? swapchain_->extent() : VkExtent2D{options_.width, options_.height};
             return budget::cost_drivers(*scene_, q, extent.width, extent.height);
         });
@@ -251,6 +255,8 @@ void Viewer::apply_budget(RenderOptions& options) {
     // The budget's knobs over the scene as loaded (or as the panel left it): every frame, since a
     // panel edit or a reload may have changed them.
     scene_->effects[Effect::VolumeCaustics].mode = godray_mode_at_load_;
+    scene_->effects[Effect::Reflection].max_steps = reflection_steps_at_load_;
+    scene_->effects[Effect::Refraction].max_steps = refraction_steps_at_load_;
     budget::apply_quality(budget_->current(), budget_->top(), *scene_);
     options.render_scale = budget_->current().render_scale;
 }
