@@ -19,7 +19,8 @@ struct KnownPass {
 
 // Prior rates on lavapipe (Mesa 22.3, 2 cores), from `vkwater render scenes/pool.json --repeat 2`
 // at 800x600 and 400x300 with mesh resolutions 256 and 64; the lookup steps from lake's water
-// pass at max_steps 64, 16 and 8 (docs/performance.md "The frame-time budget"). Only their ratios matter once a frame has been timed; a GPU refits every factor.
+// pass at max_steps 64, 16 and 8 (docs/performance.md "The frame-time budget"). Only their
+// ratios matter once a frame has been timed; a GPU refits every factor.
 const std::vector<KnownPass>& known_passes() {
     using D = Driver;
     static const std::vector<KnownPass> table = {
