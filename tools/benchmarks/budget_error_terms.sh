@@ -9,7 +9,7 @@
 # (tools/vkwater/budget/quality.hpp): the resolution scale; the photon grid as a fraction of the
 # scene's; the water mesh's cells per side; the godray grid (0: godrays off); and, where the water
 # looks the scene up (`vkwater passes` says reflection or refraction: on), the lookups' steps. Writes
-# docs/sweeps/budget_error_terms.csv. About 2 min on 2 cores.
+# docs/sweeps/budget_error_terms.csv. About 4 min on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 vk=${VKWATER:-build/tools/vkwater/vkwater}
