@@ -237,7 +237,8 @@ Run add_render_command(CLI::App& app) {
     add_render_scale_option(*command, args->render_scale);
     command
         ->add_option("--budget-ms", args->budget_ms,
-                     "Choose the settings (resolution scale, photon grid, water mesh, godrays, scene lookup steps) with the lowest "
+                     "Choose the settings (resolution scale, photon grid, water mesh, godrays, scene lookup steps) "
+                     "with the lowest "
                      "expected error whose measured frame time fits this many milliseconds; prints them and "
                      "records them in the EXR (given explicitly they give the same image)")
         ->check(finite_number() & positive_number());

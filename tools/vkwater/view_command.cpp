@@ -61,7 +61,8 @@ Run add_view_command(CLI::App& app) {
     command
         ->add_option("--budget-ms", args->viewer.budget_ms,
                      "Keep the frame time within this many milliseconds by choosing the settings (resolution "
-                     "scale, photon grid, water mesh, godrays, scene lookup steps) with the lowest expected error that fit; 0 turns it "
+                     "scale, photon grid, water mesh, godrays, scene lookup steps) with the lowest expected error that "
+                     "fit; 0 turns it "
                      "off (default: the display's refresh interval on a GPU, 66 on a CPU device; none with "
                      "--frames, --script or --render-scale)")
         ->check(finite_number() & CLI::NonNegativeNumber);
