@@ -75,8 +75,9 @@ bool BudgetController::add_frame(double ms) {
     ++frame_;
     frames_at_current_.push_back(ms);
     // Judge a setting only once it has run a few frames, and predict only from a timed frame.
-    if (frames_at_current_.size() < kSettleFrames || !model_.fitted()) return false;
+    if (frames_at_current_.size() < kQuickFrames || !model_.fitted()) return false;
     const double measured = measured_ms();
+    if (frames_at_current_.size() < kSettleFrames && measured <= kFarOverFactor * budget_ms_) return false;
     model_.observe_frame(measured, drivers_(current_));
     if (measured > budget_ms_) {
         const size_t index = std::find(candidates_.begin(), candidates_.end(), current_) - candidates_.begin();

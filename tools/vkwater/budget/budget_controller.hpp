@@ -5,7 +5,9 @@
 // The viewer feeds it every counted frame's interval and, every few frames, a per-pass timing;
 // it answers whether to change the setting. Changes are throttled so that the picture does not
 // flicker between settings:
-//   - a setting is judged on the median of the frames since it began, after kSettleFrames;
+//   - a setting is judged on the median of the frames since it began, after kSettleFrames, or
+//     after kQuickFrames when that median is more than kFarOverFactor times the budget (the
+//     scene's own settings on a slow device: seconds a frame should not last six frames);
 //   - over the budget it steps down at once, to the best candidate predicted within
 //     kTargetFraction of it (the cheapest if none is);
 //   - it steps up only when the median stays below kUpgradeFraction of the budget for
@@ -36,6 +38,8 @@ struct Choice {
 class BudgetController {
 public:
     static constexpr uint32_t kSettleFrames = 6;
+    static constexpr uint32_t kQuickFrames = 3;
+    static constexpr double kFarOverFactor = 2.0;
     static constexpr uint32_t kWindowFrames = 15;
     static constexpr uint32_t kUpgradeFrames = 30;
     static constexpr uint32_t kBanFrames = 300;

@@ -177,11 +177,12 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options) {
     context_options.swapchain = true;
     context_ = std::make_unique<Context>(context_options);
     std::printf("device: %s%s\n", context_->device_name().c_str(), options_.validation ? " (with validation)" : "");
-    if (options_.cpu_frame_note && context_->is_cpu_device()) {
+    budget_ms_ = choose_budget_ms();
+    // Under a budget a slow scene is the budget's to turn down: its line says so instead.
+    if (options_.cpu_frame_note && context_->is_cpu_device() && budget_ms_ == 0.0) {
         const std::string note = options_.cpu_frame_note(*scene_, options_.width, options_.height);
         if (!note.empty()) std::printf("note: %s\n", note.c_str());
     }
-    budget_ms_ = choose_budget_ms();
     if (budget_ms_ > 0.0) {
         std::printf("budget: %.4g ms a frame (%s; --budget-ms sets another, 0 turns it off)\n", budget_ms_,
                     options_.budget_ms          ? "--budget-ms"
