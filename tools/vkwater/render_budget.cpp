@@ -16,12 +16,12 @@ constexpr int kMostSettingsTried = 4;
 }  // namespace
 
 std::string BudgetedSettings::describe(double budget_ms) const {
-    char text[512];
+    char text[1024];
     std::snprintf(text, sizeof text,
                   "budget %.4g ms: chose %s (measured %.1f ms%s, predicted %.1f ms; relMSE +%.3g over "
                   "the scene's own settings%s%s)",
                   budget_ms, budget::describe_arguments(arguments).c_str(), measured_ms,
-                  fits ? "" : ", over the budget: nothing cheaper was left", predicted_ms, error.excess,
+                  fits ? "" : ", over the budget: the cheapest setting it tried", predicted_ms, error.excess,
                   error.dominant.empty() ? "" : ", mostly the ", error.dominant.c_str());
     return text;
 }
