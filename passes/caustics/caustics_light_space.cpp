@@ -129,4 +129,21 @@ CausticLightSpacePush caustic_light_space_push(const CausticMapFrame& f, const C
             {float(f.s.x), float(f.s.y), float(f.s.z), float(in.ior)}};
 }
 
+std::vector<uint32_t> pack_caustic_read_rows(const std::vector<CausticTexelSpan>& spans) {
+    std::vector<uint32_t> packed;
+    packed.reserve(2 * spans.size());
+    for (const CausticTexelSpan& span : spans) packed.push_back(span.x0 | span.x1 << 16);
+    const int reach = static_cast<int>(kAdaptiveSplatReach), rows = static_cast<int>(spans.size());
+    for (int row = 0; row < rows; ++row) {
+        uint32_t x0 = 0xffffu, x1 = 0;
+        for (int near = std::max(0, row - reach); near <= std::min(rows - 1, row + reach); ++near) {
+            if (spans[near].x1 <= spans[near].x0) continue;
+            x0 = std::min(x0, spans[near].x0 - std::min<uint32_t>(spans[near].x0, kAdaptiveSplatReach));
+            x1 = std::max(x1, spans[near].x1 + kAdaptiveSplatReach);
+        }
+        packed.push_back(x1 > x0 ? x0 | std::min<uint32_t>(x1, 0xffffu) << 16 : 0u);
+    }
+    return packed;
+}
+
 }  // namespace vkw::passes

@@ -35,6 +35,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -55,11 +56,17 @@ struct CausticTexelRect {
 struct CausticTexelSpan {
     uint32_t x0 = 0, x1 = 0;
 };
-// The texels a frame reads: their bounding rectangle and, per map row, their span.
+// The photon pass's read rows (its binding 3): per map row its span as x0 | x1 << 16, then the
+// same widened by kAdaptiveSplatReach texels along both axes (the rows within it merged), so that
+// a photon's node alone says whether its hat can reach a read texel. Twice the map's height.
+std::vector<uint32_t> pack_caustic_read_rows(const std::vector<CausticTexelSpan>& spans);
+
+// The texels a frame reads: their bounding rectangle and, per map row, their span, packed for the
+// photon pass (shared: made once per read region, not per frame).
 struct CausticReadTexels {
     CausticTexelRect bounds;
-    std::vector<CausticTexelSpan> rows;  // one per map row
-    double photon_spread = 0.0;          // m: how far a photon can land from its cell's own place
+    std::shared_ptr<const std::vector<uint32_t>> packed_rows;  // pack_caustic_read_rows of the spans
+    double photon_spread = 0.0;                                // m: how far a photon can land from its cell's own place
 };
 
 struct CausticInputs {

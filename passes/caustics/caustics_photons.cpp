@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <numeric>
 #include <optional>
 #include <string>
@@ -36,11 +37,11 @@ constexpr uint32_t kJitterFlag = 1u << 8, kCullFlag = 1u << 9;
 static_assert(sizeof(CausticPhotonPush) == 128, "the push-constant size every device supports");
 
 // Uploads the per-row read spans (vkCmdUpdateBuffer writes at most 65536 bytes a call).
-fg::BufferHandle add_read_rows_upload(fg::FrameGraph& graph, const std::vector<uint32_t>& rows) {
+fg::BufferHandle add_read_rows_upload(fg::FrameGraph& graph, std::shared_ptr<const std::vector<uint32_t>> rows) {
     struct Data {
         fg::BufferHandle rows;
     };
-    const VkDeviceSize bytes = rows.size() * sizeof(uint32_t);
+    const VkDeviceSize bytes = rows->size() * sizeof(uint32_t);
     const auto& upload = graph.add_pass<Data>(
         "upload caustic read rows", fg::PassKind::Transfer,
         [&](fg::PassBuilder& builder, Data& d) {
@@ -50,7 +51,7 @@ fg::BufferHandle add_read_rows_upload(fg::FrameGraph& graph, const std::vector<u
             constexpr VkDeviceSize kMaxUpdate = 65536;
             for (VkDeviceSize offset = 0; offset < bytes; offset += kMaxUpdate) {
                 vkCmdUpdateBuffer(context.cmd(), context.buffer(d.rows), offset, std::min(kMaxUpdate, bytes - offset),
-                                  reinterpret_cast<const char*>(rows.data()) + offset);
+                                  reinterpret_cast<const char*>(rows->data()) + offset);
             }
         });
     return upload.rows;
@@ -132,11 +133,10 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
     push.resolution = inputs.grid_resolution;
     push.sub_and_flags = inputs.sub_photons | (inputs.jitter ? kJitterFlag : 0u);
     const CausticMapFrame frame = fit_caustic_map(inputs);  // its size includes the margin for the waves
-    // Per map row, the read texels [x0, x1) as x0 | x1 << 16, then the same widened by the hat's
-    // reach (kAdaptiveSplatReach texels along both axes: the rows within it merged), so that a
-    // photon's node alone says whether its hat can reach a read texel (binding 3; one unread
-    // entry when every photon is kept).
-    std::vector<uint32_t> read_rows(1, 0u);
+    // The read rows (pack_caustic_read_rows), made with the region; one unread entry when every
+    // photon is kept (binding 3 must hold something).
+    static const auto kNoRows = std::make_shared<const std::vector<uint32_t>>(1, 0u);
+    std::shared_ptr<const std::vector<uint32_t>> read_rows = kNoRows;
     if (inputs.read_texels) {
         const CausticTexelRect& r = inputs.read_texels->bounds;
         // 16 bits per bound: a map has at most 16384 texels and its margins per side.
@@ -146,24 +146,12 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
         push.sub_and_flags |= kCullFlag;
         push.read_x = r.x0 | r.x1 << 16;
         push.read_y = r.y0 | r.y1 << 16;
-        if (inputs.read_texels->rows.size() != frame.height) {
+        if (!inputs.read_texels->packed_rows || inputs.read_texels->packed_rows->size() != 2 * size_t{frame.height}) {
             throw InternalError("caustic photons: the read texels' rows are not the map's");
         }
-        read_rows.clear();
-        const std::vector<CausticTexelSpan>& spans = inputs.read_texels->rows;
-        for (const CausticTexelSpan& span : spans) read_rows.push_back(span.x0 | span.x1 << 16);
-        const int reach = static_cast<int>(kAdaptiveSplatReach), rows = static_cast<int>(spans.size());
-        for (int row = 0; row < rows; ++row) {
-            uint32_t x0 = 0xffffu, x1 = 0;
-            for (int near = std::max(0, row - reach); near <= std::min(rows - 1, row + reach); ++near) {
-                if (spans[near].x1 <= spans[near].x0) continue;
-                x0 = std::min(x0, spans[near].x0 - std::min<uint32_t>(spans[near].x0, kAdaptiveSplatReach));
-                x1 = std::max(x1, spans[near].x1 + kAdaptiveSplatReach);
-            }
-            read_rows.push_back(x1 > x0 ? x0 | std::min<uint32_t>(x1, 0xffffu) << 16 : 0u);
-        }
+        read_rows = inputs.read_texels->packed_rows;
     }
-    const fg::BufferHandle rows = add_read_rows_upload(graph, read_rows);
+    const fg::BufferHandle rows = add_read_rows_upload(graph, std::move(read_rows));
     // The cell rows whose photons can land on a read row: a cell's photons land within
     // photon_spread of the cell's own place (caustics_read_region.hpp), and their tents reach
     // kAdaptiveSplatReach texels further (the footprint kernel kMaxFootprintTexels).

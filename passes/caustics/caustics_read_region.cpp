@@ -243,6 +243,7 @@ CausticReadRegion caustic_read_region(const CausticMapFrame& frame, const Causti
         region.y1 = row + 1;
     }
     if (region.y1 == 0) region.x0 = region.y0 = 0;  // nothing read
+    region.packed_rows = std::make_shared<const std::vector<uint32_t>>(pack_caustic_read_rows(region.rows));
     const double share = double(texel_count) / (double(frame.width) * double(frame.height));
     char text[200];
     std::snprintf(text, sizeof text,

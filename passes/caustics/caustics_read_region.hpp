@@ -35,6 +35,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,7 @@ struct CausticReadRegion {
     bool bounded = false;                     // false: every photon is kept
     uint32_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // the read texels' bounding rectangle [x0, x1) x [y0, y1)
     std::vector<CausticTexelSpan> rows;       // per map row, the read texels (empty: none)
+    std::shared_ptr<const std::vector<uint32_t>> packed_rows;  // pack_caustic_read_rows(rows), when bounded
     // How far, in m along each axis, a photon can land from where it would under flat water with
     // its surface point at the mean level (+infinity: no bound), so whole rows of cells that can
     // only land outside the read texels are not dispatched at all.

@@ -215,7 +215,7 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
                         (read_regions ? *read_regions : one_frame).region(map, read);
                     if (region.bounded) {
                         caustics.read_texels = passes::CausticReadTexels{
-                            {region.x0, region.y0, region.x1, region.y1}, region.rows, region.photon_spread};
+                            {region.x0, region.y0, region.x1, region.y1}, region.packed_rows, region.photon_spread};
                     }
                     caustics.read_note = region.note;
                 } else {
