@@ -130,52 +130,56 @@ CausticReadRegion caustic_read_region(const CausticMapFrame& frame, const Causti
 
     // Per block of the screen (kBlocks^2 sub-frusta), the read sets' images in the map, each convex.
     constexpr int kBlocks = 8, kSides = 8;
-    const glm::dmat4 inverse = glm::inverse(in.view_proj);
     std::vector<std::vector<glm::dvec2>> polygons;
-    for (int by = 0; by < kBlocks; ++by) {
-        for (int bx = 0; bx < kBlocks; ++bx) {
-            const double x0 = -1.0 + 2.0 * bx / kBlocks, x1 = x0 + 2.0 / kBlocks;
-            const double y0 = -1.0 + 2.0 * by / kBlocks, y1 = y0 + 2.0 / kBlocks;
-            // The block's own clip space: x' = (2 x - (x0 + x1) w) / (x1 - x0), likewise y.
-            glm::dmat4 to_block(1.0);
-            to_block[0][0] = 2.0 / (x1 - x0);
-            to_block[3][0] = -(x0 + x1) / (x1 - x0);
-            to_block[1][1] = 2.0 / (y1 - y0);
-            to_block[3][1] = -(y0 + y1) / (y1 - y0);
-            const glm::dmat4 block = to_block * in.view_proj;
-            // Receivers seen straight, and the marched godrays' samples.
-            std::vector<glm::dvec2> direct;
-            for (const glm::dvec3& p : frustum_box_vertices(block, projecting)) direct.push_back(texels(p));
-            if (!direct.empty()) polygons.push_back(convex_hull(direct));
-            // Receivers met by rays refracted where the block's rays enter the slab. The block's
-            // most oblique ray is one of its corners' (the rays within a given angle of -y form a
-            // convex cone). Under flat water it leaves -y by asin(sin(theta_i) / n); a normal
-            // tilted by up to atan(slope) turns the refracted ray by no more than it turns the
-            // normal (t = eta i + (eta cos_i - cos_t) n changes by at most |dn|: by a factor
-            // 1 - cos_i / (n cos_t) in the plane of incidence, |eta cos_i - cos_t| across it).
-            const std::vector<glm::dvec3> entries = frustum_box_vertices(block, slab);
-            if (entries.empty()) continue;
-            double oblique = 0.0;
-            for (int c = 0; c < 4; ++c) {
-                const glm::dvec4 n = inverse * glm::dvec4((c & 1) ? x1 : x0, (c & 2) ? y1 : y0, 1.0, 1.0);
-                const glm::dvec4 f = inverse * glm::dvec4((c & 1) ? x1 : x0, (c & 2) ? y1 : y0, 0.5, 1.0);
-                const glm::dvec3 d = glm::normalize(glm::dvec3(f) / f.w - glm::dvec3(n) / n.w);
-                oblique = std::max(oblique, std::acos(std::clamp(-d.y, -1.0, 1.0)));
-            }
-            const double incidence = std::min(oblique, std::numbers::pi / 2);
-            const double steepest = std::asin(std::sin(incidence) / in.ior) + slope_angle;
-            const double reach = depth * std::tan(steepest) / std::cos(std::numbers::pi / kSides);
-            std::vector<glm::dvec2> entry_xz;
-            for (const glm::dvec3& p : entries) entry_xz.push_back({p.x, p.z});
-            std::vector<glm::dvec2> refracted;
-            for (const glm::dvec2& e : convex_hull(entry_xz)) {
-                for (int k = 0; k < kSides; ++k) {
-                    const double angle = 2.0 * std::numbers::pi * (k + 0.5) / kSides;
-                    const glm::dvec2 xz = e + reach * glm::dvec2(std::cos(angle), std::sin(angle));
-                    for (const double y : {lowest, top}) refracted.push_back(texels({xz.x, y, xz.y}));
+    std::vector<glm::dmat4> views = {in.view_proj};
+    views.insert(views.end(), in.more_views.begin(), in.more_views.end());
+    for (const glm::dmat4& view_proj : views) {
+        const glm::dmat4 inverse = glm::inverse(view_proj);
+        for (int by = 0; by < kBlocks; ++by) {
+            for (int bx = 0; bx < kBlocks; ++bx) {
+                const double x0 = -1.0 + 2.0 * bx / kBlocks, x1 = x0 + 2.0 / kBlocks;
+                const double y0 = -1.0 + 2.0 * by / kBlocks, y1 = y0 + 2.0 / kBlocks;
+                // The block's own clip space: x' = (2 x - (x0 + x1) w) / (x1 - x0), likewise y.
+                glm::dmat4 to_block(1.0);
+                to_block[0][0] = 2.0 / (x1 - x0);
+                to_block[3][0] = -(x0 + x1) / (x1 - x0);
+                to_block[1][1] = 2.0 / (y1 - y0);
+                to_block[3][1] = -(y0 + y1) / (y1 - y0);
+                const glm::dmat4 block = to_block * view_proj;
+                // Receivers seen straight, and the marched godrays' samples.
+                std::vector<glm::dvec2> direct;
+                for (const glm::dvec3& p : frustum_box_vertices(block, projecting)) direct.push_back(texels(p));
+                if (!direct.empty()) polygons.push_back(convex_hull(direct));
+                // Receivers met by rays refracted where the block's rays enter the slab. The block's
+                // most oblique ray is one of its corners' (the rays within a given angle of -y form a
+                // convex cone). Under flat water it leaves -y by asin(sin(theta_i) / n); a normal
+                // tilted by up to atan(slope) turns the refracted ray by no more than it turns the
+                // normal (t = eta i + (eta cos_i - cos_t) n changes by at most |dn|: by a factor
+                // 1 - cos_i / (n cos_t) in the plane of incidence, |eta cos_i - cos_t| across it).
+                const std::vector<glm::dvec3> entries = frustum_box_vertices(block, slab);
+                if (entries.empty()) continue;
+                double oblique = 0.0;
+                for (int c = 0; c < 4; ++c) {
+                    const glm::dvec4 n = inverse * glm::dvec4((c & 1) ? x1 : x0, (c & 2) ? y1 : y0, 1.0, 1.0);
+                    const glm::dvec4 f = inverse * glm::dvec4((c & 1) ? x1 : x0, (c & 2) ? y1 : y0, 0.5, 1.0);
+                    const glm::dvec3 d = glm::normalize(glm::dvec3(f) / f.w - glm::dvec3(n) / n.w);
+                    oblique = std::max(oblique, std::acos(std::clamp(-d.y, -1.0, 1.0)));
                 }
+                const double incidence = std::min(oblique, std::numbers::pi / 2);
+                const double steepest = std::asin(std::sin(incidence) / in.ior) + slope_angle;
+                const double reach = depth * std::tan(steepest) / std::cos(std::numbers::pi / kSides);
+                std::vector<glm::dvec2> entry_xz;
+                for (const glm::dvec3& p : entries) entry_xz.push_back({p.x, p.z});
+                std::vector<glm::dvec2> refracted;
+                for (const glm::dvec2& e : convex_hull(entry_xz)) {
+                    for (int k = 0; k < kSides; ++k) {
+                        const double angle = 2.0 * std::numbers::pi * (k + 0.5) / kSides;
+                        const glm::dvec2 xz = e + reach * glm::dvec2(std::cos(angle), std::sin(angle));
+                        for (const double y : {lowest, top}) refracted.push_back(texels({xz.x, y, xz.y}));
+                    }
+                }
+                polygons.push_back(convex_hull(refracted));
             }
-            polygons.push_back(convex_hull(refracted));
         }
     }
 

@@ -42,7 +42,10 @@
 namespace vkw::passes {
 
 struct CausticReadInputs {
-    glm::dmat4 view_proj{1.0};      // the camera's, into reverse-Z clip space
+    glm::dmat4 view_proj{1.0};  // the camera's, into reverse-Z clip space
+    // Further cameras whose reads the region covers too: the other sub-frames of a supersampled
+    // frame, which read the map that the first one makes (passes/frame/supersampled_frame.hpp).
+    std::vector<glm::dmat4> more_views;
     double level = 0.0;             // the water's mean level, m
     double half_extent = 10.0;      // the water spans [-E, E]^2
     double amplitude = 0.0;         // a bound on the waves' height above the level, m

@@ -7,6 +7,7 @@
 #include "passes/caustics/caustics_blur.hpp"
 #include "passes/caustics/caustics_camera_receivers.hpp"
 #include "passes/caustics/caustics_camera_splats.hpp"
+#include "passes/caustics/caustics_map_frame.hpp"
 #include "passes/caustics/caustics_photons.hpp"
 #include "passes/caustics/caustics_procedural.hpp"
 #include "passes/caustics/caustics_read_region.hpp"
@@ -113,6 +114,17 @@ passes::WaterSceneLookups scene_lookups(fg::FrameGraph& graph, const Scene& scen
     return lookups;
 }
 
+// The map a later sub-frame reads instead of making it (CausticMapCarry::Reuse): the kept image
+// and this frame's light space (the same as the first sub-frame's, as the sun and the waves are).
+std::optional<passes::CausticMap> reused_caustic_map(fg::FrameGraph& graph, const passes::CausticInputs& caustics,
+                                                     const CausticMapCarrying* carry) {
+    if (!carry || carry->mode != CausticMapCarry::Reuse) return std::nullopt;
+    const passes::KeptCausticMapImage kept = carry->kept(passes::caustic_map_image(passes::fit_caustic_map(caustics)));
+    if (kept.image == VK_NULL_HANDLE) return std::nullopt;
+    return passes::CausticMap{passes::import_kept_caustic_map(graph, kept),
+                              passes::add_caustic_map_frame_pass(graph, caustics)};
+}
+
 }  // namespace
 
 passes::CausticReadInputs caustic_read_inputs(const Scene& scene, double aspect, const fg::FrameNeeds& needs,
@@ -140,7 +152,8 @@ passes::CausticReadInputs caustic_read_inputs(const Scene& scene, double aspect,
 void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
                        uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
                        const passes::ReceiverMeshes* receivers, const FrameOutput* output, LayerReadbacks layers,
-                       passes::CausticReadRegionCache* read_regions, VkExtent2D output_size) {
+                       passes::CausticReadRegionCache* read_regions, VkExtent2D output_size,
+                       const CausticMapCarrying* carry) {
     const bool caustic_layer = layers.caustic != VK_NULL_HANDLE && !output;
     const bool inscatter_layer = layers.inscatter != VK_NULL_HANDLE && !output;
     // The waves' amplitude bound, once: for the FFT ocean it builds the CPU surface.
@@ -202,14 +215,17 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
                 graph.blackboard().put(keys::kCameraCaustics,
                                        passes::add_caustic_camera_splat_passes(graph, caustics, view, extent,
                                                                                sun_shadow ? &*sun_shadow : nullptr));
+            } else if (const std::optional<passes::CausticMap> kept = reused_caustic_map(graph, caustics, carry)) {
+                graph.blackboard().put(keys::kCausticMap, *kept);
             } else {
                 if (scene.effects.caustics.cull) {
                     const double lowest = receivers && !receivers->empty()
                                               ? std::min(scene.floor.height, receivers->bounds_lo().y)
                                               : scene.floor.height;
                     const passes::CausticMapFrame map = passes::fit_caustic_map(caustics);
-                    const passes::CausticReadInputs read =
+                    passes::CausticReadInputs read =
                         caustic_read_inputs(scene, double(width) / double(height), graph.needs(), amplitude, lowest);
+                    if (carry && carry->mode == CausticMapCarry::Keep) read.more_views = carry->more_views;
                     passes::CausticReadRegionCache one_frame;  // without the caller's: this frame's alone
                     const passes::CausticReadRegion& region =
                         (read_regions ? *read_regions : one_frame).region(map, read);
@@ -230,6 +246,11 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
                               caustics);
                 if (graph.needs().needs(Effect::CausticBlur)) {
                     map = passes::add_caustic_blur_pass(graph, map, caustics, scene.effects.caustic_blur.radius);
+                }
+                if (carry && carry->mode == CausticMapCarry::Keep) {
+                    passes::add_caustic_map_keep_pass(
+                        graph, map.irradiance,
+                        carry->kept(passes::caustic_map_image(passes::fit_caustic_map(caustics))));
                 }
                 graph.blackboard().put(keys::kCausticMap, map);
             }
@@ -330,6 +351,20 @@ const passes::ReceiverMeshes* Renderer::receiver_meshes(const Scene& scene) {
         receivers_count_ = scene.receivers.size();
     }
     return receivers_.get();
+}
+
+passes::KeptCausticMapImage Renderer::kept_caustic_map(const fg::ImageInfo& info, CausticMapCarry mode) {
+    const bool fits = kept_caustic_map_ && kept_caustic_map_->desc().width == info.width &&
+                      kept_caustic_map_->desc().height == info.height &&
+                      kept_caustic_map_->desc().format == info.format;
+    if (!fits) {
+        if (mode != CausticMapCarry::Keep) return {};
+        frame_.reset();  // a compiled frame may import the old image
+        kept_caustic_map_ = std::make_unique<Image>(
+            context_, ImageDesc{info.width, info.height, info.format, passes::kKeptCausticMapUsage},
+            "kept caustic irradiance");
+    }
+    return {kept_caustic_map_->handle(), kept_caustic_map_->view(), info.width, info.height, info.format};
 }
 
 const Renderer::Readback& Renderer::readback_targets(const RenderOptions& options, bool window_output) {
@@ -454,9 +489,20 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
     // graph's physical signature changes.
     auto graph = std::make_unique<fg::FrameGraph>(std::move(needs));
     graph->set_default_recording(options.recording);
+    CausticMapCarrying carry;
+    carry.mode = options.caustic_map_carry;
+    carry.kept = [this, mode = carry.mode](const fg::ImageInfo& info) { return kept_caustic_map(info, mode); };
+    if (carry.mode == CausticMapCarry::Keep) {
+        Camera camera = scene.camera;
+        for (const glm::dvec2& shift : options.sub_frame_shifts) {
+            if (shift == scene.camera.image_shift_ndc) continue;
+            camera.image_shift_ndc = shift;
+            carry.more_views.push_back(projection_matrix(camera, double(width) / double(height)) * view_matrix(camera));
+        }
+    }
     build_frame_graph(*graph, scene, constants_.get(), width, height, readback.hdr.handle(), ocean, receivers, output,
                       {readback.caustic.handle(), readback.inscatter.handle()}, &read_regions_,
-                      {options.width, options.height});
+                      {options.width, options.height}, &carry);
     // Timed frames carry the unit their times are reported in; untimed ones (tests) need none.
     if (options.timing != fg::TimingMode::None) passes::add_calibration_pass(*graph);
     graph->compile(width, height);

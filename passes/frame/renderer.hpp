@@ -10,6 +10,7 @@
 #include "engine/image/image.hpp"
 #include "engine/scene/scene.hpp"
 #include "engine/vk/resources.hpp"
+#include "passes/caustics/caustic_map_carry.hpp"
 #include "passes/caustics/caustics_read_region.hpp"
 #include "passes/common/frame_constants.hpp"
 
@@ -17,11 +18,14 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace vkw {
 
 class Context;
 struct FftOceanSpectrum;
+
+enum class CausticMapCarry : uint8_t { None, Keep, Reuse };
 
 struct RenderOptions {
     uint32_t width = 800;
@@ -38,6 +42,12 @@ struct RenderOptions {
     // The scene's passes render at this fraction of width x height per side, in (0, 1], and the
     // frame is stretched to width x height at its end (passes/frame/upscale.hpp), layers included.
     double render_scale = 1.0;
+    // The sub-frames of a supersampled frame (passes/frame/supersampled_frame.hpp) share one
+    // light-space caustic map (passes/caustics/caustic_map_carry.hpp): Keep makes it for the
+    // cameras of every sub-frame (`sub_frame_shifts`, each a Camera::image_shift_ndc) and keeps it;
+    // Reuse reads the kept one instead of tracing the photons again.
+    CausticMapCarry caustic_map_carry = CausticMapCarry::None;
+    std::vector<glm::dvec2> sub_frame_shifts;
 };
 
 struct RenderResult {
@@ -77,11 +87,20 @@ struct LayerReadbacks {
     VkBuffer inscatter = VK_NULL_HANDLE;
 };
 
+// The caustic map carried between the sub-frames of a supersampled frame (RenderOptions::caustic_map_carry).
+struct CausticMapCarrying {
+    CausticMapCarry mode = CausticMapCarry::None;
+    // The kept image for a map of this size, made if need be (Keep); the kept one, or a null image
+    // when none of that size is kept (Reuse: the map is then made as without carrying).
+    std::function<passes::KeptCausticMapImage(const fg::ImageInfo&)> kept;
+    std::vector<glm::dmat4> more_views;  // Keep: the other sub-frames' cameras, for the photon culling
+};
+
 void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameConstants* constants, uint32_t width,
                        uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
                        const passes::ReceiverMeshes* receivers, const FrameOutput* output = nullptr,
                        LayerReadbacks layers = {}, passes::CausticReadRegionCache* read_regions = nullptr,
-                       VkExtent2D output_size = {0, 0});
+                       VkExtent2D output_size = {0, 0}, const CausticMapCarrying* carry = nullptr);
 
 class Renderer {
 public:
@@ -115,6 +134,7 @@ private:
     const Readback& readback_targets(const RenderOptions& options, bool window_output);
     const passes::OceanSpectrumBuffer* ocean_spectrum(const Scene& scene);
     const passes::ReceiverMeshes* receiver_meshes(const Scene& scene);
+    passes::KeptCausticMapImage kept_caustic_map(const fg::ImageInfo& info, CausticMapCarry mode);
     Context& context_;
     fg::PipelineStore pipelines_;
     std::unique_ptr<FrameConstants> constants_;  // stable address, read when the frame records
@@ -124,6 +144,7 @@ private:
     std::shared_ptr<const FftOceanSpectrum> ocean_source_;  // the CPU spectrum it was made from
     std::unique_ptr<passes::ReceiverMeshes> receivers_;     // the scene's receiver meshes on the device
     passes::CausticReadRegionCache read_regions_;           // the photon culling's region, while the camera stays
+    std::unique_ptr<Image> kept_caustic_map_;               // RenderOptions::caustic_map_carry's map
     const void* receivers_source_ = nullptr;                // the scene whose receivers they are
     uint64_t receivers_load_id_ = 0;                        // and its Scene::load_id
     size_t receivers_count_ = 0;

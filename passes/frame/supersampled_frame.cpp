@@ -2,6 +2,7 @@
 
 #include "engine/core/errors.hpp"
 
+#include <algorithm>
 #include <vector>
 
 namespace vkw {
@@ -14,27 +15,41 @@ RenderResult render_filtered(Renderer& renderer, const Scene& scene, const Rende
         return result;
     }
     Scene shifted = scene;
+    RenderOptions sub_options = options;
+    for (uint32_t i = 0; i < filter.samples; ++i) {
+        sub_options.sub_frame_shifts.push_back(
+            image_shift_for_pixel_offset(filter.stratum_centre(i), options.width, options.height));
+    }
     RenderResult sum;
     std::vector<std::vector<float>> layers;  // the sums of the sub-frames' layers, as the first names them
     for (uint32_t i = 0; i < filter.samples; ++i) {
-        shifted.camera.image_shift_ndc =
-            image_shift_for_pixel_offset(filter.stratum_centre(i), options.width, options.height);
-        RenderResult sub = renderer.render(shifted, options);
+        shifted.camera.image_shift_ndc = sub_options.sub_frame_shifts[i];
+        // The first sub-frame makes the caustic map for all of them; the others read it.
+        sub_options.caustic_map_carry = i == 0 ? CausticMapCarry::Keep : CausticMapCarry::Reuse;
+        RenderResult sub = renderer.render(shifted, sub_options);
         if (after_sub_frame) after_sub_frame(i + 1);
         if (i == 0) {
             sum = std::move(sub);
             for (const ExtraLayer& layer : sum.image.layers) layers.push_back(layer.rgb);
             continue;
         }
-        if (sub.image.rgba.size() != sum.image.rgba.size() || sub.image.layers.size() != layers.size() ||
-            sub.timing.passes.size() != sum.timing.passes.size()) {
-            throw InternalError("supersampling: the sub-frames differ in their images or passes");
+        if (sub.image.rgba.size() != sum.image.rgba.size() || sub.image.layers.size() != layers.size()) {
+            throw InternalError("supersampling: the sub-frames differ in their images");
         }
         for (size_t k = 0; k < sum.image.rgba.size(); ++k) sum.image.rgba[k] += sub.image.rgba[k];
         for (size_t l = 0; l < layers.size(); ++l) {
             for (size_t k = 0; k < layers[l].size(); ++k) layers[l][k] += sub.image.layers[l].rgb[k];
         }
-        for (size_t p = 0; p < sum.timing.passes.size(); ++p) sum.timing.passes[p].ms += sub.timing.passes[p].ms;
+        // Each pass's time summed by name: the later sub-frames leave out the map's passes.
+        for (const fg::PassTime& pass : sub.timing.passes) {
+            const auto same = std::find_if(sum.timing.passes.begin(), sum.timing.passes.end(),
+                                           [&](const fg::PassTime& p) { return p.pass == pass.pass; });
+            if (same != sum.timing.passes.end()) {
+                same->ms += pass.ms;
+            } else {
+                sum.timing.passes.push_back(pass);
+            }
+        }
         sum.timing.total_ms += sub.timing.total_ms;
     }
     const float scale = 1.0f / static_cast<float>(filter.samples);

@@ -1,8 +1,12 @@
 // A box-filtered frame (engine/scene/pixel_filter.hpp): k^2 sub-frames of the renderer, each with
 // the camera's image plane shifted by one stratum's centre for every pixel, averaged in float.
-// Every pass runs in every sub-frame, the light-space ones (surface, photons, map, resolve)
-// included, and the frame's time is the sum of the sub-frames' (each pass's too). A point filter
-// is one plain render, bit-identical to Renderer::render.
+// The light-space caustic map does not depend on the shift: the first sub-frame makes it for the
+// cameras of all of them and keeps it, and the others read it (RenderOptions::caustic_map_carry),
+// so the photons are traced once per frame. Every pixel the others read in it holds what their own
+// map would (the photon culling keeps every photon that can reach a texel any of them reads), so
+// the image is bit-identical to k^2 independent sub-frames. The frame's time is the sum of the
+// sub-frames' (each pass's too, by name). A point filter is one plain render, bit-identical to
+// Renderer::render.
 #pragma once
 
 #include "engine/scene/pixel_filter.hpp"

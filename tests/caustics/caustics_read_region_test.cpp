@@ -181,6 +181,39 @@ TEST(CausticReadRegionShare, PoolLeavesOutTexelsTheViewCannotRead) {
     EXPECT_GT(share, 0.2) << s.region.note;
 }
 
+// The region for several cameras (the sub-frames of a supersampled frame, which share one map)
+// holds each camera's own region, and, for cameras that look at different parts of the pool, more
+// than either.
+TEST(CausticReadRegionShare, SeveralCamerasReadTheUnionOfTheirRegions) {
+    const RegionCase s = prepare({"pool", {}});
+    const double amplitude = water_bounds(s.scene).hi.y - s.scene.water->level;
+    auto inputs = [&](const glm::dvec2& shift) {
+        Scene shifted = s.scene;
+        shifted.camera.image_shift_ndc = shift;
+        return caustic_read_inputs(shifted, kAspect, decide_frame_needs(shifted, kAspect), amplitude,
+                                   s.scene.floor.height);
+    };
+    // Half the screen to the left and to the right: each sees a part of the floor the other does not.
+    const passes::CausticReadRegion left = passes::caustic_read_region(s.frame, inputs({-1.0, 0.0}));
+    const passes::CausticReadRegion right = passes::caustic_read_region(s.frame, inputs({1.0, 0.0}));
+    passes::CausticReadInputs both = inputs({-1.0, 0.0});
+    both.more_views = {inputs({1.0, 0.0}).view_proj};
+    const passes::CausticReadRegion region = passes::caustic_read_region(s.frame, both);
+    ASSERT_TRUE(left.bounded && right.bounded && region.bounded);
+    uint64_t only_left = 0, only_right = 0, missed = 0;
+    for (size_t row = 0; row < region.rows.size(); ++row) {
+        for (uint32_t x = 0; x < s.frame.width; ++x) {
+            auto in = [&](const passes::CausticReadRegion& r) { return x >= r.rows[row].x0 && x < r.rows[row].x1; };
+            if ((in(left) || in(right)) && !in(region)) ++missed;
+            if (in(left) && !in(right)) ++only_left;
+            if (in(right) && !in(left)) ++only_right;
+        }
+    }
+    EXPECT_EQ(missed, 0u);
+    EXPECT_GT(only_left, 0u);
+    EXPECT_GT(only_right, 0u);
+}
+
 INSTANTIATE_TEST_SUITE_P(Cameras, CausticReadRegion,
                          ::testing::Values(Case{"pool", {}},
                                            Case{"oblique_near_the_surface",

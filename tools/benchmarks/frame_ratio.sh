@@ -12,7 +12,9 @@
 # Fence-timed on CPU devices, GPU timestamps elsewhere (vkwater render's own timing).
 #
 # OLD_BUILD=DIR uses an existing build of OLD_COMMIT instead of building one in
-# build/frame_ratio/OLD_COMMIT. Prints a Markdown table (docs/performance.md keeps one).
+# build/frame_ratio/OLD_COMMIT. WIDTH and HEIGHT (default 800x600), REPEAT (frames per render,
+# the last one timed; default 2) and RENDER_ARGS (more render options, e.g. "--spp 4") change what
+# both builds render. Prints a Markdown table (docs/performance.md keeps one).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 root=$(pwd)
@@ -26,7 +28,8 @@ rounds=${2:-3}
 shift $(( $# >= 2 ? 2 : 1 ))
 scenes=("$@")
 [ ${#scenes[@]} -gt 0 ] || scenes=(calm pool lake ocean underwater box)
-width=800 height=600
+width=${WIDTH:-800} height=${HEIGHT:-600} repeat=${REPEAT:-2}
+read -r -a render_args <<< "${RENDER_ARGS:-}"
 
 new_vk=$root/build/tools/vkwater/vkwater
 [ -x "$new_vk" ] || { echo "frame_ratio: build this tree first (build/tools/vkwater/vkwater)" >&2; exit 1; }
@@ -47,7 +50,7 @@ trap 'rm -rf "$work"' EXIT
 run() {
   local name=$1 vk=$2 scene=$3 round=$4
   # Each build reads its own shaders: a build's SPIR-V is where its binary was built.
-  "$vk" render "scenes/$scene.json" --width $width --height $height --repeat 2 --out "$work/$name.exr" 2> /dev/null |
+  "$vk" render "scenes/$scene.json" --width $width --height $height --repeat "$repeat" "${render_args[@]}" --out "$work/$name.exr" 2> /dev/null |
     awk -v prefix="$scene\t$name\t$round" -v skip_declare=1 -f tools/benchmarks/pass_times.awk
 }
 

@@ -233,7 +233,7 @@ Run add_render_command(CLI::App& app) {
         ->capture_default_str();
     add_spp_option(*command, args->spp,
                    "more average k^2 sub-frames shifted to the centres of the pixel's k x k strata (a box filter; the "
-                   "time is their sum)");
+                   "caustic photons are traced once for all of them; the time is their sum)");
     add_render_scale_option(*command, args->render_scale);
     command
         ->add_option("--budget-ms", args->budget_ms,
