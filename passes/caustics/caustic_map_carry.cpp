@@ -1,7 +1,7 @@
 // add_caustic_map_keep_pass and import_kept_caustic_map (caustic_map_carry.hpp).
 #include "passes/caustics/caustic_map_carry.hpp"
 
-#include "engine/framegraph/pass_context.hpp"
+#include "passes/common/whole_image_copy.hpp"
 
 namespace vkw::passes {
 namespace {
@@ -13,45 +13,21 @@ fg::AccessState kept_state() {
                             VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
 }
 
-fg::ImportedImage imported(const KeptCausticMapImage& kept, const fg::AccessState& initial) {
-    fg::ImportedImage image;
-    image.image = kept.image;
-    image.view = kept.view;
-    image.width = kept.width;
-    image.height = kept.height;
-    image.format = kept.format;
-    image.initial = initial;
-    image.final_state = kept_state();
-    return image;
+fg::ImageHandle import_kept(fg::FrameGraph& graph, fg::ImportedImage kept, const fg::AccessState& initial) {
+    kept.initial = initial;
+    kept.final_state = kept_state();
+    return graph.import_image("kept caustic irradiance", kept);
 }
 
 }  // namespace
 
-void add_caustic_map_keep_pass(fg::FrameGraph& graph, fg::ImageHandle irradiance, const KeptCausticMapImage& kept) {
+void add_caustic_map_keep_pass(fg::FrameGraph& graph, fg::ImageHandle irradiance, const fg::ImportedImage& kept) {
     // Overwritten whole: what the image held before does not matter.
-    const fg::ImageHandle target = graph.import_image("kept caustic irradiance", imported(kept, {}));
-    struct Data {
-        fg::ImageHandle source, target;
-    };
-    const auto& data = graph.add_pass<Data>(
-        "keep caustic map", fg::PassKind::Transfer,
-        [&](fg::PassBuilder& builder, Data& d) {
-            d.source = builder.copy_source(irradiance);
-            d.target = builder.copy_destination(target);
-        },
-        [](const Data& d, fg::PassContext& context) {
-            const VkExtent2D extent = context.extent(d.source);
-            VkImageCopy region{};
-            region.srcSubresource = region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-            region.extent = {extent.width, extent.height, 1};
-            vkCmdCopyImage(context.cmd(), context.image(d.source), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           context.image(d.target), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        });
-    graph.request_output(data.target);
+    add_whole_image_copy_pass(graph, "keep caustic map", irradiance, import_kept(graph, kept, {}));
 }
 
-fg::ImageHandle import_kept_caustic_map(fg::FrameGraph& graph, const KeptCausticMapImage& kept) {
-    return graph.import_image("kept caustic irradiance", imported(kept, kept_state()));
+fg::ImageHandle import_kept_caustic_map(fg::FrameGraph& graph, const fg::ImportedImage& kept) {
+    return import_kept(graph, kept, kept_state());
 }
 
 }  // namespace vkw::passes

@@ -7,26 +7,19 @@
 
 #include "engine/framegraph/frame_graph.hpp"
 
-#include <vulkan/vulkan.h>
-
 namespace vkw::passes {
-
-// The kept map's image, owned by the caller (the renderer keeps one of the map's size).
-struct KeptCausticMapImage {
-    VkImage image = VK_NULL_HANDLE;
-    VkImageView view = VK_NULL_HANDLE;
-    uint32_t width = 0, height = 0;
-    VkFormat format = VK_FORMAT_UNDEFINED;
-};
 
 // The usage the kept image needs: the copy's destination, then sampled like the map itself.
 inline constexpr VkImageUsageFlags kKeptCausticMapUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
 
+// `kept` is an image of the map's size and format with kKeptCausticMapUsage, owned by the caller
+// (the renderer keeps one); its states are set here.
+//
 // Adds the pass that copies the map's `irradiance` into `kept` (the first sub-frame). The graph
 // leaves `kept` in the state import_kept_caustic_map expects.
-void add_caustic_map_keep_pass(fg::FrameGraph& graph, fg::ImageHandle irradiance, const KeptCausticMapImage& kept);
+void add_caustic_map_keep_pass(fg::FrameGraph& graph, fg::ImageHandle irradiance, const fg::ImportedImage& kept);
 
 // The kept map, imported in the state the keep pass left it in (the later sub-frames).
-fg::ImageHandle import_kept_caustic_map(fg::FrameGraph& graph, const KeptCausticMapImage& kept);
+fg::ImageHandle import_kept_caustic_map(fg::FrameGraph& graph, const fg::ImportedImage& kept);
 
 }  // namespace vkw::passes

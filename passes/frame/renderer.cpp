@@ -119,7 +119,7 @@ passes::WaterSceneLookups scene_lookups(fg::FrameGraph& graph, const Scene& scen
 std::optional<passes::CausticMap> reused_caustic_map(fg::FrameGraph& graph, const passes::CausticInputs& caustics,
                                                      const CausticMapCarrying* carry) {
     if (!carry || carry->mode != CausticMapCarry::Reuse) return std::nullopt;
-    const passes::KeptCausticMapImage kept = carry->kept(passes::caustic_map_image(passes::fit_caustic_map(caustics)));
+    const fg::ImportedImage kept = carry->kept(passes::caustic_map_image(passes::fit_caustic_map(caustics)));
     if (kept.image == VK_NULL_HANDLE) return std::nullopt;
     return passes::CausticMap{passes::import_kept_caustic_map(graph, kept),
                               passes::add_caustic_map_frame_pass(graph, caustics)};
@@ -353,7 +353,7 @@ const passes::ReceiverMeshes* Renderer::receiver_meshes(const Scene& scene) {
     return receivers_.get();
 }
 
-passes::KeptCausticMapImage Renderer::kept_caustic_map(const fg::ImageInfo& info, CausticMapCarry mode) {
+fg::ImportedImage Renderer::kept_caustic_map(const fg::ImageInfo& info, CausticMapCarry mode) {
     const bool fits = kept_caustic_map_ && kept_caustic_map_->desc().width == info.width &&
                       kept_caustic_map_->desc().height == info.height &&
                       kept_caustic_map_->desc().format == info.format;
@@ -364,7 +364,13 @@ passes::KeptCausticMapImage Renderer::kept_caustic_map(const fg::ImageInfo& info
             context_, ImageDesc{info.width, info.height, info.format, passes::kKeptCausticMapUsage},
             "kept caustic irradiance");
     }
-    return {kept_caustic_map_->handle(), kept_caustic_map_->view(), info.width, info.height, info.format};
+    fg::ImportedImage kept;
+    kept.image = kept_caustic_map_->handle();
+    kept.view = kept_caustic_map_->view();
+    kept.width = info.width;
+    kept.height = info.height;
+    kept.format = info.format;
+    return kept;
 }
 
 const Renderer::Readback& Renderer::readback_targets(const RenderOptions& options, bool window_output) {

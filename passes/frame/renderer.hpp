@@ -92,7 +92,7 @@ struct CausticMapCarrying {
     CausticMapCarry mode = CausticMapCarry::None;
     // The kept image for a map of this size, made if need be (Keep); the kept one, or a null image
     // when none of that size is kept (Reuse: the map is then made as without carrying).
-    std::function<passes::KeptCausticMapImage(const fg::ImageInfo&)> kept;
+    std::function<fg::ImportedImage(const fg::ImageInfo&)> kept;
     std::vector<glm::dmat4> more_views;  // Keep: the other sub-frames' cameras, for the photon culling
 };
 
@@ -134,7 +134,7 @@ private:
     const Readback& readback_targets(const RenderOptions& options, bool window_output);
     const passes::OceanSpectrumBuffer* ocean_spectrum(const Scene& scene);
     const passes::ReceiverMeshes* receiver_meshes(const Scene& scene);
-    passes::KeptCausticMapImage kept_caustic_map(const fg::ImageInfo& info, CausticMapCarry mode);
+    fg::ImportedImage kept_caustic_map(const fg::ImageInfo& info, CausticMapCarry mode);
     Context& context_;
     fg::PipelineStore pipelines_;
     std::unique_ptr<FrameConstants> constants_;  // stable address, read when the frame records
