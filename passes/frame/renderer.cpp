@@ -332,7 +332,7 @@ const passes::OceanSpectrumBuffer* Renderer::ocean_spectrum(const Scene& scene) 
     std::shared_ptr<const FftOceanSpectrum> spectrum =
         shared_ocean_spectrum(scene.water->waves.ocean, scene.water->waves.seed);
     if (!ocean_ || spectrum != ocean_source_) {
-        frame_.reset();  // the compiled frame imported the old buffer
+        forget_compiled_frames();  // they imported the old buffer
         ocean_ = std::make_unique<passes::OceanSpectrumBuffer>(context_, spectrum);
         ocean_source_ = std::move(spectrum);
     }
@@ -344,7 +344,7 @@ const passes::ReceiverMeshes* Renderer::receiver_meshes(const Scene& scene) {
     // Receivers are static: the meshes are uploaded once per scene object and count.
     if (!receivers_ || receivers_source_ != &scene || receivers_load_id_ != scene.load_id ||
         receivers_count_ != scene.receivers.size()) {
-        frame_.reset();  // the compiled frame imported the old buffers
+        forget_compiled_frames();  // they imported the old buffers
         receivers_ = std::make_unique<passes::ReceiverMeshes>(context_, scene.receivers);
         receivers_source_ = &scene;
         receivers_load_id_ = scene.load_id;
@@ -359,7 +359,7 @@ fg::ImportedImage Renderer::kept_caustic_map(const fg::ImageInfo& info, CausticM
                       kept_caustic_map_->desc().format == info.format;
     if (!fits) {
         if (mode != CausticMapCarry::Keep) return {};
-        frame_.reset();  // a compiled frame may import the old image
+        forget_compiled_frames();  // one may import the old image
         kept_caustic_map_ = std::make_unique<Image>(
             context_, ImageDesc{info.width, info.height, info.format, passes::kKeptCausticMapUsage},
             "kept caustic irradiance");
@@ -382,7 +382,7 @@ const Renderer::Readback& Renderer::readback_targets(const RenderOptions& option
         readback_->with_hdr == hdr && readback_->caustic_layer == caustic && readback_->inscatter_layer == inscatter) {
         return *readback_;
     }
-    frame_.reset();  // the compiled frame imported the old buffers
+    forget_compiled_frames();  // they imported the old buffers
     readback_ = std::make_unique<Readback>();
     *readback_ = {options.width, options.height, hdr, caustic, inscatter, {}, {}, {}};
     if (hdr) {
@@ -392,6 +392,10 @@ const Renderer::Readback& Renderer::readback_targets(const RenderOptions& option
         if (inscatter) readback_->inscatter = Buffer(context_, desc, "in-scatter layer readback");
     }
     return *readback_;
+}
+
+void Renderer::forget_compiled_frames() {
+    for (std::unique_ptr<CompiledFrame>& frame : compiled_) frame.reset();
 }
 
 Renderer::Renderer(Context& context) : context_(context), constants_(std::make_unique<FrameConstants>()) {}
@@ -421,7 +425,7 @@ fg::FrameExecutor& Renderer::prepare_frame(const Scene& scene, const RenderOptio
 
 void Renderer::reload_shaders() {
     vkDeviceWaitIdle(context_.device());
-    frame_.reset();
+    forget_compiled_frames();
     pipelines_ = fg::PipelineStore{};
 }
 
@@ -513,22 +517,25 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
     if (options.timing != fg::TimingMode::None) passes::add_calibration_pass(*graph);
     graph->compile(width, height);
     const fg::ExecutorOptions executor_options{options.check_finite, options.timing};
-    const bool reuse = frame_ && frame_->executor->can_adopt(*graph, executor_options);
+    // A supersampled frame's first sub-frame and its later ones compile to two graphs: each keeps
+    // its own device objects, so that alternating between them makes none.
+    std::unique_ptr<CompiledFrame>& compiled = compiled_[static_cast<size_t>(options.caustic_map_carry)];
+    const bool reuse = compiled && compiled->executor->can_adopt(*graph, executor_options);
     last_declare_ms_ =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - declare_start).count();
     if (reuse) {
-        frame_->executor->adopt(*graph);
-        frame_->graph = std::move(graph);  // the previous frame's declaration goes; its objects stay
-        return *frame_;
+        compiled->executor->adopt(*graph);
+        compiled->graph = std::move(graph);  // the previous frame's declaration goes; its objects stay
+        return *compiled;
     }
-    frame_.reset();  // release the old graph's resources before making new ones
+    compiled.reset();  // release the old graph's resources before making new ones
     auto frame = std::make_unique<CompiledFrame>();
     frame->graph = std::move(graph);
     frame->options = executor_options;
     frame->executor = std::make_unique<fg::FrameExecutor>(context_, *frame->graph, pipelines_, executor_options);
     ++realize_count_;
-    frame_ = std::move(frame);
-    return *frame_;
+    compiled = std::move(frame);
+    return *compiled;
 }
 
 }  // namespace vkw

@@ -14,6 +14,7 @@
 #include "passes/caustics/caustics_read_region.hpp"
 #include "passes/common/frame_constants.hpp"
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -131,6 +132,7 @@ private:
     struct CompiledFrame;
     struct Readback;
     CompiledFrame& prepare(const Scene& scene, const RenderOptions& options, const FrameOutput* output);
+    void forget_compiled_frames();
     const Readback& readback_targets(const RenderOptions& options, bool window_output);
     const passes::OceanSpectrumBuffer* ocean_spectrum(const Scene& scene);
     const passes::ReceiverMeshes* receiver_meshes(const Scene& scene);
@@ -138,8 +140,9 @@ private:
     Context& context_;
     fg::PipelineStore pipelines_;
     std::unique_ptr<FrameConstants> constants_;  // stable address, read when the frame records
-    std::unique_ptr<Readback> readback_;         // declared before frame_: destroyed after it
-    std::unique_ptr<CompiledFrame> frame_;
+    std::unique_ptr<Readback> readback_;         // declared before compiled_: destroyed after them
+    // Per RenderOptions::caustic_map_carry: the frame's declaration and the objects that run it.
+    std::array<std::unique_ptr<CompiledFrame>, 3> compiled_;
     std::unique_ptr<passes::OceanSpectrumBuffer> ocean_;    // the FFT ocean's h0 on the device
     std::shared_ptr<const FftOceanSpectrum> ocean_source_;  // the CPU spectrum it was made from
     std::unique_ptr<passes::ReceiverMeshes> receivers_;     // the scene's receiver meshes on the device

@@ -7,6 +7,27 @@
 
 namespace vkw {
 
+void add_sub_frame_times(fg::FrameReport& sum, const fg::FrameReport& sub) {
+    for (const fg::PassTime& pass : sub.passes) {
+        const auto same = std::find_if(sum.passes.begin(), sum.passes.end(),
+                                       [&](const fg::PassTime& p) { return p.pass == pass.pass; });
+        if (same != sum.passes.end()) {
+            same->ms += pass.ms;
+        } else {
+            sum.passes.push_back(pass);
+        }
+    }
+    sum.total_ms += sub.total_ms;
+}
+
+std::vector<glm::dvec2> sub_frame_shifts(const PixelFilter& filter, uint32_t width, uint32_t height) {
+    std::vector<glm::dvec2> shifts;
+    for (uint32_t i = 0; i < filter.samples; ++i) {
+        shifts.push_back(image_shift_for_pixel_offset(filter.stratum_centre(i), width, height));
+    }
+    return shifts;
+}
+
 RenderResult render_filtered(Renderer& renderer, const Scene& scene, const RenderOptions& options,
                              const PixelFilter& filter, const std::function<void(uint32_t done)>& after_sub_frame) {
     if (!filter.is_box()) {
@@ -16,10 +37,7 @@ RenderResult render_filtered(Renderer& renderer, const Scene& scene, const Rende
     }
     Scene shifted = scene;
     RenderOptions sub_options = options;
-    for (uint32_t i = 0; i < filter.samples; ++i) {
-        sub_options.sub_frame_shifts.push_back(
-            image_shift_for_pixel_offset(filter.stratum_centre(i), options.width, options.height));
-    }
+    sub_options.sub_frame_shifts = sub_frame_shifts(filter, options.width, options.height);
     RenderResult sum;
     std::vector<std::vector<float>> layers;  // the sums of the sub-frames' layers, as the first names them
     for (uint32_t i = 0; i < filter.samples; ++i) {
@@ -40,17 +58,7 @@ RenderResult render_filtered(Renderer& renderer, const Scene& scene, const Rende
         for (size_t l = 0; l < layers.size(); ++l) {
             for (size_t k = 0; k < layers[l].size(); ++k) layers[l][k] += sub.image.layers[l].rgb[k];
         }
-        // Each pass's time summed by name: the later sub-frames leave out the map's passes.
-        for (const fg::PassTime& pass : sub.timing.passes) {
-            const auto same = std::find_if(sum.timing.passes.begin(), sum.timing.passes.end(),
-                                           [&](const fg::PassTime& p) { return p.pass == pass.pass; });
-            if (same != sum.timing.passes.end()) {
-                same->ms += pass.ms;
-            } else {
-                sum.timing.passes.push_back(pass);
-            }
-        }
-        sum.timing.total_ms += sub.timing.total_ms;
+        add_sub_frame_times(sum.timing, sub.timing);
     }
     const float scale = 1.0f / static_cast<float>(filter.samples);
     for (float& value : sum.image.rgba) value *= scale;

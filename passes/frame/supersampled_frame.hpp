@@ -14,8 +14,16 @@
 
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 namespace vkw {
+
+// The image-plane shifts (Camera::image_shift_ndc) of the filter's sub-frames at width x height.
+std::vector<glm::dvec2> sub_frame_shifts(const PixelFilter& filter, uint32_t width, uint32_t height);
+
+// Adds a sub-frame's pass times to the frame's, by pass name (the later sub-frames leave out the
+// caustic map's passes), and its total.
+void add_sub_frame_times(fg::FrameReport& sum, const fg::FrameReport& sub);
 
 // `after_sub_frame`, if given, is called with the number of sub-frames done after each one (a
 // command's progress report).

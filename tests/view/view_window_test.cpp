@@ -339,6 +339,46 @@ TEST_F(ViewWindow, ASlowSceneIsAnnouncedOnACpuDevice) {
 // budget unless asked, so that it repeats. Which settings a budget reaches depends on the
 // machine's speed: pool's own take 20 to 40 ms a frame at 320x240 here, so 5 ms must turn
 // something down on lavapipe (on a GPU the scene's own settings may fit, and the test says so).
+// --spp 4: each frame shown is the mean of 4 sub-frames, summed on the device in the order and the
+// fp32 operations vkwater render --spp 4 takes on the CPU, so the screenshot is that image bit for
+// bit (relMSE exactly 0; the point-sampled frame differs from it by relMSE 0.026, so
+// a wrong shift or a missing sub-frame cannot pass). Under validation; the device objects are made
+// twice (the sub-frame that makes the caustic map, and those that read it) and then reused.
+TEST_F(ViewWindow, SupersampledScreenshotEqualsTheOffscreenRenderBitForBit) {
+    const fs::path shot = scratch("supersampled.exr"), rendered = scratch("supersampled_render.exr"),
+                   point = scratch("point_render.exr");
+    fs::remove(shot);
+    const std::string settings = " --set water.grid_resolution=64 --width 160 --height 120";
+    const std::string pose = " --set camera.position=[0.3,0.9,3.1] --set camera.target=[-0.2,-1.4,-1.8]";
+    const fs::path script = write_text("supersampled.txt",
+                                       "0: camera 0.3 0.9 3.1   -0.2 -1.4 -1.8\n"
+                                       "4: screenshot " +
+                                           shot.string() + "\n");
+    const Outcome view = vkwater("view " + kScenes + "pool.json" + settings +
+                                 " --paused --frames 5 --spp 4 --validation --script " + script.string());
+    ASSERT_EQ(view.exit_code, 0) << view.output;
+    EXPECT_NE(view.output.find("device objects made 2 times"), std::string::npos) << view.output;
+    const Outcome render =
+        vkwater("render " + kScenes + "pool.json" + settings + pose + " --spp 4 --out " + rendered.string(), false);
+    ASSERT_EQ(render.exit_code, 0) << render.output;
+    const Outcome centres =
+        vkwater("render " + kScenes + "pool.json" + settings + pose + " --out " + point.string(), false);
+    ASSERT_EQ(centres.exit_code, 0) << centres.output;
+    const vkw::ImageRGBA32F image = vkw::read_exr(shot);
+    EXPECT_EQ(vkw::metrics::compare_images(image, vkw::read_exr(rendered)).rel_mse, 0.0);
+    EXPECT_GT(vkw::metrics::compare_images(image, vkw::read_exr(point)).rel_mse, 1e-4);
+    bool filter_recorded = false;
+    for (const vkw::ImageAttribute& a : image.attributes) {
+        if (a.name == "vkwater/filter") filter_recorded = a.value.rfind("box: 4 samples per pixel", 0) == 0;
+    }
+    EXPECT_TRUE(filter_recorded);
+    // A budget chooses its settings at one sample per pixel.
+    const Outcome both = vkwater("view " + kScenes + "pool.json" + settings + " --frames 2 --spp 4 --budget-ms 50");
+    EXPECT_EQ(both.exit_code, 1) << both.output;
+    EXPECT_NE(both.output.find("--spp 4: --budget-ms chooses its settings at one sample per pixel"), std::string::npos)
+        << both.output;
+}
+
 TEST_F(ViewWindow, ABudgetIsAnnouncedChangesSettingsCleanlyAndEndsWithThem) {
     const std::string view = "view " + kScenes + "pool.json --width 320 --height 240 --validation";
     const Outcome budgeted = vkwater(view + " --frames 60 --budget-ms 5");

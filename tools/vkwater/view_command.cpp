@@ -58,13 +58,16 @@ Run add_view_command(CLI::App& app) {
         ->check(CLI::Range(1u, 16384u))
         ->capture_default_str();
     add_render_scale_option(*command, args->viewer.render_scale);
+    add_spp_option(*command, args->viewer.spp,
+                   "more each frame shown averages k^2 sub-frames shifted to the centres of the pixel's k x k strata "
+                   "(the box filter of render --spp, the same image; the caustic photons traced once for all of them)");
     command
         ->add_option("--budget-ms", args->viewer.budget_ms,
                      "Keep the frame time within this many milliseconds by choosing the settings (resolution "
                      "scale, photon grid, water mesh, godrays, scene lookup steps) with the lowest expected error that "
                      "fit; 0 turns it "
                      "off (default: the display's refresh interval on a GPU, 66 on a CPU device; none with "
-                     "--frames, --script or --render-scale)")
+                     "--frames, --script, --render-scale or --spp)")
         ->check(finite_number() & CLI::NonNegativeNumber);
     command->add_option("--present", args->present, "Present mode: fifo, mailbox or immediate")
         ->check(CLI::IsMember({"fifo", "mailbox", "immediate"}))

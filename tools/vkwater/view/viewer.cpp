@@ -13,8 +13,10 @@
 #include "engine/window/glfw_window.hpp"
 #include "engine/window/imgui_layer.hpp"
 #include "engine/window/screenshot.hpp"
+#include "passes/frame/accumulate.hpp"
 #include "passes/frame/frame_needs.hpp"
 #include "passes/frame/renderer.hpp"
+#include "passes/frame/supersampled_frame.hpp"
 #include "passes/present/present_graph.hpp"
 #include "passes/present/present_handoff.hpp"
 #include "tools/vkwater/budget/budget_controller.hpp"
@@ -96,7 +98,8 @@ private:
     void run_command(const ScriptCommand& command);
     void update_ui_and_camera(double wall_dt);
     void serve_requests();
-    fg::FrameExecutor& prepare_scene_frame();
+    fg::FrameExecutor& prepare_scene_frame(uint32_t sub_frame = 0);
+    fg::FrameReport run_earlier_sub_frames(bool timed);
     bool render_frame();
     void note_pass_list(const fg::FrameGraph& graph);
     double choose_budget_ms() const;
@@ -116,6 +119,8 @@ private:
     fg::PipelineStore present_pipelines_;
     std::unique_ptr<ImGuiLayer> imgui_;
     Image window_hdr_;             // the hand-off image: the frame's HDR colour, the swapchain's size
+    PixelFilter filter_;           // --spp
+    Image sub_frame_sum_;          // with a box filter: the sub-frames' running sum, window_hdr_'s size
     uint64_t hdr_generation_ = 0;  // names window_hdr_ in the renderer's configuration
     std::vector<std::unique_ptr<PresentGraph>> present_graphs_;  // one per swapchain image
     passes::PresentTonemapSettings tonemap_;
@@ -156,6 +161,7 @@ private:
 
 Viewer::Viewer(const ViewerOptions& options) : options_(options) {
     scripted_ = options_.frames > 0 || !options_.script.empty();
+    filter_ = pixel_filter_from_spp(options_.spp);
     controls_.paused = options_.paused;
     overrides_ = options_.overrides;
     load_scene_state();  // a bad scene fails before any window opens
@@ -229,11 +235,15 @@ double Viewer::choose_budget_ms() const {
             throw UserError("--render-scale " + format_number(options_.render_scale) +
                             ": --budget-ms chooses the resolution scale itself (accepted: one of the two)");
         }
+        if (*options_.budget_ms > 0.0 && filter_.is_box()) {
+            throw UserError("--spp " + std::to_string(options_.spp) +
+                            ": --budget-ms chooses its settings at one sample per pixel (accepted: --spp 1 with it)");
+        }
         return *options_.budget_ms;
     }
     // Scripted runs repeat exactly (a screenshot equals vkwater render's image); a chosen
-    // resolution scale is the user's setting.
-    if (scripted_ || options_.render_scale != 1.0) return 0.0;
+    // resolution scale or sample count is the user's setting.
+    if (scripted_ || options_.render_scale != 1.0 || filter_.is_box()) return 0.0;
     if (context_->is_cpu_device()) return kCpuBudgetMs;
     const double refresh = window_->refresh_interval_ms();
     return refresh > 0.0 ? refresh : kGpuBudgetMs;
@@ -302,6 +312,11 @@ void Viewer::recreate_swapchain(VkExtent2D size) {
                    VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT},
                   "window HDR");
         ++hdr_generation_;
+        if (filter_.is_box()) {
+            sub_frame_sum_ = Image(
+                *context_, {extent.width, extent.height, VK_FORMAT_R32G32B32A32_SFLOAT, passes::kSubFrameSumUsage},
+                "sub-frame sum");
+        }
     }
     for (uint32_t i = 0; i < swapchain_->image_count(); ++i)
         present_graphs_.push_back(make_present_graph(i, VK_NULL_HANDLE));
@@ -432,33 +447,67 @@ void Viewer::serve_requests() {
     }
 }
 
-fg::FrameExecutor& Viewer::prepare_scene_frame() {
+fg::ImportedImage imported_image(const Image& image) {
+    fg::ImportedImage imported;
+    imported.image = image.handle();
+    imported.view = image.view();
+    imported.width = image.desc().width;
+    imported.height = image.desc().height;
+    imported.format = image.desc().format;
+    return imported;
+}
+
+// With a box filter, sub-frame `sub_frame` of the frame: its camera shifted to its stratum's
+// centre, its colour added into the running sum, and the sum handed to the window (every
+// sub-frame's graph the same but for the caustic map's passes, so that two sets of device objects
+// serve them all; the window shows only the last one's).
+fg::FrameExecutor& Viewer::prepare_scene_frame(uint32_t sub_frame) {
     RenderOptions options;
     options.width = swapchain_->extent().width;
     options.height = swapchain_->extent().height;
     options.render_scale = options_.render_scale;
     apply_budget(options);
     // The hand-off image is imported: a new one (a new size) is a new graph.
-    const FrameOutput output{[this](fg::FrameGraph& graph, fg::ImageHandle hdr) {
-        fg::ImportedImage target;
-        target.image = window_hdr_.handle();
-        target.view = window_hdr_.view();
-        target.width = window_hdr_.desc().width;
-        target.height = window_hdr_.desc().height;
-        target.format = window_hdr_.desc().format;
-        passes::add_present_handoff_pass(graph, hdr, target);
+    const FrameOutput output{[this, sub_frame](fg::FrameGraph& graph, fg::ImageHandle hdr) {
+        if (filter_.is_box()) {
+            hdr = passes::add_sub_frame_accumulation(graph, hdr, imported_image(sub_frame_sum_), sub_frame,
+                                                     filter_.samples);
+        }
+        passes::add_present_handoff_pass(graph, hdr, imported_image(window_hdr_));
     }};
+    const glm::dvec2 centre_shift = scene_->camera.image_shift_ndc;
+    if (filter_.is_box()) {
+        options.sub_frame_shifts = sub_frame_shifts(filter_, options.width, options.height);
+        options.caustic_map_carry = sub_frame == 0 ? CausticMapCarry::Keep : CausticMapCarry::Reuse;
+        scene_->camera.image_shift_ndc = options.sub_frame_shifts[sub_frame];
+    }
     try {
         scene_executor_ = &renderer_->prepare_frame(*scene_, options, output);
     } catch (const UserError& error) {
         // A setting the device cannot take (a water grid too large for its memory): in a
         // script that is the user's error; in the panel the setting is undone and named.
+        scene_->camera.image_shift_ndc = centre_shift;
         if (scripted_ || !before_panel_) throw;
         before_panel_->restore(*scene_);
         message_ = std::string("refused: ") + error.what();
+        if (filter_.is_box()) scene_->camera.image_shift_ndc = options.sub_frame_shifts[sub_frame];
         scene_executor_ = &renderer_->prepare_frame(*scene_, options, output);
     }
+    scene_->camera.image_shift_ndc = centre_shift;  // the frame's declaration has read it
     return *scene_executor_;
+}
+
+// With a box filter, every sub-frame but the last, each run alone (the window's submission holds
+// the last); their pass times when `timed`.
+fg::FrameReport Viewer::run_earlier_sub_frames(bool timed) {
+    fg::FrameReport report;
+    if (!filter_.is_box()) return report;
+    frames_->wait_all();  // the frame in flight still reads the sum and the hand-off image
+    for (uint32_t i = 0; i + 1 < filter_.samples; ++i) {
+        const fg::FrameReport sub = prepare_scene_frame(i).execute();
+        if (timed) add_sub_frame_times(report, sub);
+    }
+    return report;
 }
 
 void Viewer::note_pass_list(const fg::FrameGraph& graph) {
@@ -471,10 +520,11 @@ void Viewer::note_pass_list(const fg::FrameGraph& graph) {
 
 bool Viewer::render_frame() {
     const Clock::time_point start = Clock::now();
-    fg::FrameExecutor& executor = prepare_scene_frame();
-    note_pass_list(executor.graph());
     const bool screenshot = !screenshots_.empty();
     const bool timing = options_.timing_every > 0 && frame_ >= timing_due_ && frame_ >= FrameStats::kWarmupFrames;
+    fg::FrameReport report = run_earlier_sub_frames(timing);
+    fg::FrameExecutor& executor = prepare_scene_frame(filter_.samples - 1);
+    note_pass_list(executor.graph());
 
     FramesInFlight::Slot& slot = frames_->next_slot();
     uint32_t image = 0;
@@ -483,9 +533,8 @@ bool Viewer::render_frame() {
         recreate_swapchain(window_->framebuffer_size());
         return false;
     }
-    fg::FrameReport report;
-    if (timing || screenshot) frames_->wait_all();  // these frames run alone
-    if (timing) report = executor.execute();        // each pass alone, timed (fences on CPU devices)
+    if (timing || screenshot) frames_->wait_all();                // these frames run alone
+    if (timing) add_sub_frame_times(report, executor.execute());  // each pass alone, timed (fences on CPU devices)
     frames_->begin(slot);
     if (!timing) executor.record(slot.cmd);
     Buffer readback;
@@ -536,7 +585,7 @@ bool Viewer::render_frame() {
                           stats_.recent_frame_ms());
             const std::filesystem::path png = write_screenshot(
                 exr, static_cast<const float*>(readback.mapped()), extent.width, extent.height, tonemap_.exposure,
-                cli::image_attributes({options_.scene, overrides_, "real-time (vkwater view)", PixelFilter{}.describe(),
+                cli::image_attributes({options_.scene, overrides_, "real-time (vkwater view)", filter_.describe(),
                                        context_->device_name(), time},
                                       scene_->camera));
             std::printf("frame %llu: wrote %s (linear HDR, %ux%u) and %s\n", static_cast<unsigned long long>(frame_),

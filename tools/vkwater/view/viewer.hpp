@@ -5,7 +5,9 @@
 // present graph of the acquired swapchain image (tonemap, overlay), waiting for the image and
 // for the previous frame, and presenting. Every `timing_every` frames (and on the frame after
 // the pass list changes) the scene graph runs alone instead, one pass per submission, for the
-// per-pass times. With `frames` it stops after that many frames and prints the summary.
+// per-pass times. With more than one sample per pixel the frame's earlier sub-frames run alone
+// first, each adding its colour into the running sum that the last one's hand-off shows. With
+// `frames` it stops after that many frames and prints the summary.
 #pragma once
 
 #include "engine/scene/scene.hpp"
@@ -31,8 +33,12 @@ struct ViewerOptions {
     bool allow_outside_paths = false;    // --allow-outside-paths
     uint32_t width = 800, height = 600;  // the window's initial framebuffer size
     double render_scale = 1.0;           // RenderOptions::render_scale: the scene's fraction of the window per side
+    // Samples per pixel (--spp, a square k^2): each frame shown is the mean of k^2 sub-frames, the
+    // box filter vkwater render --spp takes, made on the device (passes/frame/accumulate.hpp).
+    int64_t spp = 1;
     // The frame-time budget (tools/vkwater/budget/): nullopt for the default (the present interval
-    // on a GPU, kCpuBudgetMs on a CPU device, none in scripted runs or with a render_scale); 0 none.
+    // on a GPU, kCpuBudgetMs on a CPU device, none in scripted runs, with a render_scale or with
+    // more than one sample per pixel); 0 none.
     std::optional<double> budget_ms;
     PresentMode present = PresentMode::Fifo;
     uint32_t frames = 0;                             // stop after this many frames; 0: when the window closes
