@@ -1,7 +1,11 @@
 #include "engine/framegraph/pass_context.hpp"
 
+#include "engine/core/errors.hpp"
 #include "engine/framegraph/executor.hpp"
 #include "engine/vk/context.hpp"
+#include "engine/vk/spirv_reflection.hpp"
+
+#include <algorithm>
 
 namespace vkw::fg {
 
@@ -94,7 +98,20 @@ void PassContext::bind(const Pipeline& pipeline, const std::vector<DescriptorBin
 void PassContext::push_descriptors(const Pipeline& pipeline, const std::vector<DescriptorBinding>& bindings) const {
     if (bindings.empty()) return;
     std::vector<VkWriteDescriptorSet> writes;
+    const std::vector<VkDescriptorSetLayoutBinding>& layout = pipeline.layout_desc().bindings;
     for (const DescriptorBinding& binding : bindings) {
+        // A binding the layout lacks is one this shader variant compiles out (the pass binds what
+        // all its variants may read); a descriptor must have its binding's type (Vulkan's rule for
+        // writes), else the pass and its shaders disagree.
+        const auto slot = std::find_if(layout.begin(), layout.end(), [&](const VkDescriptorSetLayoutBinding& b) {
+            return b.binding == binding.binding;
+        });
+        if (slot == layout.end()) continue;
+        if (slot->descriptorType != binding.type) {
+            throw InternalError("pass '" + executor_.graph().passes()[pass_].name + "' binds a " +
+                                descriptor_type_name(binding.type) + " at binding " + std::to_string(binding.binding) +
+                                ", where its pipeline's shaders read a " + descriptor_type_name(slot->descriptorType));
+        }
         VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         write.dstBinding = binding.binding;
         write.descriptorCount = 1;
@@ -108,11 +125,19 @@ void PassContext::push_descriptors(const Pipeline& pipeline, const std::vector<D
         }
         writes.push_back(write);
     }
+    if (writes.empty()) return;
     executor_.context().push_descriptor_set()(cmd_, pipeline.bind_point(), pipeline.layout(), 0,
                                               static_cast<uint32_t>(writes.size()), writes.data());
 }
 
 void PassContext::push_constants(const Pipeline& pipeline, const void* data, uint32_t bytes) const {
+    // The bytes are the pass's C++ mirror of the shaders' block: a different size means the two
+    // have drifted apart (a member added on one side only).
+    if (bytes != pipeline.layout_desc().push_constant_bytes) {
+        throw InternalError("pass '" + executor_.graph().passes()[pass_].name + "' pushes " + std::to_string(bytes) +
+                            " bytes of constants, but its pipeline's push-constant block is " +
+                            std::to_string(pipeline.layout_desc().push_constant_bytes) + " bytes");
+    }
     vkCmdPushConstants(cmd_, pipeline.layout(), VK_SHADER_STAGE_ALL, 0, bytes, data);
 }
 

@@ -10,8 +10,22 @@
 
 namespace vkw {
 
+namespace {
+
+// A desc that leaves its layout empty gets the one its shaders ask for; a declared one is checked
+// against them.
+PipelineLayoutDesc checked_or_derived_layout(const std::string& name, const PipelineLayoutDesc& declared,
+                                             const std::vector<ReflectedStage>& stages) {
+    if (declared.bindings.empty() && declared.push_constant_bytes == 0) return derive_pipeline_layout(name, stages);
+    check_pipeline_layout(name, declared, stages);
+    return declared;
+}
+
+}  // namespace
+
 void Pipeline::create_layout(const Context& context, const PipelineLayoutDesc& desc, const std::string& name) {
     device_ = context.device();
+    layout_desc_ = desc;
     VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     set_info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
     set_info.bindingCount = static_cast<uint32_t>(desc.bindings.size());
@@ -34,8 +48,8 @@ Pipeline::Pipeline(const Context& context, const ComputePipelineDesc& desc, cons
     // The check comes before any object of this pipeline exists: a throw from a constructor
     // runs no destructor, so a layout made first would leak.
     ShaderModule shader(context, desc.shader);
-    check_pipeline_layout(name, desc.layout, {reflect_spirv(shader.words(), shader.file())});
-    create_layout(context, desc.layout, name);
+    create_layout(context, checked_or_derived_layout(name, desc.layout, {reflect_spirv(shader.words(), shader.file())}),
+                  name);
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -57,8 +71,7 @@ Pipeline::Pipeline(const Context& context, const GraphicsPipelineDesc& desc, con
         reflected.push_back(reflect_spirv(fragment->words(), fragment->file()));
     }
     // Before the layout, as in the compute constructor: nothing is left to leak on a throw.
-    check_pipeline_layout(name, desc.layout, reflected);
-    create_layout(context, desc.layout, name);
+    create_layout(context, checked_or_derived_layout(name, desc.layout, reflected), name);
 
     std::vector<VkPipelineShaderStageCreateInfo> stages;
     VkPipelineShaderStageCreateInfo stage{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};

@@ -11,6 +11,9 @@ namespace vkw {
 
 class Context;
 
+// Left empty (no bindings, no push constants), the layout is the one the pipeline's shaders ask
+// for (derive_pipeline_layout, engine/vk/spirv_reflection.hpp); a declared one is checked against
+// them (check_pipeline_layout).
 struct PipelineLayoutDesc {
     std::vector<VkDescriptorSetLayoutBinding> bindings;  // set 0, pushed at record time
     uint32_t push_constant_bytes = 0;                    // visible to every stage
@@ -59,6 +62,8 @@ public:
     VkPipeline handle() const { return pipeline_; }
     VkPipelineLayout layout() const { return layout_; }
     VkPipelineBindPoint bind_point() const { return bind_point_; }
+    // The layout the pipeline was made with: declared, or derived from its shaders.
+    const PipelineLayoutDesc& layout_desc() const { return layout_desc_; }
 
 private:
     void create_layout(const Context& context, const PipelineLayoutDesc& desc, const std::string& name);
@@ -67,6 +72,7 @@ private:
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
     VkPipelineBindPoint bind_point_ = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    PipelineLayoutDesc layout_desc_;
 };
 
 }  // namespace vkw

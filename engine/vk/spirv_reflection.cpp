@@ -131,10 +131,37 @@ bool type_serves(VkDescriptorType declared, VkDescriptorType used) {
            (used == VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE || used == VK_DESCRIPTOR_TYPE_SAMPLER);
 }
 
+// The layout's entry for binding `number` (const or not), or its end.
+template <class Bindings>
+auto find_binding(Bindings& bindings, uint32_t number) {
+    return std::find_if(bindings.begin(), bindings.end(),
+                        [&](const VkDescriptorSetLayoutBinding& d) { return d.binding == number; });
+}
+
+std::string outside_set_zero(const ReflectedBinding& b) {
+    return "set " + std::to_string(b.set) + " binding " + std::to_string(b.binding) + " is " +
+           binding_text(b.type, b.count);
+}
+
 std::mutex records_mutex;
 std::map<std::string, LayoutCheckRecord>& records() {
     static std::map<std::string, LayoutCheckRecord> by_pass;
     return by_pass;
+}
+
+// Keeps a pipeline's figures for layout_check_records.
+void record_layout(const std::string& pass, uint32_t push_bytes, const std::vector<ReflectedStage>& stages,
+                   std::vector<VkDescriptorSetLayoutBinding> unused) {
+    LayoutCheckRecord record;
+    record.pass = pass;
+    record.declared_push_bytes = push_bytes;
+    for (const ReflectedStage& stage : stages) {
+        record.shaders.push_back(stage.shader);
+        record.shader_push_bytes.push_back(stage.push_constant_bytes);
+    }
+    record.unused = std::move(unused);
+    std::lock_guard lock(records_mutex);
+    records()[pass] = std::move(record);
 }
 
 }  // namespace
@@ -262,12 +289,8 @@ std::vector<VkDescriptorSetLayoutBinding> check_pipeline_layout(const std::strin
         };
         for (const ReflectedBinding& b : stage.bindings) {
             const std::string shader_side = binding_text(b.type, b.count);
-            if (b.set != 0) {
-                fail("set " + std::to_string(b.set) + " binding " + std::to_string(b.binding) + " is " + shader_side +
-                     " in the shader but the declared layout has only set 0");
-            }
-            const auto it = std::find_if(declared.bindings.begin(), declared.bindings.end(),
-                                         [&](const VkDescriptorSetLayoutBinding& d) { return d.binding == b.binding; });
+            if (b.set != 0) fail(outside_set_zero(b) + " in the shader but the declared layout has only set 0");
+            const auto it = find_binding(declared.bindings, b.binding);
             const std::string name = "binding " + std::to_string(b.binding);
             if (it == declared.bindings.end()) {
                 fail(name + " is " + shader_side + " in the shader but is not in the declared layout");
@@ -301,20 +324,42 @@ std::vector<VkDescriptorSetLayoutBinding> check_pipeline_layout(const std::strin
             (longest == stages.end() ? "" : "; " + reflected_text(*longest)) + "]");
     }
 
-    LayoutCheckRecord record;
-    record.pass = pass;
-    record.declared_push_bytes = declared.push_constant_bytes;
-    for (const ReflectedStage& stage : stages) {
-        record.shaders.push_back(stage.shader);
-        record.shader_push_bytes.push_back(stage.push_constant_bytes);
-    }
+    std::vector<VkDescriptorSetLayoutBinding> unused;
     for (size_t i = 0; i < declared.bindings.size(); ++i) {
-        if (!used[i]) record.unused.push_back(declared.bindings[i]);
+        if (!used[i]) unused.push_back(declared.bindings[i]);
     }
-    std::vector<VkDescriptorSetLayoutBinding> unused = record.unused;
-    std::lock_guard lock(records_mutex);
-    records()[pass] = std::move(record);
+    record_layout(pass, declared.push_constant_bytes, stages, unused);
     return unused;
+}
+
+PipelineLayoutDesc derive_pipeline_layout(const std::string& pass, const std::vector<ReflectedStage>& stages) {
+    PipelineLayoutDesc layout;
+    for (const ReflectedStage& stage : stages) {
+        const auto fail = [&](const std::string& what) {
+            throw InternalError("pipeline '" + pass + "' (" + stage.shader + "): " + what + " [" +
+                                reflected_text(stage) + "]");
+        };
+        for (const ReflectedBinding& b : stage.bindings) {
+            const std::string shader_side = binding_text(b.type, b.count);
+            if (b.set != 0) fail(outside_set_zero(b) + ": a pipeline has one descriptor set, set 0");
+            const auto it = find_binding(layout.bindings, b.binding);
+            if (it == layout.bindings.end()) {
+                layout.bindings.push_back({b.binding, b.type, b.count, static_cast<VkShaderStageFlags>(stage.stage)});
+                continue;
+            }
+            if (it->descriptorType != b.type) {
+                fail("binding " + std::to_string(b.binding) + " is " + shader_side + " in this stage but " +
+                     binding_text(it->descriptorType, it->descriptorCount) + " in another");
+            }
+            it->descriptorCount = std::max(it->descriptorCount, b.count);
+            it->stageFlags |= stage.stage;
+        }
+        layout.push_constant_bytes = std::max(layout.push_constant_bytes, stage.push_constant_bytes);
+    }
+    std::sort(layout.bindings.begin(), layout.bindings.end(),
+              [](const auto& a, const auto& b) { return a.binding < b.binding; });
+    record_layout(pass, layout.push_constant_bytes, stages, {});
+    return layout;
 }
 
 std::vector<LayoutCheckRecord> layout_check_records() {

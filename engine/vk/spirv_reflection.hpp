@@ -41,6 +41,13 @@ std::vector<VkDescriptorSetLayoutBinding> check_pipeline_layout(const std::strin
                                                                 const PipelineLayoutDesc& declared,
                                                                 const std::vector<ReflectedStage>& stages);
 
+// The layout the stages ask for (a pipeline whose desc leaves its layout empty gets this one):
+// set 0's bindings as the shaders declare them, each visible to the stages that use it, and the
+// longest push-constant block. The descriptor types of a binding the stages share must agree; a
+// binding in another set than 0 is refused. Throws InternalError naming the pass and the shader.
+// Recorded like a checked layout (layout_check_records), with no unused binding.
+PipelineLayoutDesc derive_pipeline_layout(const std::string& pass, const std::vector<ReflectedStage>& stages);
+
 // Every pipeline checked in this process, for the figures of a test: pipelines checked, and the
 // declared bindings that none of a pipeline's stages uses.
 struct LayoutCheckRecord {

@@ -55,9 +55,6 @@ CausticMap add_caustic_blur_pass(fg::FrameGraph& graph, const CausticMap& map, c
             [push](const Data& d, fg::PassContext& context) {
                 ComputePipelineDesc desc;
                 desc.shader = "caustics/caustic_blur.comp";
-                desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                        {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
-                desc.layout.push_constant_bytes = sizeof(BlurPush);
                 const Pipeline& pipeline = context.pipeline("caustic blur", desc);
                 context.bind(pipeline, {context.storage_image(0, d.source), context.storage_image(1, d.target)});
                 context.push_constants(pipeline, push);

@@ -51,9 +51,6 @@ fg::ImageHandle add_caustic_receivers_pass(fg::FrameGraph& graph, const Receiver
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "receivers/floor.vert";
             desc.fragment_shader = "caustics/caustic_receivers.frag.solid";
-            desc.layout.bindings = {
-                {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT}};
-            desc.layout.push_constant_bytes = sizeof(ReceiverPush);
             desc.depth_test = true;
             desc.depth_write = true;
             const Pipeline& floor = context.pipeline("caustic receivers floor", desc);
@@ -65,12 +62,7 @@ fg::ImageHandle add_caustic_receivers_pass(fg::FrameGraph& graph, const Receiver
             use_receiver_mesh_vertices(mesh_desc);
             // Cutouts' holes show what lies behind them here too: that variant samples their alpha.
             const bool cutouts = meshes->has_cutouts();
-            if (cutouts) {
-                mesh_desc.fragment_shader = "caustics/caustic_receivers.frag.cutout";
-                mesh_desc.layout.bindings.push_back({kBaseColorTextureBinding,
-                                                     VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-                                                     VK_SHADER_STAGE_FRAGMENT_BIT});
-            }
+            if (cutouts) mesh_desc.fragment_shader = "caustics/caustic_receivers.frag.cutout";
             const Pipeline& mesh = context.pipeline(
                 cutouts ? "caustic receivers meshes with cutouts" : "caustic receivers meshes", mesh_desc);
             context.bind(mesh, {context.uniform_buffer(0, d.constants)});

@@ -81,14 +81,6 @@ CameraCaustics add_caustic_camera_splat_passes(fg::FrameGraph& graph, const Caus
         [push](const SplatData& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
             desc.shader = std::string("caustics/caustic_camera_splats.comp.") + (d.shadow ? "shadow" : "plain");
-            const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, compute},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
-                                    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
-                                    {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
-                                    {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute}};
-            d.shadow.add_layout(desc.layout.bindings, compute);
-            desc.layout.push_constant_bytes = sizeof(CameraSplatPush);
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
             fg::DescriptorBinding lost = context.storage_buffer(3, d.flux);
             lost.buffer.offset = 0;
@@ -131,12 +123,6 @@ CameraCaustics add_caustic_camera_splat_passes(fg::FrameGraph& graph, const Caus
         [resolve](const ResolveData& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
             desc.shader = "caustics/caustic_camera_resolve.comp";
-            const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, compute},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
-                                    {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
-                                    {3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute}};
-            desc.layout.push_constant_bytes = sizeof(CameraResolvePush);
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
             fg::DescriptorBinding flux = context.storage_buffer(1, d.flux);
             flux.buffer.offset = kCausticFluxHeaderBytes;

@@ -193,12 +193,6 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
                                  : kernel_variant == CausticKernel::Adaptive ? "adaptive"
                                                                              : "footprint";
             desc.shader = std::string("caustics/caustic_photons.comp.") + kernel + (d.shadow ? "_shadow" : "");
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
-            d.shadow.add_layout(desc.layout.bindings, VK_SHADER_STAGE_COMPUTE_BIT);
-            desc.layout.push_constant_bytes = sizeof(CausticPhotonPush);
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
             const VkPhysicalDeviceLimits& limits = context.context().properties().limits;
             const uint32_t r = push.resolution, s = push.sub_and_flags & 0xffu;

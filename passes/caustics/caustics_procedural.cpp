@@ -57,9 +57,6 @@ CausticMap add_caustic_procedural_pass(fg::FrameGraph& graph, const CausticInput
         [push](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
             desc.shader = "caustics/caustic_procedural.comp";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
-            desc.layout.push_constant_bytes = sizeof(ProceduralPush);
             const Pipeline& pipeline = context.pipeline("caustic procedural", desc);
             context.bind(pipeline, {context.storage_buffer(0, d.surface), context.storage_image(1, d.irradiance)});
             context.push_constants(pipeline, push);

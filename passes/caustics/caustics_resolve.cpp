@@ -42,9 +42,6 @@ CausticMap add_caustic_resolve_pass(fg::FrameGraph& graph, fg::BufferHandle flux
         [push, height](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
             desc.shader = "caustics/caustic_resolve.comp";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
-            desc.layout.push_constant_bytes = sizeof(ResolvePush);
             const Pipeline& pipeline = context.pipeline("caustic resolve", desc);
             const VkPhysicalDeviceLimits& limits = context.context().properties().limits;
             // Bands of at most 65535 groups of 8 rows, each within one binding.

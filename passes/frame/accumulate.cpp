@@ -38,9 +38,6 @@ fg::ImageHandle add_sub_frame_accumulation(fg::FrameGraph& graph, fg::ImageHandl
         [push](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
             desc.shader = "frame/accumulate.comp";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
-            desc.layout.push_constant_bytes = sizeof(AccumulatePush);
             const Pipeline& pipeline = context.pipeline("sub-frame accumulation", desc);
             context.bind(pipeline, {context.storage_image(0, d.colour), context.storage_image(1, d.sum)});
             context.push_constants(pipeline, push);

@@ -40,8 +40,6 @@ fg::ImageHandle add_upscale_pass(fg::FrameGraph& graph, fg::ImageHandle source, 
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "common/fullscreen.vert";
             desc.fragment_shader = "frame/upscale.frag";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}};
-            desc.layout.push_constant_bytes = sizeof(UpscalePush);
             const Pipeline& pipeline = context.pipeline("upscale", desc);
             context.bind(pipeline, {context.sampled(0, d.source)});  // the bilinear, clamped sampler
             context.push_constants(pipeline, UpscalePush{1.0f / float(width), 1.0f / float(height)});

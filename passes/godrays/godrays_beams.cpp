@@ -98,11 +98,6 @@ fg::BufferHandle add_godray_beams_pass(fg::FrameGraph& graph, const GodrayBeamIn
             const bool shadow = static_cast<bool>(d.shadow);
             ComputePipelineDesc desc;
             desc.shader = shadow ? "godrays/godray_beams.comp.shadow" : "godrays/godray_beams.comp.plain";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
-            d.shadow.add_layout(desc.layout.bindings, VK_SHADER_STAGE_COMPUTE_BIT);
-            desc.layout.push_constant_bytes = sizeof(GodrayBeamsPush);
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
             const VkPhysicalDeviceLimits& limits = context.context().properties().limits;
             for (const BeamChunk& chunk : beam_chunks(push.resolution, push.grid, limits.maxStorageBufferRange,

@@ -28,10 +28,6 @@ fg::ImageHandle add_godray_blur_pass(fg::FrameGraph& graph, fg::ImageHandle imag
         [along_x](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
             desc.shader = "godrays/godray_blur.comp";
-            desc.layout.bindings = {{1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
-            desc.layout.push_constant_bytes = 2 * sizeof(int32_t);
             const Pipeline& pipeline = context.pipeline("godray blur", desc);
             context.bind(pipeline, {context.sampled_nearest(1, d.source), context.sampled_nearest(2, d.view_depth),
                                     context.storage_image(3, d.target)});

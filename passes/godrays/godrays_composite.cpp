@@ -37,10 +37,6 @@ void add_godray_composite_pass(fg::FrameGraph& graph, fg::ImageHandle radiance, 
             desc.vertex_shader = "common/fullscreen.vert";
             desc.fragment_shader =
                 d.layer ? "godrays/godray_composite.frag.layer" : "godrays/godray_composite.frag.plain";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT},
-                                    {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT},
-                                    {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT},
-                                    {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}};
             desc.additive_blend = true;
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
             context.bind(pipeline,

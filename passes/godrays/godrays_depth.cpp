@@ -35,17 +35,10 @@ fg::ImageHandle add_godray_depth_pass(fg::FrameGraph& graph, float scale) {
         [](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
             desc.shader = d.camera_medium ? "godrays/godray_depth.comp.per_pixel" : "godrays/godray_depth.comp.frame";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
             std::vector<fg::DescriptorBinding> bindings{context.uniform_buffer(0, d.constants),
                                                         context.sampled_nearest(1, d.scene_depth),
                                                         context.storage_image(2, d.view_depth)};
-            if (d.camera_medium) {
-                desc.layout.bindings.push_back(
-                    {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT});
-                bindings.push_back(context.sampled_nearest(3, *d.camera_medium));
-            }
+            if (d.camera_medium) bindings.push_back(context.sampled_nearest(3, *d.camera_medium));
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
             context.bind(pipeline, bindings);
             const VkExtent2D size = context.extent(d.view_depth);

@@ -70,11 +70,6 @@ fg::BufferHandle add_godray_lines_passes(fg::FrameGraph& graph, const GodrayLine
         [push](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
             desc.shader = "godrays/godray_lines.comp";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
-            desc.layout.push_constant_bytes = sizeof(GodrayLinesPush);
             const Pipeline& pipeline = context.pipeline("godray lines", desc);
             context.bind(pipeline, {context.uniform_buffer(0, d.constants), context.storage_buffer(1, d.beams),
                                     context.sampled_nearest(2, d.view_depth), context.storage_buffer(3, d.radiance)});

@@ -65,23 +65,14 @@ fg::ImageHandle add_godray_march_pass(fg::FrameGraph& graph, const GodrayMarchIn
                                                                 : "plain";
             ComputePipelineDesc desc;
             desc.shader = "godrays/godray_march.comp." + variant;
-            constexpr VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, compute},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
-                                    {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
-                                    {3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute}};
             std::vector<fg::DescriptorBinding> bindings{
                 context.uniform_buffer(0, d.constants), context.storage_buffer(1, d.optics),
                 context.sampled_nearest(2, d.view_depth), context.storage_image(3, d.target)};
             if (d.caustic_map) {
-                desc.layout.bindings.push_back({4, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, compute});
-                desc.layout.bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute});
                 bindings.push_back(context.uniform_buffer(4, *d.caustic_frame));
                 bindings.push_back(context.sampled_nearest(5, *d.caustic_map));
             }
-            d.shadow.add_layout(desc.layout.bindings, compute);
             d.shadow.add_bindings(context, bindings);
-            desc.layout.push_constant_bytes = sizeof(GodrayMarchPush);
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
             context.bind(pipeline, bindings);
             context.push_constants(pipeline, push);

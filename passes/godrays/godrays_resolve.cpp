@@ -31,11 +31,6 @@ fg::ImageHandle add_godray_resolve_pass(fg::FrameGraph& graph, fg::BufferHandle 
         [levels](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
             desc.shader = "godrays/godray_resolve.comp";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
-            desc.layout.push_constant_bytes = sizeof levels;
             const Pipeline& pipeline = context.pipeline("godray resolve", desc);
             context.bind(pipeline, {context.uniform_buffer(0, d.constants), context.storage_buffer(1, d.radiance),
                                     context.sampled_nearest(2, d.view_depth), context.storage_image(3, d.image)});

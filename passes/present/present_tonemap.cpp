@@ -31,8 +31,6 @@ fg::ImageHandle add_present_tonemap_pass(fg::FrameGraph& graph, fg::ImageHandle 
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "common/fullscreen.vert";
             desc.fragment_shader = "present/present_tonemap.frag";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}};
-            desc.layout.push_constant_bytes = sizeof(TonemapPush);
             const Pipeline& pipeline = context.pipeline("present tonemap", desc);
             // texelFetch reads one texel per pixel: the sampler's filter never applies.
             context.bind(pipeline, {context.sampled_nearest(0, d.hdr)});

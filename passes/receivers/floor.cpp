@@ -28,8 +28,6 @@ void add_floor_pass(fg::FrameGraph& graph, bool caustic_layer) {
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "receivers/floor.vert";
             desc.fragment_shader = d.lighting.shader("receivers/receiver.frag") + d.layer.variant();
-            d.lighting.add_layout(desc.layout.bindings);
-            desc.layout.push_constant_bytes = sizeof(ReceiverPush);
             desc.depth_test = true;
             desc.depth_write = true;
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);

@@ -36,23 +36,6 @@ std::string LightingInputs::shader(const std::string& base) const {
            (camera_caustics ? "_camera_caustics" : "") + (sun_shadow ? "_shadow" : "");
 }
 
-void LightingInputs::add_layout(std::vector<VkDescriptorSetLayoutBinding>& bindings) const {
-    bindings.push_back(
-        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT});
-    bindings.push_back({1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
-    if (camera_medium)
-        bindings.push_back({3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
-    if (caustic_map) {
-        bindings.push_back({4, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
-        bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
-    }
-    if (camera_caustics) {
-        bindings.push_back({4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
-        bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
-    }
-    sun_shadow.add_layout(bindings, VK_SHADER_STAGE_FRAGMENT_BIT);
-}
-
 void LightingInputs::add_bindings(const fg::PassContext& context, std::vector<fg::DescriptorBinding>& bindings) const {
     bindings.push_back(context.uniform_buffer(0, constants));
     bindings.push_back(context.storage_buffer(1, optics));

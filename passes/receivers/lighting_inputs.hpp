@@ -33,7 +33,6 @@ struct LightingInputs {
     void declare(fg::PassBuilder& builder, const fg::Blackboard& blackboard, bool with_camera_medium = true);
     // "<shader>.<variant>" for a shader compiled with the lighting variants.
     std::string shader(const std::string& base) const;
-    void add_layout(std::vector<VkDescriptorSetLayoutBinding>& bindings) const;
     void add_bindings(const fg::PassContext& context, std::vector<fg::DescriptorBinding>& bindings) const;
 };
 

@@ -18,12 +18,6 @@ GraphicsPipelineDesc receiver_mesh_pipeline(const LightingInputs& lighting, cons
     use_receiver_mesh_vertices(desc);
     const bool varied = meshes.varied_base_color();
     desc.fragment_shader = lighting.shader("receivers/receiver.frag") + (varied ? "_mesh" : "") + variant_suffix;
-    lighting.add_layout(desc.layout.bindings);
-    if (varied) {
-        desc.layout.bindings.push_back(
-            {kBaseColorTextureBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
-    }
-    desc.layout.push_constant_bytes = sizeof(ReceiverPush);
     desc.depth_test = true;
     desc.depth_write = true;
     return desc;

@@ -120,11 +120,7 @@ SunShadowMap add_sun_shadow_pass(fg::FrameGraph& graph, const ReceiverMeshes& me
             use_receiver_mesh_vertices(desc, /*with_normal=*/false);
             desc.vertex_shader = "receivers/sun_shadow.vert";
             desc.fragment_shader = cutouts ? "receivers/sun_shadow.frag.cutout" : "receivers/sun_shadow.frag.solid";
-            desc.layout.push_constant_bytes = sizeof(ShadowPush);
-            if (cutouts) {
-                desc.layout.bindings = {{kBaseColorTextureBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-                                         VK_SHADER_STAGE_FRAGMENT_BIT}};
-            }
+            if (cutouts) {}
             desc.depth_test = true;
             desc.depth_write = true;
             const Pipeline& pipeline =
@@ -166,12 +162,6 @@ void SunShadowReads::declare(fg::PassBuilder& builder, const SunShadowMap* map, 
     if (!map) return;
     depth = builder.sample(map->depth, stages);
     space = builder.uniform_buffer(map->space, stages);
-}
-
-void SunShadowReads::add_layout(std::vector<VkDescriptorSetLayoutBinding>& bindings, VkShaderStageFlags stages) const {
-    if (!depth) return;
-    bindings.push_back({6, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages});
-    bindings.push_back({7, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stages});
 }
 
 void SunShadowReads::add_bindings(const fg::PassContext& context, std::vector<fg::DescriptorBinding>& bindings) const {

@@ -78,7 +78,6 @@ struct SunShadowReads {
 
     void declare(fg::PassBuilder& builder, const SunShadowMap* map, VkPipelineStageFlags2 stages);
     explicit operator bool() const { return depth.has_value(); }
-    void add_layout(std::vector<VkDescriptorSetLayoutBinding>& bindings, VkShaderStageFlags stages) const;
     void add_bindings(const fg::PassContext& context, std::vector<fg::DescriptorBinding>& bindings) const;
 };
 

@@ -32,13 +32,8 @@ void add_sky_pass(fg::FrameGraph& graph) {
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "common/fullscreen.vert";
             desc.fragment_shader = d.camera_medium ? "sky/sky.frag.per_pixel" : "sky/sky.frag.frame";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}};
             std::vector<fg::DescriptorBinding> bindings{context.uniform_buffer(0, d.constants)};
-            if (d.camera_medium) {
-                desc.layout.bindings.push_back(
-                    {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
-                bindings.push_back(context.sampled(3, *d.camera_medium));
-            }
+            if (d.camera_medium) bindings.push_back(context.sampled(3, *d.camera_medium));
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
             context.bind(pipeline, bindings);
             vkCmdDraw(context.cmd(), 3, 1, 0, 0);

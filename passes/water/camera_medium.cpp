@@ -32,9 +32,6 @@ void add_camera_medium_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "common/fullscreen.vert";
             desc.fragment_shader = "water/camera_medium_mask.frag";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
-            d.surface.add_fragment_layout(desc.layout.bindings);
-            desc.layout.push_constant_bytes = sizeof(WaterSurfacePush);
             const std::string key = d.surface.specialise(desc, "camera medium");
             const Pipeline& pipeline = context.pipeline(key, desc);
             std::vector<fg::DescriptorBinding> bindings{context.uniform_buffer(0, d.constants)};

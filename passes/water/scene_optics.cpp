@@ -19,8 +19,6 @@ void add_scene_optics_pass(fg::FrameGraph& graph) {
         [](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
             desc.shader = "water/scene_optics.comp";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
             const Pipeline& pipeline = context.pipeline("scene optics", desc);
             context.bind(pipeline, {context.uniform_buffer(0, d.constants), context.storage_buffer(1, d.optics)});
             vkCmdDispatch(context.cmd(), 1, 1, 1);

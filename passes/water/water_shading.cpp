@@ -71,19 +71,6 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
             desc.fragment_shader =
                 d.lighting.shader("water/water_surface.frag") + (views ? "_views" : "") + d.layer.variant();
             const bool layer_of_views = views && d.layer.image;
-            d.surface.add_layout(desc.layout.bindings);
-            if (views) {
-                desc.layout.bindings.push_back(
-                    {8, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
-                desc.layout.bindings.push_back(
-                    {9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
-            }
-            if (layer_of_views) {
-                desc.layout.bindings.push_back(
-                    {10, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT});
-            }
-            desc.layout.push_constant_bytes = sizeof(WaterSurfacePush);
-            d.lighting.add_layout(desc.layout.bindings);
             desc.depth_test = true;
             desc.depth_write = true;
             desc.topology = passes::WaterSurfaceReads::kTopology;

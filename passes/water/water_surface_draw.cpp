@@ -32,16 +32,6 @@ std::string WaterSurfaceReads::specialise(GraphicsPipelineDesc& desc, const std:
     return key + kModelNames[surface_model];
 }
 
-void WaterSurfaceReads::add_layout(std::vector<VkDescriptorSetLayoutBinding>& layout) const {
-    layout.push_back({2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr});
-    add_fragment_layout(layout);
-}
-
-void WaterSurfaceReads::add_fragment_layout(std::vector<VkDescriptorSetLayoutBinding>& layout) const {
-    layout.push_back({11, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
-    layout.push_back({12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
-}
-
 void WaterSurfaceReads::add_bindings(const fg::PassContext& context,
                                      std::vector<fg::DescriptorBinding>& bindings) const {
     bindings.push_back(context.storage_buffer(2, mesh));

@@ -49,10 +49,8 @@ struct WaterSurfaceReads {
     uint32_t surface_model = 0;
 
     void declare(fg::PassBuilder& builder, const WaterSurfaceBuffers& surface);
-    void add_layout(std::vector<VkDescriptorSetLayoutBinding>& layout) const;
     // The fragment stage's bindings alone (11 and 12), for passes that evaluate the surface
     // without drawing the mesh.
-    void add_fragment_layout(std::vector<VkDescriptorSetLayoutBinding>& layout) const;
     void add_fragment_bindings(const fg::PassContext& context, std::vector<fg::DescriptorBinding>& bindings) const;
     // The mesh's topology, for the pipelines that draw it: one strip per row of cells.
     static constexpr VkPrimitiveTopology kTopology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;

@@ -42,8 +42,6 @@ fg::BufferHandle add_fft_direction(fg::FrameGraph& graph, fg::BufferHandle grids
         [push](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
             desc.shader = "water/ocean_fft.comp";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
-            desc.layout.push_constant_bytes = sizeof(FftPush);
             const Pipeline& pipeline = context.pipeline("ocean fft", desc);
             context.bind(pipeline, {context.storage_buffer(0, d.grids)});
             context.push_constants(pipeline, push);

@@ -91,9 +91,6 @@ fg::BufferHandle add_water_grid_pass(fg::FrameGraph& graph, const WaterGridKerne
         [kernel, uniform, push](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
             desc.shader = kernel.shader;
-            desc.layout.bindings = {{0, kernel.input, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
-            desc.layout.push_constant_bytes = sizeof(Push);
             const Pipeline& pipeline = context.pipeline(kernel.pipeline, desc);
             const fg::DescriptorBinding in =
                 uniform ? context.uniform_buffer(0, d.input) : context.storage_buffer(0, d.input);

@@ -54,9 +54,6 @@ fg::BufferHandle add_spectra_pass(fg::FrameGraph& graph, const WaterSurfaceInput
         [push](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
             desc.shader = "water/ocean_spectra.comp";
-            desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
-            desc.layout.push_constant_bytes = sizeof(SpectraPush);
             const Pipeline& pipeline = context.pipeline("ocean spectra", desc);
             context.bind(pipeline, {context.storage_buffer(0, d.h0), context.storage_buffer(1, d.grids)});
             context.push_constants(pipeline, push);

@@ -1,10 +1,11 @@
-// Every pipeline of every built-in scene's frame graph passes the SPIR-V layout check
-// (engine/vk/spirv_reflection.hpp): each scene renders one 64x48 frame as it is, and with every
+// Every pipeline of every built-in scene's frame graph gets its layout from its shaders' SPIR-V
+// (engine/vk/spirv_reflection.hpp), and its pass binds descriptors of the layout's types and pushes
+// exactly its constant block (engine/framegraph/pass_context.cpp): each scene renders one 64x48 frame as it is, and with every
 // effect forced on (with and without the underwater view's per-pixel medium) in the variants that
 // pick other shaders (camera-space splats, marched godrays), most also with the caustic layer; on
 // pool also each splat kernel, procedural caustics, screen-space lookups, the other Fresnel forms
-// with the depth colour, and render-pass recording. A false positive here means that either the
-// rule or the pass's declared layout is wrong. The figures of the process (pipelines checked,
+// with the depth colour, and render-pass recording. A failure here names the pass and the binding
+// or the sizes that disagree. The figures of the process (pipelines checked,
 // declared bindings no stage uses, stages without a push block) are printed at its end.
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/spirv_reflection.hpp"

@@ -163,10 +163,42 @@ TEST_F(LayoutCheck, StagesMayDeclareALeadingPartOfThePushBlock) {
 
 TEST_F(LayoutCheck, GraphicsPipelineNamesTheFragmentShader) {
     GraphicsPipelineDesc desc = sky_desc();
-    desc.layout.bindings.clear();
+    // A declared layout (so it is checked, not derived) that lacks the shader's binding 0.
+    desc.layout.bindings = {{5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}};
     EXPECT_CONTAINS(creation_error(desc, "sky"),
                     "pipeline 'sky' (sky/sky.frag.frame.spv): binding 0 is uniform "
                     "buffer x1 in the shader but is not in the declared layout");
+}
+
+// An empty layout is the one the shaders ask for: the probe's eight bindings with their own types
+// (3 and 4 the separate texture and sampler, not combined), its array's count, visible to the
+// compute stage, and its 20-byte block; the sky's frame constants, visible to the
+// fragment stage alone (the fullscreen triangle's vertex shader reads nothing).
+TEST_F(LayoutCheck, AnEmptyLayoutIsDerivedFromTheShaders) {
+    ComputePipelineDesc probe = probe_desc();
+    const PipelineLayoutDesc declared = probe.layout;
+    probe.layout = {};
+    const Pipeline compute(context(), probe, "derived probe");
+    ASSERT_EQ(compute.layout_desc().bindings.size(), declared.bindings.size());
+    for (size_t i = 0; i < declared.bindings.size(); ++i) {
+        const VkDescriptorSetLayoutBinding& got = compute.layout_desc().bindings[i];
+        EXPECT_EQ(got.binding, declared.bindings[i].binding);
+        const VkDescriptorType own = got.binding == 3   ? VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE
+                                     : got.binding == 4 ? VK_DESCRIPTOR_TYPE_SAMPLER
+                                                        : declared.bindings[i].descriptorType;
+        EXPECT_EQ(got.descriptorType, own) << got.binding;
+        EXPECT_EQ(got.descriptorCount, declared.bindings[i].descriptorCount) << got.binding;
+        EXPECT_EQ(got.stageFlags, VkShaderStageFlags(VK_SHADER_STAGE_COMPUTE_BIT));
+    }
+    EXPECT_EQ(compute.layout_desc().push_constant_bytes, 20u);
+    GraphicsPipelineDesc sky = sky_desc();
+    sky.layout = {};
+    const Pipeline graphics(context(), sky, "derived sky");
+    ASSERT_EQ(graphics.layout_desc().bindings.size(), 1u);
+    EXPECT_EQ(graphics.layout_desc().bindings[0].binding, 0u);
+    EXPECT_EQ(graphics.layout_desc().bindings[0].descriptorType, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
+    EXPECT_EQ(graphics.layout_desc().bindings[0].stageFlags, VkShaderStageFlags(VK_SHADER_STAGE_FRAGMENT_BIT));
+    EXPECT_EQ(graphics.layout_desc().push_constant_bytes, 0u);
 }
 
 TEST_F(LayoutCheck, StageMissingFromStageFlagsThrows) {

@@ -76,10 +76,6 @@ std::vector<glm::vec4> probe_pixels(Context& gpu, const FrameConstants& constant
                 GraphicsPipelineDesc desc;
                 desc.vertex_shader = "water/water_surface.vert";
                 desc.fragment_shader = "tests/water_refinement_probe.frag";
-                desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
-                                         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
-                d.surface.add_layout(desc.layout.bindings);
-                desc.layout.push_constant_bytes = sizeof(push);
                 desc.depth_test = true;
                 desc.depth_write = true;
                 desc.topology = passes::WaterSurfaceReads::kTopology;
