@@ -15,33 +15,11 @@
 # build/frame_ratio/OLD_COMMIT. WIDTH and HEIGHT (default 800x600), REPEAT (frames per render,
 # the last one timed; default 2) and RENDER_ARGS (more render options, e.g. "--spp 4") change what
 # both builds render. Prints a Markdown table (docs/performance.md keeps one).
-set -euo pipefail
-cd "$(dirname "$0")/../.."
-root=$(pwd)
-
-if [ $# -lt 1 ]; then
-  echo "usage: tools/benchmarks/frame_ratio.sh OLD_COMMIT [ROUNDS] [SCENE ...]" >&2
-  exit 1
-fi
-old_commit=$(git rev-parse --short "$1")
-rounds=${2:-3}
-shift $(( $# >= 2 ? 2 : 1 ))
-scenes=("$@")
+USAGE=tools/benchmarks/frame_ratio.sh
+source "$(dirname "$0")/old_build.sh"
 [ ${#scenes[@]} -gt 0 ] || scenes=(calm pool lake ocean underwater box)
 width=${WIDTH:-800} height=${HEIGHT:-600} repeat=${REPEAT:-2}
 read -r -a render_args <<< "${RENDER_ARGS:-}"
-
-new_vk=$root/build/tools/vkwater/vkwater
-[ -x "$new_vk" ] || { echo "frame_ratio: build this tree first (build/tools/vkwater/vkwater)" >&2; exit 1; }
-
-old_build=${OLD_BUILD:-$root/build/frame_ratio/$old_commit}
-old_vk=$old_build/tools/vkwater/vkwater
-if [ ! -x "$old_vk" ]; then
-  source_dir=$root/build/frame_ratio/$old_commit-src
-  [ -d "$source_dir" ] || git worktree add --detach "$source_dir" "$old_commit" > /dev/null
-  cmake -S "$source_dir" -B "$old_build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF > /dev/null
-  cmake --build "$old_build" --target vkwater
-fi
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# equal_time.sh OLD_COMMIT [ROUNDS] [SCENE ...]
+#
+# The error at equal frame time: OLD_COMMIT's defaults against this tree's settings of samples per
+# pixel and caustic map resolution, each scene's image and caustic-layer relMSE against its
+# box-filtered reference (tests/references/box/SCENE.exr), 400x300. Each round renders the old
+# build's default frame and then every setting of this tree (each render --repeat 2, the last
+# frame timed, the sum of its sub-frames); a setting's time is the median over the rounds of its
+# time over the same round's old frame, so the shared machine's swings cancel. The errors do not
+# depend on the round. Prints per scene a Markdown table and the best setting whose time ratio is
+# at most 1 (docs/accuracy.md keeps them). OLD_BUILD=DIR uses an existing build of OLD_COMMIT
+# instead of building one in build/frame_ratio/OLD_COMMIT (as frame_ratio.sh does).
+USAGE=tools/benchmarks/equal_time.sh
+source "$(dirname "$0")/old_build.sh"
+[ ${#scenes[@]} -gt 0 ] || scenes=(pool lake ocean)
+settings=("1 1" "4 1" "9 1" "16 1" "1 2" "4 2" "9 2" "16 2")  # spp, effects.caustics.map_scale
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# frame_ms VKWATER OUT ARGS...: renders and prints the timed frame's milliseconds (its pass list's
+# `frame` line, which builds before the `time:` line have too).
+frame_ms() {
+  local vk=$1 out=$2
+  shift 2
+  "$vk" render --width 400 --height 300 --repeat 2 --out "$out" "$@" 2> /dev/null |
+    sed -n 's/^  frame  *\([0-9.]*\) ms.*/\1/p'
+}
+
+# errors EXR REFERENCE: "relMSE causticRelMSE" by this tree's compare.
+errors() {
+  local text
+  text=$("$new_vk" compare "$1" "$2")
+  echo "$(sed -n 's/^relMSE \([0-9.e+-]*\).*/\1/p' <<<"$text") $(sed -n 's/^caustic relMSE \([0-9.e+-]*\).*/\1/p' <<<"$text")"
+}
+
+for scene in "${scenes[@]}"; do
+  reference=tests/references/box/$scene.exr
+  for round in $(seq 1 "$rounds"); do
+    old_ms=$(frame_ms "$old_vk" "$work/old.exr" "scenes/$scene.json")
+    for setting in "${settings[@]}"; do
+      read -r spp scale <<<"$setting"
+      ms=$(frame_ms "$new_vk" "$work/new-$spp-$scale.exr" "scenes/$scene.json" --spp "$spp" \
+        --set effects.caustics.map_scale="$scale")
+      echo "$spp $scale $(awk -v a="$ms" -v b="$old_ms" 'BEGIN { printf "%.4f", a / b }') $ms $old_ms"
+    done
+  done > "$work/times.txt"
+  read -r old_rel old_caustic <<<"$(errors "$work/old.exr" "$reference")"
+  old_median=$(awk '{ print $5 }' "$work/times.txt" | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }')
+  echo "### $scene"
+  echo
+  echo "$old_commit's defaults: relMSE $old_rel, caustic relMSE $old_caustic, frame $old_median ms (median)."
+  echo
+  echo "| spp | map_scale | frame / $old_commit's frame | relMSE | / $old_commit's | caustic relMSE | / $old_commit's |"
+  echo "| --- | --- | --- | --- | --- | --- | --- |"
+  best=""
+  for setting in "${settings[@]}"; do
+    read -r spp scale <<<"$setting"
+    ratio=$(awk -v s="$spp" -v m="$scale" '$1 == s && $2 == m { print $3 }' "$work/times.txt" | sort -g |
+      awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }')
+    read -r rel caustic <<<"$(errors "$work/new-$spp-$scale.exr" "$reference")"
+    rel_ratio=$(awk -v a="$rel" -v b="$old_rel" 'BEGIN { printf "%.2f", a / b }')
+    caustic_ratio=$(awk -v a="$caustic" -v b="$old_caustic" 'BEGIN { printf "%.2f", a / b }')
+    echo "| $spp | $scale | $ratio | $rel | $rel_ratio | $caustic | $caustic_ratio |"
+    if awk -v r="$ratio" 'BEGIN { exit !(r <= 1) }'; then
+      if [ -z "$best" ] || awk -v a="$rel" -v b="${best##* }" 'BEGIN { exit !(a < b) }'; then
+        best="spp $spp, map_scale $scale: relMSE x$rel_ratio, caustic relMSE x$caustic_ratio $rel"
+      fi
+    fi
+  done
+  echo
+  if [ -n "$best" ]; then
+    echo "Lowest relMSE within $old_commit's frame time: ${best% *}."
+  else
+    echo "No setting within $old_commit's frame time."
+  fi
+  echo
+done
