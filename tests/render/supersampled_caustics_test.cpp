@@ -82,8 +82,8 @@ TEST_P(SupersampledCaustics, OneMapServesEverySubFrameBitForBit) {
 
 INSTANTIATE_TEST_SUITE_P(Recording, SupersampledCaustics,
                          ::testing::Values(fg::RecordingKind::DynamicRendering, fg::RecordingKind::RenderPassObject),
-                         [](const auto& info) {
-                             return info.param == fg::RecordingKind::DynamicRendering ? "dynamic" : "renderpass";
+                         [](const auto& param_info) {
+                             return param_info.param == fg::RecordingKind::DynamicRendering ? "dynamic" : "renderpass";
                          });
 
 // The later sub-frames leave out the passes that make the map; the first adds the copy that keeps
