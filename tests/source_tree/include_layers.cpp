@@ -31,6 +31,8 @@ std::vector<Layer> layer_table() {
         {"tools/reference", {"engine/core", "engine/scene", "engine/water", "engine/image"}},
         {"tools/metrics", {"engine/core", "engine/image"}},
         {"tools/povray", {"engine/core", "engine/scene", "engine/water"}},
+        // The build-time generator of the shaders' C++ block mirrors: SPIRV-Cross alone.
+        {"tools/shader_structs", {}},
         {"tools/benchmarks", joined({kEngineForPasses, kPassGroups, {"passes/frame", "tools/metrics"}})},
         {"tools/vkwater", joined({kEngineForPasses,
                                   kPassGroups,
