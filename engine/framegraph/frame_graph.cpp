@@ -168,6 +168,46 @@ BufferHandle PassBuilder::write_storage(BufferHandle h, VkPipelineStageFlags2 s)
 BufferHandle PassBuilder::read_write_storage(BufferHandle h, VkPipelineStageFlags2 s) {
     return use(h, Use::StorageBufferReadWrite, s);
 }
+template <class Tag>
+Handle<Tag> PassBuilder::bound(std::string binding, Handle<Tag> handle, Use use_kind, VkPipelineStageFlags2 stages,
+                               Filter filter) {
+    std::vector<ResourceUse>& uses = graph_.passes_[pass_].uses;
+    for (const ResourceUse& other : uses) {
+        if (other.binding == binding) {
+            throw InternalError("pass '" + graph_.passes_[pass_].name + "' binds two resources to '" + binding + "'");
+        }
+    }
+    const Handle<Tag> result = use(handle, use_kind, stages);
+    uses.back().binding = std::move(binding);
+    uses.back().filter = filter;
+    return result;
+}
+
+ImageHandle PassBuilder::sample(std::string b, ImageHandle h, Filter f, VkPipelineStageFlags2 s) {
+    return bound(std::move(b), h, Use::SampledRead, s, f);
+}
+ImageHandle PassBuilder::read_storage(std::string b, ImageHandle h, VkPipelineStageFlags2 s) {
+    return bound(std::move(b), h, Use::StorageImageRead, s);
+}
+ImageHandle PassBuilder::write_storage(std::string b, ImageHandle h, VkPipelineStageFlags2 s) {
+    return bound(std::move(b), h, Use::StorageImageWrite, s);
+}
+ImageHandle PassBuilder::read_write_storage(std::string b, ImageHandle h, VkPipelineStageFlags2 s) {
+    return bound(std::move(b), h, Use::StorageImageReadWrite, s);
+}
+BufferHandle PassBuilder::uniform_buffer(std::string b, BufferHandle h, VkPipelineStageFlags2 s) {
+    return bound(std::move(b), h, Use::UniformBuffer, s);
+}
+BufferHandle PassBuilder::read_storage(std::string b, BufferHandle h, VkPipelineStageFlags2 s) {
+    return bound(std::move(b), h, Use::StorageBufferRead, s);
+}
+BufferHandle PassBuilder::write_storage(std::string b, BufferHandle h, VkPipelineStageFlags2 s) {
+    return bound(std::move(b), h, Use::StorageBufferWrite, s);
+}
+BufferHandle PassBuilder::read_write_storage(std::string b, BufferHandle h, VkPipelineStageFlags2 s) {
+    return bound(std::move(b), h, Use::StorageBufferReadWrite, s);
+}
+
 BufferHandle PassBuilder::vertex_buffer(BufferHandle h) { return use(h, Use::VertexBuffer, 0); }
 BufferHandle PassBuilder::index_buffer(BufferHandle h) { return use(h, Use::IndexBuffer, 0); }
 BufferHandle PassBuilder::indirect_buffer(BufferHandle h) { return use(h, Use::IndirectBuffer, 0); }

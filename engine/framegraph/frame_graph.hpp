@@ -70,6 +70,10 @@ struct ImportedBuffer {
 
 enum class RecordingKind : uint8_t { DynamicRendering, RenderPassObject };
 
+// How a sampled image is read: filtered bilinearly with clamped edges (the default), or nearest:
+// for formats without linear filtering (depth) and for texelFetch reads, where no filter applies.
+enum class Filter : uint8_t { Linear, Nearest };
+
 // One declared use of a resource by a pass.
 struct ResourceUse {
     uint32_t resource;
@@ -79,6 +83,10 @@ struct ResourceUse {
     VkPipelineStageFlags2 shader_stages;
     LoadOp load = LoadOp::Clear;
     ClearValue clear;
+    // The shader resource the use is bound to (PassContext::bind): a block's type name or a
+    // sampler's or image's variable name; empty for a use no descriptor carries.
+    std::string binding;
+    Filter filter = Filter::Linear;  // sampled reads
 };
 
 struct ResourceDecl {
@@ -130,6 +138,25 @@ public:
     BufferHandle read_storage(BufferHandle buffer, VkPipelineStageFlags2 shader_stages = 0);
     [[nodiscard]] BufferHandle write_storage(BufferHandle buffer, VkPipelineStageFlags2 shader_stages = 0);
     [[nodiscard]] BufferHandle read_write_storage(BufferHandle buffer, VkPipelineStageFlags2 shader_stages = 0);
+
+    // The same shader reads and writes, each bound to the shader resource named `binding` (a
+    // block's type name, as `Flux` in `buffer Flux { ... };`, else the variable's name, as
+    // `source` in `uniform sampler2D source;`). PassContext::bind then pushes every binding that
+    // a pipeline's shaders use from these declarations: a pass names each resource once.
+    ImageHandle sample(std::string binding, ImageHandle image, Filter filter = Filter::Linear,
+                       VkPipelineStageFlags2 shader_stages = 0);
+    ImageHandle read_storage(std::string binding, ImageHandle image, VkPipelineStageFlags2 shader_stages = 0);
+    [[nodiscard]] ImageHandle write_storage(std::string binding, ImageHandle image,
+                                            VkPipelineStageFlags2 shader_stages = 0);
+    [[nodiscard]] ImageHandle read_write_storage(std::string binding, ImageHandle image,
+                                                 VkPipelineStageFlags2 shader_stages = 0);
+    BufferHandle uniform_buffer(std::string binding, BufferHandle buffer, VkPipelineStageFlags2 shader_stages = 0);
+    BufferHandle read_storage(std::string binding, BufferHandle buffer, VkPipelineStageFlags2 shader_stages = 0);
+    [[nodiscard]] BufferHandle write_storage(std::string binding, BufferHandle buffer,
+                                             VkPipelineStageFlags2 shader_stages = 0);
+    [[nodiscard]] BufferHandle read_write_storage(std::string binding, BufferHandle buffer,
+                                                  VkPipelineStageFlags2 shader_stages = 0);
+
     BufferHandle vertex_buffer(BufferHandle buffer);
     BufferHandle index_buffer(BufferHandle buffer);
     BufferHandle indirect_buffer(BufferHandle buffer);
@@ -151,6 +178,10 @@ private:
     template <class Tag>
     Handle<Tag> use(Handle<Tag> handle, Use use, VkPipelineStageFlags2 stages, LoadOp load = LoadOp::Clear,
                     const ClearValue& clear = {});
+    // `use` bound to the shader resource `binding`.
+    template <class Tag>
+    Handle<Tag> bound(std::string binding, Handle<Tag> handle, Use use, VkPipelineStageFlags2 stages,
+                      Filter filter = Filter::Linear);
     FrameGraph& graph_;
     uint32_t pass_;
 };

@@ -6,6 +6,7 @@
 #include "engine/vk/spirv_reflection.hpp"
 
 #include <algorithm>
+#include <type_traits>
 
 namespace vkw::fg {
 
@@ -56,64 +57,95 @@ const Pipeline& PassContext::pipeline(const std::string& key, const ComputePipel
     return executor_.pipelines().get(executor_.context(), full_key, desc);
 }
 
-DescriptorBinding PassContext::sampled(uint32_t binding, ImageHandle handle) const {
-    DescriptorBinding b{binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
-    b.image = {executor_.linear_sampler(), view(handle), executor_.layout_in_pass(pass_, handle.index)};
+void PassContext::fail(const std::string& what) const {
+    throw InternalError("pass '" + executor_.graph().passes()[pass_].name + "' " + what);
+}
+
+DescriptorBinding PassContext::sampled(std::string name, ImageHandle handle, Filter filter) const {
+    DescriptorBinding b{std::move(name), VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
+    const VkSampler sampler = filter == Filter::Nearest ? executor_.nearest_sampler() : executor_.linear_sampler();
+    b.image = {sampler, view(handle), executor_.layout_in_pass(pass_, handle.index)};
     return b;
 }
 
-DescriptorBinding PassContext::sampled_nearest(uint32_t binding, ImageHandle handle) const {
-    DescriptorBinding b = sampled(binding, handle);
-    b.image.sampler = executor_.nearest_sampler();
-    return b;
-}
-
-DescriptorBinding PassContext::storage_image(uint32_t binding, ImageHandle handle) const {
-    DescriptorBinding b{binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
+DescriptorBinding PassContext::storage_image(std::string name, ImageHandle handle) const {
+    DescriptorBinding b{std::move(name), VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
     b.image = {VK_NULL_HANDLE, view(handle), executor_.layout_in_pass(pass_, handle.index)};
     return b;
 }
 
-DescriptorBinding PassContext::storage_buffer(uint32_t binding, BufferHandle handle) const {
-    DescriptorBinding b{binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+DescriptorBinding PassContext::storage_buffer(std::string name, BufferHandle handle, VkDeviceSize offset,
+                                              VkDeviceSize range) const {
+    DescriptorBinding b{std::move(name), VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+    b.buffer = {buffer(handle), offset, range};
+    return b;
+}
+
+DescriptorBinding PassContext::uniform_buffer(std::string name, BufferHandle handle) const {
+    DescriptorBinding b{std::move(name), VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
     b.buffer = {buffer(handle), 0, VK_WHOLE_SIZE};
     return b;
 }
 
-DescriptorBinding PassContext::uniform_buffer(uint32_t binding, BufferHandle handle) const {
-    DescriptorBinding b{binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
-    b.buffer = {buffer(handle), 0, VK_WHOLE_SIZE};
-    return b;
+DescriptorBinding PassContext::declared(const ResourceUse& use) const {
+    const ImageHandle image{use.resource, use.version_read};
+    const BufferHandle buffer_handle{use.resource, use.version_read};
+    switch (use.use) {
+        case Use::SampledRead: return sampled(use.binding, image, use.filter);
+        case Use::StorageImageRead:
+        case Use::StorageImageWrite:
+        case Use::StorageImageReadWrite: return storage_image(use.binding, image);
+        case Use::UniformBuffer: return uniform_buffer(use.binding, buffer_handle);
+        case Use::StorageBufferRead:
+        case Use::StorageBufferWrite:
+        case Use::StorageBufferReadWrite: return storage_buffer(use.binding, buffer_handle);
+        default: fail("binds its " + std::string(use_name(use.use)) + " use to '" + use.binding + "'");
+    }
 }
 
-void PassContext::bind(const Pipeline& pipeline, std::initializer_list<DescriptorBinding> bindings) const {
-    bind(pipeline, std::vector<DescriptorBinding>(bindings));
-}
-
-void PassContext::bind(const Pipeline& pipeline, const std::vector<DescriptorBinding>& bindings) const {
+void PassContext::bind(const Pipeline& pipeline, const std::vector<DescriptorBinding>& extra) const {
     vkCmdBindPipeline(cmd_, pipeline.bind_point(), pipeline.handle());
+    const PipelineLayoutDesc& layout = pipeline.layout_desc();
+    const std::vector<ResourceUse>& uses = executor_.graph().passes()[pass_].uses;
+    std::vector<DescriptorBinding> bindings = extra;
+    for (size_t i = 0; i < layout.names.size(); ++i) {
+        const std::string& name = layout.names[i];
+        if (name.empty()) continue;  // a declared layout's binding that no stage uses
+        const auto named = [&](const auto& item) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(item)>, ResourceUse>)
+                return item.binding == name;
+            else
+                return item.name == name;
+        };
+        if (std::any_of(extra.begin(), extra.end(), named)) continue;
+        const auto use = std::find_if(uses.begin(), uses.end(), named);
+        if (use == uses.end()) {
+            fail("declares no resource for '" + name + "' (binding " + std::to_string(layout.bindings[i].binding) +
+                 ", a " + descriptor_type_name(layout.bindings[i].descriptorType) + "), which its shaders read");
+        }
+        bindings.push_back(declared(*use));
+    }
     push_descriptors(pipeline, bindings);
 }
 
 void PassContext::push_descriptors(const Pipeline& pipeline, const std::vector<DescriptorBinding>& bindings) const {
     if (bindings.empty()) return;
     std::vector<VkWriteDescriptorSet> writes;
-    const std::vector<VkDescriptorSetLayoutBinding>& layout = pipeline.layout_desc().bindings;
+    const PipelineLayoutDesc& layout = pipeline.layout_desc();
     for (const DescriptorBinding& binding : bindings) {
-        // A binding the layout lacks is one this shader variant compiles out (the pass binds what
+        // A name the shaders do not use is one this variant compiles out (the pass declares what
         // all its variants may read); a descriptor must have its binding's type (Vulkan's rule for
         // writes), else the pass and its shaders disagree.
-        const auto slot = std::find_if(layout.begin(), layout.end(), [&](const VkDescriptorSetLayoutBinding& b) {
-            return b.binding == binding.binding;
-        });
-        if (slot == layout.end()) continue;
-        if (slot->descriptorType != binding.type) {
-            throw InternalError("pass '" + executor_.graph().passes()[pass_].name + "' binds a " +
-                                descriptor_type_name(binding.type) + " at binding " + std::to_string(binding.binding) +
-                                ", where its pipeline's shaders read a " + descriptor_type_name(slot->descriptorType));
+        const auto slot = std::find(layout.names.begin(), layout.names.end(), binding.name);
+        if (binding.name.empty() || slot == layout.names.end()) continue;
+        const VkDescriptorSetLayoutBinding& target = layout.bindings[size_t(slot - layout.names.begin())];
+        if (target.descriptorType != binding.type) {
+            fail("binds a " + descriptor_type_name(binding.type) + " to '" + binding.name + "' (binding " +
+                 std::to_string(target.binding) + "), where its pipeline's shaders read a " +
+                 descriptor_type_name(target.descriptorType));
         }
         VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        write.dstBinding = binding.binding;
+        write.dstBinding = target.binding;
         write.descriptorCount = 1;
         write.descriptorType = binding.type;
         const bool is_buffer =
@@ -139,6 +171,17 @@ void PassContext::push_constants(const Pipeline& pipeline, const void* data, uin
                             std::to_string(pipeline.layout_desc().push_constant_bytes) + " bytes");
     }
     vkCmdPushConstants(cmd_, pipeline.layout(), VK_SHADER_STAGE_ALL, 0, bytes, data);
+}
+
+void PassContext::dispatch(const Pipeline& pipeline, uint32_t width, uint32_t height, uint32_t depth) const {
+    const std::array<uint32_t, 3>& group = pipeline.local_size();
+    const auto groups = [](uint32_t invocations, uint32_t side) { return (invocations + side - 1) / side; };
+    vkCmdDispatch(cmd_, groups(width, group[0]), groups(height, group[1]), groups(depth, group[2]));
+}
+
+void PassContext::dispatch(const Pipeline& pipeline, ImageHandle image) const {
+    const VkExtent2D size = extent(image);
+    dispatch(pipeline, size.width, size.height);
 }
 
 }  // namespace vkw::fg

@@ -4,12 +4,12 @@
 // pass never creates one).
 #pragma once
 
+#include "engine/framegraph/frame_graph.hpp"
 #include "engine/framegraph/handles.hpp"
 #include "engine/vk/pipeline.hpp"
 
 #include <vulkan/vulkan.h>
 
-#include <initializer_list>
 #include <map>
 #include <memory>
 #include <string>
@@ -40,8 +40,9 @@ private:
     std::map<std::string, std::unique_ptr<Pipeline>> pipelines_;
 };
 
+// One descriptor of a pipeline's set 0, for the binding its shaders call `name`.
 struct DescriptorBinding {
-    uint32_t binding = 0;
+    std::string name;
     VkDescriptorType type = VK_DESCRIPTOR_TYPE_MAX_ENUM;
     VkDescriptorImageInfo image{};
     VkDescriptorBufferInfo buffer{};
@@ -68,27 +69,41 @@ public:
     const Pipeline& pipeline(const std::string& key, GraphicsPipelineDesc desc);
     const Pipeline& pipeline(const std::string& key, const ComputePipelineDesc& desc);
 
-    // Descriptors for handles this pass declared; the image layouts are the graph's.
-    DescriptorBinding sampled(uint32_t binding, ImageHandle handle) const;
-    // The same with a nearest-filter sampler: for formats without linear filtering (depth).
-    DescriptorBinding sampled_nearest(uint32_t binding, ImageHandle handle) const;
-    DescriptorBinding storage_image(uint32_t binding, ImageHandle handle) const;
-    DescriptorBinding storage_buffer(uint32_t binding, BufferHandle handle) const;
-    DescriptorBinding uniform_buffer(uint32_t binding, BufferHandle handle) const;
-
-    // Binds the pipeline and pushes its descriptor set 0.
-    void bind(const Pipeline& pipeline, std::initializer_list<DescriptorBinding> bindings) const;
-    void bind(const Pipeline& pipeline, const std::vector<DescriptorBinding>& bindings) const;
+    // Binds the pipeline and pushes its descriptor set 0: every binding its shaders use gets the
+    // resource this pass declared under the binding's name (PassBuilder's named uses), or the one
+    // of `extra` so named (resources outside the graph, a part of a buffer). A binding the shaders
+    // use that neither provides throws InternalError naming it: the pass and its shaders disagree.
+    void bind(const Pipeline& pipeline, const std::vector<DescriptorBinding>& extra = {}) const;
     // Pushes these bindings of the bound pipeline's set 0 again; the others keep their values
     // (push descriptors update incrementally): per-draw resources such as a mesh's texture.
+    // A name the pipeline's shaders do not use is skipped: the variant drawn compiles it out.
     void push_descriptors(const Pipeline& pipeline, const std::vector<DescriptorBinding>& bindings) const;
+
+    // Descriptors for `extra` and push_descriptors: `handle` (declared by this pass, in the
+    // graph's layout) for the binding `name`.
+    DescriptorBinding sampled(std::string name, ImageHandle handle, Filter filter = Filter::Linear) const;
+    DescriptorBinding storage_image(std::string name, ImageHandle handle) const;
+    // `range` bytes from `offset` (the whole buffer by default).
+    DescriptorBinding storage_buffer(std::string name, BufferHandle handle, VkDeviceSize offset = 0,
+                                     VkDeviceSize range = VK_WHOLE_SIZE) const;
+    DescriptorBinding uniform_buffer(std::string name, BufferHandle handle) const;
+
     void push_constants(const Pipeline& pipeline, const void* data, uint32_t bytes) const;
+    // Records enough workgroups of the compute pipeline's size (its shader's local_size) to cover
+    // width x height x depth invocations; the shader returns early past the end.
+    void dispatch(const Pipeline& pipeline, uint32_t width, uint32_t height = 1, uint32_t depth = 1) const;
+    // ... to cover one invocation per texel of `image`.
+    void dispatch(const Pipeline& pipeline, ImageHandle image) const;
     template <class T>
     void push_constants(const Pipeline& pipeline, const T& data) const {
         push_constants(pipeline, &data, sizeof(T));
     }
 
 private:
+    // The descriptor of one of this pass's named uses.
+    DescriptorBinding declared(const ResourceUse& use) const;
+    [[noreturn]] void fail(const std::string& what) const;
+
     FrameExecutor& executor_;
     VkCommandBuffer cmd_;
     uint32_t pass_;

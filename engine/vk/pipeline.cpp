@@ -6,6 +6,8 @@
 #include "engine/vk/shader_module.hpp"
 #include "engine/vk/spirv_reflection.hpp"
 
+#include <algorithm>
+#include <iterator>
 #include <memory>
 
 namespace vkw {
@@ -13,12 +15,17 @@ namespace vkw {
 namespace {
 
 // A desc that leaves its layout empty gets the one its shaders ask for; a declared one is checked
-// against them.
+// against them. Either way each binding gets the shaders' name for it.
 PipelineLayoutDesc checked_or_derived_layout(const std::string& name, const PipelineLayoutDesc& declared,
                                              const std::vector<ReflectedStage>& stages) {
-    if (declared.bindings.empty() && declared.push_constant_bytes == 0) return derive_pipeline_layout(name, stages);
-    check_pipeline_layout(name, declared, stages);
-    return declared;
+    PipelineLayoutDesc layout = declared;
+    if (declared.bindings.empty() && declared.push_constant_bytes == 0) {
+        layout = derive_pipeline_layout(name, stages);
+    } else {
+        check_pipeline_layout(name, declared, stages);
+    }
+    layout.names = name_layout_bindings(name, layout, stages);
+    return layout;
 }
 
 }  // namespace
@@ -48,8 +55,9 @@ Pipeline::Pipeline(const Context& context, const ComputePipelineDesc& desc, cons
     // The check comes before any object of this pipeline exists: a throw from a constructor
     // runs no destructor, so a layout made first would leak.
     ShaderModule shader(context, desc.shader);
-    create_layout(context, checked_or_derived_layout(name, desc.layout, {reflect_spirv(shader.words(), shader.file())}),
-                  name);
+    const ReflectedStage reflected = reflect_spirv(shader.words(), shader.file());
+    create_layout(context, checked_or_derived_layout(name, desc.layout, {reflected}), name);
+    std::copy(std::begin(reflected.local_size), std::end(reflected.local_size), local_size_.begin());
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;

@@ -4,6 +4,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,9 @@ class Context;
 struct PipelineLayoutDesc {
     std::vector<VkDescriptorSetLayoutBinding> bindings;  // set 0, pushed at record time
     uint32_t push_constant_bytes = 0;                    // visible to every stage
+    // Filled in by Pipeline: the shaders' name of each binding, in the order of `bindings` (empty
+    // where no stage uses it). PassContext::bind finds a pass's resources by these names.
+    std::vector<std::string> names;
 };
 
 struct GraphicsPipelineDesc {
@@ -64,6 +68,8 @@ public:
     VkPipelineBindPoint bind_point() const { return bind_point_; }
     // The layout the pipeline was made with: declared, or derived from its shaders.
     const PipelineLayoutDesc& layout_desc() const { return layout_desc_; }
+    // A compute pipeline's workgroup size, read from its shader; 1 x 1 x 1 for graphics.
+    const std::array<uint32_t, 3>& local_size() const { return local_size_; }
 
 private:
     void create_layout(const Context& context, const PipelineLayoutDesc& desc, const std::string& name);
@@ -73,6 +79,7 @@ private:
     VkPipeline pipeline_ = VK_NULL_HANDLE;
     VkPipelineBindPoint bind_point_ = VK_PIPELINE_BIND_POINT_GRAPHICS;
     PipelineLayoutDesc layout_desc_;
+    std::array<uint32_t, 3> local_size_{1, 1, 1};
 };
 
 }  // namespace vkw

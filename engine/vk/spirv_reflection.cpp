@@ -202,6 +202,13 @@ ReflectedStage reflect_spirv(const std::vector<uint32_t>& words, const std::stri
     stage.shader = shader;
     stage.stage = stage_of(spvc_compiler_get_execution_model(compiler), shader);
 
+    if (stage.stage == VK_SHADER_STAGE_COMPUTE_BIT) {
+        for (uint32_t axis = 0; axis < 3; ++axis) {
+            stage.local_size[axis] =
+                spvc_compiler_get_execution_mode_argument_by_index(compiler, SpvExecutionModeLocalSize, axis);
+        }
+    }
+
     // Only what the entry point statically uses: that is what Vulkan requires the layout to
     // provide, and a variant that compiles a read out may still declare the binding.
     spvc_set active = nullptr;
@@ -229,6 +236,7 @@ ReflectedStage reflect_spirv(const std::vector<uint32_t>& words, const std::stri
             binding.binding = spvc_compiler_get_decoration(compiler, list[i].id, SpvDecorationBinding);
             binding.type = descriptor_type_of(kind, type);
             binding.count = descriptor_count_of(compiler, type);
+            binding.name = list[i].name ? list[i].name : "";
             stage.bindings.push_back(binding);
         }
     }
@@ -360,6 +368,34 @@ PipelineLayoutDesc derive_pipeline_layout(const std::string& pass, const std::ve
               [](const auto& a, const auto& b) { return a.binding < b.binding; });
     record_layout(pass, layout.push_constant_bytes, stages, {});
     return layout;
+}
+
+std::vector<std::string> name_layout_bindings(const std::string& pass, const PipelineLayoutDesc& layout,
+                                              const std::vector<ReflectedStage>& stages) {
+    std::vector<std::string> names(layout.bindings.size());
+    for (const ReflectedStage& stage : stages) {
+        for (const ReflectedBinding& b : stage.bindings) {
+            const auto it = find_binding(layout.bindings, b.binding);
+            if (b.set != 0 || it == layout.bindings.end()) continue;  // refused by the layout's own check
+            std::string& name = names[static_cast<size_t>(it - layout.bindings.begin())];
+            if (!name.empty() && name != b.name) {
+                throw InternalError("pipeline '" + pass + "' (" + stage.shader + "): binding " +
+                                    std::to_string(b.binding) + " is '" + b.name + "' in this stage but '" + name +
+                                    "' in another; a pass binds by name, so the stages must agree");
+            }
+            name = b.name;
+        }
+    }
+    for (size_t i = 0; i < names.size(); ++i) {
+        for (size_t j = i + 1; j < names.size(); ++j) {
+            if (!names[i].empty() && names[i] == names[j]) {
+                throw InternalError("pipeline '" + pass + "': bindings " + std::to_string(layout.bindings[i].binding) +
+                                    " and " + std::to_string(layout.bindings[j].binding) + " are both named '" +
+                                    names[i] + "'; a pass binds by name, so each binding needs its own");
+            }
+        }
+    }
+    return names;
 }
 
 std::vector<LayoutCheckRecord> layout_check_records() {

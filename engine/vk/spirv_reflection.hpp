@@ -19,6 +19,9 @@ struct ReflectedBinding {
     uint32_t binding = 0;
     VkDescriptorType type = VK_DESCRIPTOR_TYPE_MAX_ENUM;
     uint32_t count = 1;  // descriptors in the binding (arrays of arrays: the product); 1 for runtime arrays
+    // The shaders' name for it: a block's type name (`Flux` in `buffer Flux { ... };`), else the
+    // variable's (`source` in `uniform sampler2D source;`). Passes bind their resources by it.
+    std::string name;
 };
 
 struct ReflectedStage {
@@ -26,6 +29,7 @@ struct ReflectedStage {
     VkShaderStageFlagBits stage = VK_SHADER_STAGE_ALL;
     std::vector<ReflectedBinding> bindings;  // those the entry point uses, sorted by (set, binding)
     uint32_t push_constant_bytes = 0;        // the push-constant block's declared size (read or not); 0: none
+    uint32_t local_size[3] = {1, 1, 1};      // a compute stage's workgroup size (literal sizes)
 };
 
 // Reflects a SPIR-V module with one entry point. `shader` only names it in the result and in
@@ -47,6 +51,12 @@ std::vector<VkDescriptorSetLayoutBinding> check_pipeline_layout(const std::strin
 // binding in another set than 0 is refused. Throws InternalError naming the pass and the shader.
 // Recorded like a checked layout (layout_check_records), with no unused binding.
 PipelineLayoutDesc derive_pipeline_layout(const std::string& pass, const std::vector<ReflectedStage>& stages);
+
+// The shaders' name of each of `layout`'s bindings, in its order (PipelineLayoutDesc::names): empty
+// for a binding no stage uses. Throws InternalError naming the pass when two stages name one
+// binding differently or two bindings share a name (a pass could not tell them apart).
+std::vector<std::string> name_layout_bindings(const std::string& pass, const PipelineLayoutDesc& layout,
+                                              const std::vector<ReflectedStage>& stages);
 
 // Every pipeline checked in this process, for the figures of a test: pipelines checked, and the
 // declared bindings that none of a pipeline's stages uses.

@@ -3,7 +3,7 @@
 // surface for a camera above it), 0 elsewhere: what `vkwater reference` writes beside its image,
 // so that the caustics can be compared alone. Only when asked for (RenderOptions::caustic_layer).
 // The passes that draw a pixel's receiver then write it as a second colour attachment, after
-// their HDR colour, with their shaders' "_layer" variants (VKWATER_CAUSTIC_LAYER):
+// their HDR colour, with their shaders' variants that define VKWATER_CAUSTIC_LAYER:
 // - the first of the water and the floor creates it, cleared to 0 (the sky, receivers in the air
 //   and the surface seen from below keep 0, as in the reference);
 // - the other, and the receiver meshes, write their pixels over it;
@@ -31,8 +31,8 @@ struct CausticLayerTarget {
     void create_or_load(fg::PassBuilder& builder, const fg::Blackboard& blackboard, bool wanted);
     // Publishes the written version under keys::kCausticLayer.
     void publish(fg::Blackboard& blackboard) const;
-    // The shader variant's suffix: "_layer" while the layer is written, else "".
-    std::string variant() const { return image ? "_layer" : ""; }
+    // Whether the layer is written: then the pass's shaders define VKWATER_CAUSTIC_LAYER.
+    bool written() const { return image.has_value(); }
 };
 
 }  // namespace vkw::passes

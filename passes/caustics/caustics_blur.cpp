@@ -5,20 +5,13 @@
 #include "engine/scene/effects.hpp"
 #include "passes/caustics/caustics_map_frame.hpp"
 
+#include <shader_structs/caustics/caustic_blur.comp.hpp>
+
 namespace vkw::passes {
 namespace {
 
-constexpr uint32_t kGroupSide = 8;  // local_size of caustic_blur.comp
-
-// Mirrors the push constants of shaders/caustics/caustic_blur.comp.
-struct BlurPush {
-    int32_t size[2];
-    int32_t axis[2];
-    float radius;
-    float flat_sum;
-    uint32_t first_axis;
-    float pad;
-};
+// The push-constant block of shaders/caustics/caustic_blur.comp, generated from its SPIR-V (tools/shader_structs).
+using BlurPush = glsl::caustic_blur_comp::Push;
 
 }  // namespace
 
@@ -35,7 +28,7 @@ CausticMap add_caustic_blur_pass(fg::FrameGraph& graph, const CausticMap& map, c
     fg::ImageHandle image = map.irradiance;
     for (const bool first : {true, false}) {
         struct Data {
-            fg::ImageHandle source, target;
+            fg::ImageHandle target;
         };
         const BlurPush push{{int32_t(frame.width), int32_t(frame.height)},
                             {first ? 1 : 0, first ? 0 : 1},
@@ -48,18 +41,15 @@ CausticMap add_caustic_blur_pass(fg::FrameGraph& graph, const CausticMap& map, c
             name, fg::PassKind::Compute,
             [&](fg::PassBuilder& builder, Data& d) {
                 builder.serves(Effect::CausticBlur);
-                const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-                d.source = builder.read_storage(image, stage);
-                d.target = builder.write_storage(builder.create_image(std::string(name) + " target", info), stage);
+                builder.read_storage("source", image);
+                d.target = builder.write_storage("target", builder.create_image(std::string(name) + " target", info));
             },
             [push](const Data& d, fg::PassContext& context) {
-                ComputePipelineDesc desc;
-                desc.shader = "caustics/caustic_blur.comp";
-                const Pipeline& pipeline = context.pipeline("caustic blur", desc);
-                context.bind(pipeline, {context.storage_image(0, d.source), context.storage_image(1, d.target)});
+                const Pipeline& pipeline =
+                    context.pipeline("caustic blur", ComputePipelineDesc{"caustics/caustic_blur.comp"});
+                context.bind(pipeline);
                 context.push_constants(pipeline, push);
-                vkCmdDispatch(context.cmd(), (uint32_t(push.size[0]) + kGroupSide - 1) / kGroupSide,
-                              (uint32_t(push.size[1]) + kGroupSide - 1) / kGroupSide, 1);
+                context.dispatch(pipeline, d.target);
             });
         image = data.target;
     }

@@ -2,6 +2,7 @@
 #include "passes/caustics/caustics_camera_receivers.hpp"
 
 #include "engine/framegraph/pass_context.hpp"
+#include "engine/vk/shader_variant.hpp"
 #include "passes/common/frame_keys.hpp"
 #include "passes/receivers/receiver_draws.hpp"
 
@@ -23,7 +24,6 @@ fg::ImageHandle add_caustic_receivers_pass(fg::FrameGraph& graph, const Receiver
                                            CameraCausticExtent extent, float clip_margin) {
     struct Data {
         std::optional<fg::BufferHandle> vertices, indices;
-        fg::BufferHandle constants;
         fg::ImageHandle target, depth;
     };
     const auto& data = graph.add_pass<Data>(
@@ -33,9 +33,8 @@ fg::ImageHandle add_caustic_receivers_pass(fg::FrameGraph& graph, const Receiver
                 d.vertices = builder.vertex_buffer(meshes->import_vertices(graph));
                 d.indices = builder.index_buffer(meshes->import_indices(graph));
             }
-            d.constants =
-                builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants),
-                                       VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            builder.uniform_buffer("FrameConstants", graph.blackboard().get(keys::kFrameConstants),
+                                   VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
             const fg::ImageInfo target{VK_FORMAT_R32G32B32A32_SFLOAT, fg::SizeClass::Absolute, 1.0f, extent.width,
                                        extent.height};
             d.target =
@@ -50,11 +49,11 @@ fg::ImageHandle add_caustic_receivers_pass(fg::FrameGraph& graph, const Receiver
             const glm::vec4 view(0.0f, -1.0f, clip_margin, 0.0f);
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "receivers/floor.vert";
-            desc.fragment_shader = "caustics/caustic_receivers.frag.solid";
+            desc.fragment_shader = ShaderVariant{"caustics/caustic_receivers.frag"}.file();
             desc.depth_test = true;
             desc.depth_write = true;
             const Pipeline& floor = context.pipeline("caustic receivers floor", desc);
-            context.bind(floor, {context.uniform_buffer(0, d.constants)});
+            context.bind(floor);
             context.push_constants(floor, ReceiverPush{glm::vec4(0.0f), view});
             vkCmdDraw(context.cmd(), 6, 1, 0, 0);
             if (!d.vertices) return;
@@ -62,12 +61,11 @@ fg::ImageHandle add_caustic_receivers_pass(fg::FrameGraph& graph, const Receiver
             use_receiver_mesh_vertices(mesh_desc);
             // Cutouts' holes show what lies behind them here too: that variant samples their alpha.
             const bool cutouts = meshes->has_cutouts();
-            if (cutouts) mesh_desc.fragment_shader = "caustics/caustic_receivers.frag.cutout";
+            mesh_desc.fragment_shader =
+                ShaderVariant{"caustics/caustic_receivers.frag"}.define("VKWATER_CUTOUT", cutouts).file();
             const Pipeline& mesh = context.pipeline(
                 cutouts ? "caustic receivers meshes with cutouts" : "caustic receivers meshes", mesh_desc);
-            context.bind(mesh, {context.uniform_buffer(0, d.constants)});
-            draw_receiver_meshes(context, mesh, *meshes, *d.vertices, *d.indices, view,
-                                 cutouts ? BaseColorTexture::Sampled : BaseColorTexture::Unused);
+            draw_receiver_meshes(context, mesh, *meshes, *d.vertices, *d.indices, view);
         });
     return data.target;
 }

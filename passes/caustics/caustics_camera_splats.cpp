@@ -2,10 +2,13 @@
 #include "passes/caustics/caustics_camera_splats.hpp"
 
 #include "engine/framegraph/pass_context.hpp"
+#include "engine/vk/shader_variant.hpp"
 #include "passes/caustics/caustics_bands.hpp"
 #include "passes/caustics/caustics_photons.hpp"
 #include "passes/common/frame_keys.hpp"
 #include "passes/common/zeroed_buffer.hpp"
+
+#include <shader_structs/caustics/caustic_camera_resolve.comp.hpp>
 
 #include <optional>
 #include <string>
@@ -21,13 +24,8 @@ struct CameraSplatPush {
 };
 static_assert(sizeof(CameraSplatPush) == 128, "the push-constant size every device supports");
 
-// Mirrors the push constants of shaders/caustics/caustic_camera_resolve.comp.
-struct CameraResolvePush {
-    float lsb[4];
-    uint32_t width, height;  // no tail padding: the block ends here, at 24 bytes
-};
-
-constexpr uint32_t kGroupSide = 8;  // local_size of caustic_camera_resolve.comp
+// The push-constant block of shaders/caustics/caustic_camera_resolve.comp, generated from its SPIR-V (tools/shader_structs).
+using CameraResolvePush = glsl::caustic_camera_resolve_comp::Push;
 
 }  // namespace
 
@@ -64,75 +62,66 @@ CameraCaustics add_caustic_camera_splat_passes(fg::FrameGraph& graph, const Caus
                                                             camera_caustic_flux_bytes(extent));
 
     struct SplatData {
-        fg::BufferHandle constants, surface, flux;
-        fg::ImageHandle receivers;
+        fg::BufferHandle surface, flux;
         SunShadowReads shadow;
     };
-    const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
     const auto& splats = graph.add_pass<SplatData>(
         "camera caustic splats", fg::PassKind::Compute,
         [&](fg::PassBuilder& builder, SplatData& d) {
-            d.constants = builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants), stage);
-            d.surface = builder.read_storage(inputs.surface, stage);
-            d.flux = builder.read_write_storage(cleared, stage);
-            d.receivers = builder.sample(receivers, stage);
-            d.shadow.declare(builder, shadow, stage);
+            builder.uniform_buffer("FrameConstants", graph.blackboard().get(keys::kFrameConstants));
+            d.surface = builder.read_storage("Surface", inputs.surface);
+            d.flux = builder.read_write_storage("Flux", cleared);
+            builder.sample("receivers", receivers, fg::Filter::Nearest);
+            d.shadow.declare(builder, shadow);
         },
         [push](const SplatData& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
-            desc.shader = std::string("caustics/caustic_camera_splats.comp.") + (d.shadow ? "shadow" : "plain");
+            desc.shader = ShaderVariant{"caustics/caustic_camera_splats.comp"}
+                              .define("VKWATER_SUN_SHADOW", static_cast<bool>(d.shadow))
+                              .file();
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
-            fg::DescriptorBinding lost = context.storage_buffer(3, d.flux);
-            lost.buffer.offset = 0;
-            lost.buffer.range = kCausticFluxHeaderBytes;
-            fg::DescriptorBinding flux = context.storage_buffer(2, d.flux);
-            flux.buffer.offset = kCausticFluxHeaderBytes;
-            flux.buffer.range =
-                VkDeviceSize{camera_caustic_level_pixels({push.width, push.height})} * kCausticTexelBytes;
+            // The flux buffer's header (the lost photons' count) and its pixels, in two bindings.
+            const fg::DescriptorBinding lost = context.storage_buffer("Lost", d.flux, 0, kCausticFluxHeaderBytes);
+            const fg::DescriptorBinding flux = context.storage_buffer(
+                "Flux", d.flux, kCausticFluxHeaderBytes,
+                VkDeviceSize{camera_caustic_level_pixels({push.width, push.height})} * kCausticTexelBytes);
             for (const RowBand& chunk : caustic_photon_chunks(context, push.resolution, push.sub)) {
-                fg::DescriptorBinding surface = context.storage_buffer(1, d.surface);
-                surface.buffer.offset = chunk.offset;
-                surface.buffer.range = chunk.bytes;
-                std::vector<fg::DescriptorBinding> bindings{context.uniform_buffer(0, d.constants), surface, flux, lost,
-                                                            context.sampled_nearest(5, d.receivers)};
-                d.shadow.add_bindings(context, bindings);
                 CameraSplatPush p = push;
                 p.first_row = chunk.first;
                 p.rows = chunk.rows;
-                context.bind(pipeline, bindings);
+                context.bind(pipeline,
+                             {context.storage_buffer("Surface", d.surface, chunk.offset, chunk.bytes), flux, lost});
                 context.push_constants(pipeline, p);
-                vkCmdDispatch(context.cmd(), caustic_photon_groups(uint64_t{p.resolution} * p.sub),
-                              caustic_photon_groups(uint64_t{chunk.rows} * p.sub), 1);
+                context.dispatch(pipeline, p.resolution * p.sub, chunk.rows * p.sub);
             }
         });
 
     struct ResolveData {
-        fg::BufferHandle constants, flux;
-        fg::ImageHandle receivers, irradiance;
+        fg::BufferHandle flux;
+        fg::ImageHandle irradiance;
     };
     const auto& resolved = graph.add_pass<ResolveData>(
         "camera caustic resolve", fg::PassKind::Compute,
         [&](fg::PassBuilder& builder, ResolveData& d) {
-            d.constants = builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants), stage);
-            d.flux = builder.read_storage(splats.flux, stage);
-            d.receivers = builder.sample(receivers, stage);
+            builder.uniform_buffer("FrameConstants", graph.blackboard().get(keys::kFrameConstants));
+            d.flux = builder.read_storage("Flux", splats.flux);
+            builder.sample("receivers", receivers, fg::Filter::Nearest);
             const fg::ImageInfo image{VK_FORMAT_R32G32B32A32_SFLOAT, fg::SizeClass::Absolute, 1.0f, extent.width,
                                       extent.height};
-            d.irradiance = builder.write_storage(builder.create_image("camera caustic irradiance", image), stage);
+            d.irradiance =
+                builder.write_storage("irradiance", builder.create_image("camera caustic irradiance", image));
         },
         [resolve](const ResolveData& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
             desc.shader = "caustics/caustic_camera_resolve.comp";
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
-            fg::DescriptorBinding flux = context.storage_buffer(1, d.flux);
-            flux.buffer.offset = kCausticFluxHeaderBytes;
-            flux.buffer.range =
-                VkDeviceSize{camera_caustic_level_pixels({resolve.width, resolve.height})} * kCausticTexelBytes;
-            context.bind(pipeline, {context.uniform_buffer(0, d.constants), flux,
-                                    context.sampled_nearest(2, d.receivers), context.storage_image(3, d.irradiance)});
+            // The flux buffer's pixels, past its header.
+            context.bind(pipeline, {context.storage_buffer(
+                                       "Flux", d.flux, kCausticFluxHeaderBytes,
+                                       VkDeviceSize{camera_caustic_level_pixels({resolve.width, resolve.height})} *
+                                           kCausticTexelBytes)});
             context.push_constants(pipeline, resolve);
-            vkCmdDispatch(context.cmd(), (resolve.width + kGroupSide - 1) / kGroupSide,
-                          (resolve.height + kGroupSide - 1) / kGroupSide, 1);
+            context.dispatch(pipeline, d.irradiance);
         });
     return {receivers, resolved.irradiance};
 }

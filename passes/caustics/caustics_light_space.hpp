@@ -56,7 +56,7 @@ struct CausticTexelRect {
 struct CausticTexelSpan {
     uint32_t x0 = 0, x1 = 0;
 };
-// The photon pass's read rows (its binding 3): per map row its span as x0 | x1 << 16, then the
+// The photon pass's read rows (its `ReadRows`): per map row its span as x0 | x1 << 16, then the
 // same widened by kAdaptiveSplatReach texels along both axes (the rows within it merged), so that
 // a photon's node alone says whether its hat can reach a read texel. Twice the map's height.
 std::vector<uint32_t> pack_caustic_read_rows(const std::vector<CausticTexelSpan>& spans);

@@ -4,6 +4,7 @@
 #include "engine/core/errors.hpp"
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/vk/context.hpp"
+#include "engine/vk/shader_variant.hpp"
 #include "passes/caustics/caustics_bands.hpp"
 #include "passes/common/zeroed_buffer.hpp"
 #include "passes/water/water_surface.hpp"
@@ -122,10 +123,6 @@ std::vector<RowBand> clip_cell_rows(const std::vector<RowBand>& chunks, uint32_t
 
 }  // namespace
 
-uint32_t caustic_photon_groups(uint64_t invocations) {
-    return static_cast<uint32_t>((invocations + kGroupSide - 1) / kGroupSide);
-}
-
 fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInputs& inputs,
                                          const SunShadowMap* shadow) {
     CausticPhotonPush push{};
@@ -134,7 +131,7 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
     push.sub_and_flags = inputs.sub_photons | (inputs.jitter ? kJitterFlag : 0u);
     const CausticMapFrame frame = fit_caustic_map(inputs);  // its size includes the margin for the waves
     // The read rows (pack_caustic_read_rows), made with the region; one unread entry when every
-    // photon is kept (binding 3 must hold something).
+    // photon is kept (`ReadRows` must hold something).
     static const auto kNoRows = std::make_shared<const std::vector<uint32_t>>(1, 0u);
     std::shared_ptr<const std::vector<uint32_t>> read_rows = kNoRows;
     if (inputs.read_texels) {
@@ -173,26 +170,28 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
     const fg::BufferHandle cleared = add_zeroed_buffer_pass(graph, "caustic flux clear", "caustic flux", bytes);
 
     struct Data {
-        fg::BufferHandle surface, flux, read_rows;
+        fg::BufferHandle surface, flux;
         SunShadowReads shadow;
     };
     const auto& data = graph.add_pass<Data>(
         "caustic photons", fg::PassKind::Compute,
         [&](fg::PassBuilder& builder, Data& d) {
-            const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-            d.surface = builder.read_storage(inputs.surface, stage);
-            d.flux = builder.read_write_storage(cleared, stage);
-            d.read_rows = builder.read_storage(rows, stage);
-            d.shadow.declare(builder, shadow, stage);
+            d.surface = builder.read_storage("Surface", inputs.surface);
+            d.flux = builder.read_write_storage("Flux", cleared);
+            builder.read_storage("ReadRows", rows);
+            d.shadow.declare(builder, shadow);
             if (!inputs.read_note.empty()) builder.note(inputs.read_note);
         },
         [push, kernel_variant = inputs.kernel, first_cell_row, end_cell_row](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
-            // The variant: the kernel, then with the sun shadow map or without (shaders/CMakeLists.txt).
-            const char* kernel = kernel_variant == CausticKernel::Bilinear   ? "bilinear"
-                                 : kernel_variant == CausticKernel::Adaptive ? "adaptive"
-                                                                             : "footprint";
-            desc.shader = std::string("caustics/caustic_photons.comp.") + kernel + (d.shadow ? "_shadow" : "");
+            // The variant: the kernel, with the sun shadow map or without.
+            const char* kernel = kernel_variant == CausticKernel::Bilinear   ? "VKWATER_SPLAT_BILINEAR"
+                                 : kernel_variant == CausticKernel::Adaptive ? "VKWATER_SPLAT_ADAPTIVE"
+                                                                             : "VKWATER_SPLAT_FOOTPRINT";
+            desc.shader = ShaderVariant{"caustics/caustic_photons.comp"}
+                              .define(kernel)
+                              .define("VKWATER_SUN_SHADOW", static_cast<bool>(d.shadow))
+                              .file();
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
             const VkPhysicalDeviceLimits& limits = context.context().properties().limits;
             const uint32_t r = push.resolution, s = push.sub_and_flags & 0xffu;
@@ -204,13 +203,10 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
             const uint32_t height = static_cast<uint32_t>(push.source.space.v_axis[3]);
             const auto bands = row_bands(height, VkDeviceSize{width} * kCausticTexelBytes, kCausticFluxHeaderBytes, 0,
                                          limits.maxStorageBufferRange, limits.minStorageBufferOffsetAlignment, height);
-            fg::DescriptorBinding lost = context.storage_buffer(2, d.flux);
-            lost.buffer.offset = 0;
-            lost.buffer.range = kCausticFluxHeaderBytes;
+            // The flux buffer's header (the lost photons' count), beside the band of its rows.
+            const fg::DescriptorBinding lost = context.storage_buffer("Lost", d.flux, 0, kCausticFluxHeaderBytes);
             for (const RowBand& chunk : chunks) {
-                fg::DescriptorBinding surface = context.storage_buffer(0, d.surface);
-                surface.buffer.offset = chunk.offset;
-                surface.buffer.range = chunk.bytes;
+                fg::DescriptorBinding surface = context.storage_buffer("Surface", d.surface, chunk.offset, chunk.bytes);
                 uint32_t vertex_offset = 0;
                 if (neighbours) {
                     const NeighbourBinding wide = neighbour_binding(chunk, r, limits.minStorageBufferOffsetAlignment);
@@ -219,21 +215,15 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
                     vertex_offset = wide.vertex_offset;
                 }
                 for (const RowBand& band : bands) {
-                    fg::DescriptorBinding flux = context.storage_buffer(1, d.flux);
-                    flux.buffer.offset = band.offset;
-                    flux.buffer.range = band.bytes;
                     CausticPhotonPush p = push;
                     p.chunk_rows = chunk.first | chunk.rows << 16;
                     p.vertex_offset = vertex_offset;
                     p.band_first = band.first;
                     p.band_rows = band.rows;
-                    std::vector<fg::DescriptorBinding> bindings{surface, flux, lost,
-                                                                context.storage_buffer(3, d.read_rows)};
-                    d.shadow.add_bindings(context, bindings);
-                    context.bind(pipeline, bindings);
+                    context.bind(pipeline,
+                                 {surface, context.storage_buffer("Flux", d.flux, band.offset, band.bytes), lost});
                     context.push_constants(pipeline, p);
-                    vkCmdDispatch(context.cmd(), caustic_photon_groups(uint64_t{r} * s),
-                                  caustic_photon_groups(uint64_t{chunk.rows} * s), 1);
+                    context.dispatch(pipeline, r * s, chunk.rows * s);
                 }
             }
         });

@@ -52,8 +52,6 @@ CausticPhotonSourcePush caustic_photon_source(const CausticInputs& inputs);
 // and one after it, from an aligned offset.
 std::vector<RowBand> caustic_photon_chunks(const fg::PassContext& context, uint32_t resolution, uint32_t sub,
                                            bool neighbour_rows = false);
-// Groups of 8 (the kernels' local size per side) for `invocations`.
-uint32_t caustic_photon_groups(uint64_t invocations);
 
 // Adds the clear of the flux buffer (transfer) and the photon pass (compute) and returns the
 // flux buffer: caustic_flux_bytes(W, H) bytes, laid out as caustics_bands.hpp says, in units of

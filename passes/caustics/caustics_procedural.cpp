@@ -4,24 +4,15 @@
 #include "engine/framegraph/pass_context.hpp"
 #include "passes/caustics/caustics_map_frame.hpp"
 
+#include <shader_structs/caustics/caustic_procedural.comp.hpp>
+
 #include <cmath>
 
 namespace vkw::passes {
 namespace {
 
-constexpr uint32_t kGroupSide = 8;  // local_size of caustic_procedural.comp
-
-// Mirrors the push constants of shaders/caustics/caustic_procedural.comp.
-struct ProceduralPush {
-    float e_floor[4];     // rgb: E_perp under flat water at the floor (T, cos ratio, extinction), W m^-2
-    float sun[4];         // xyz: the direction the sunlight travels; w: n
-    float t[4];           // xyz: the flat-water refracted sun; w: the water's mean level
-    float corner[2];      // (x, z) at the mean level of texel coordinate (0, 0), m
-    float texel[2];       // texel size along x and z, m
-    float half_extent;    // E: the surface grid spans [-E, E]^2
-    uint32_t resolution;  // R cells per side
-    uint32_t width, height;
-};
+// The push-constant block of shaders/caustics/caustic_procedural.comp, generated from its SPIR-V (tools/shader_structs).
+using ProceduralPush = glsl::caustic_procedural_comp::Push;
 
 }  // namespace
 
@@ -43,25 +34,21 @@ CausticMap add_caustic_procedural_pass(fg::FrameGraph& graph, const CausticInput
     const fg::BufferHandle frame_buffer = add_caustic_map_frame_pass(graph, inputs);
 
     struct Data {
-        fg::BufferHandle surface;
         fg::ImageHandle irradiance;
     };
     const auto& data = graph.add_pass<Data>(
         "caustic procedural", fg::PassKind::Compute,
         [&](fg::PassBuilder& builder, Data& d) {
-            const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-            d.surface = builder.read_storage(inputs.surface, stage);
-            d.irradiance =
-                builder.write_storage(builder.create_image("caustic irradiance", caustic_map_image(frame)), stage);
+            builder.read_storage("Surface", inputs.surface);
+            d.irradiance = builder.write_storage("irradiance",
+                                                 builder.create_image("caustic irradiance", caustic_map_image(frame)));
         },
         [push](const Data& d, fg::PassContext& context) {
-            ComputePipelineDesc desc;
-            desc.shader = "caustics/caustic_procedural.comp";
-            const Pipeline& pipeline = context.pipeline("caustic procedural", desc);
-            context.bind(pipeline, {context.storage_buffer(0, d.surface), context.storage_image(1, d.irradiance)});
+            const Pipeline& pipeline =
+                context.pipeline("caustic procedural", ComputePipelineDesc{"caustics/caustic_procedural.comp"});
+            context.bind(pipeline);
             context.push_constants(pipeline, push);
-            vkCmdDispatch(context.cmd(), (push.width + kGroupSide - 1) / kGroupSide,
-                          (push.height + kGroupSide - 1) / kGroupSide, 1);
+            context.dispatch(pipeline, d.irradiance);
         });
     return {data.irradiance, frame_buffer};
 }

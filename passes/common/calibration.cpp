@@ -21,7 +21,7 @@ void add_calibration_pass(fg::FrameGraph& graph) {
             desc.vertex_shader = "common/fullscreen.vert";
             desc.fragment_shader = "common/calibration.frag";
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
-            context.bind(pipeline, {});
+            context.bind(pipeline);
             vkCmdDraw(context.cmd(), 3, 1, 0, 0);
         });
 }

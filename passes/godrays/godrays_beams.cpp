@@ -5,9 +5,12 @@
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/scene/effects.hpp"
 #include "engine/vk/context.hpp"
+#include "engine/vk/shader_variant.hpp"
 #include "passes/common/frame_keys.hpp"
 #include "passes/receivers/sun_shadow.hpp"
 #include "passes/water/water_surface.hpp"
+
+#include <shader_structs/godrays/godray_beams.comp.hpp>
 
 #include <algorithm>
 #include <optional>
@@ -16,13 +19,8 @@
 namespace vkw::passes {
 namespace {
 
-constexpr uint32_t kGroupSide = 8;  // local_size of godray_beams.comp
-
-// Mirrors the push constants of shaders/godrays/godray_beams.comp.
-struct GodrayBeamsPush {
-    uint32_t resolution, grid, first_row, rows, vertex_row0, vertex_base;
-    float max_depth, pad;
-};
+// The push-constant block of shaders/godrays/godray_beams.comp, generated from its SPIR-V (tools/shader_structs).
+using GodrayBeamsPush = glsl::godray_beams_comp::Push;
 
 // A chunk of beam rows and the binding of the surface rows they read.
 struct BeamChunk {
@@ -80,43 +78,37 @@ fg::BufferHandle add_godray_beams_pass(fg::FrameGraph& graph, const GodrayBeamIn
     const VkDeviceSize bytes = VkDeviceSize{inputs.grid} * inputs.grid * kGodrayBeamBytes;
 
     struct Data {
-        fg::BufferHandle constants, surface, beams;
+        fg::BufferHandle surface, beams;
         SunShadowReads shadow;
     };
     const auto& data = graph.add_pass<Data>(
         "godray beams", fg::PassKind::Compute,
         [&](fg::PassBuilder& builder, Data& d) {
             builder.serves(Effect::VolumeCaustics);
-            const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-            d.constants = builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants), stage);
-            d.surface = builder.read_storage(inputs.surface, stage);
-            d.beams = builder.write_storage(builder.create_buffer("godray beams", {bytes}), stage);
-            if (graph.blackboard().has(keys::kSunShadow))
-                d.shadow.declare(builder, &graph.blackboard().get(keys::kSunShadow), stage);
+            builder.uniform_buffer("FrameConstants", graph.blackboard().get(keys::kFrameConstants));
+            d.surface = builder.read_storage("Surface", inputs.surface);
+            d.beams = builder.write_storage("Beams", builder.create_buffer("godray beams", {bytes}));
+            if (graph.blackboard().has(keys::kSunShadow)) {
+                d.shadow.declare(builder, &graph.blackboard().get(keys::kSunShadow));
+            }
         },
         [push](const Data& d, fg::PassContext& context) {
             const bool shadow = static_cast<bool>(d.shadow);
             ComputePipelineDesc desc;
-            desc.shader = shadow ? "godrays/godray_beams.comp.shadow" : "godrays/godray_beams.comp.plain";
+            desc.shader = ShaderVariant{"godrays/godray_beams.comp"}.define("VKWATER_SUN_SHADOW", shadow).file();
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
             const VkPhysicalDeviceLimits& limits = context.context().properties().limits;
             for (const BeamChunk& chunk : beam_chunks(push.resolution, push.grid, limits.maxStorageBufferRange,
                                                       limits.minStorageBufferOffsetAlignment)) {
-                fg::DescriptorBinding surface = context.storage_buffer(1, d.surface);
-                surface.buffer.offset = chunk.offset;
-                surface.buffer.range = chunk.bytes;
-                std::vector<fg::DescriptorBinding> bindings{context.uniform_buffer(0, d.constants), surface,
-                                                            context.storage_buffer(2, d.beams)};
-                d.shadow.add_bindings(context, bindings);
                 GodrayBeamsPush p = push;
                 p.first_row = chunk.first_row;
                 p.rows = chunk.rows;
                 p.vertex_row0 = chunk.vertex_row0;
                 p.vertex_base = chunk.vertex_base;
-                context.bind(pipeline, bindings);
+                // The surface rows this chunk reads, in one binding.
+                context.bind(pipeline, {context.storage_buffer("Surface", d.surface, chunk.offset, chunk.bytes)});
                 context.push_constants(pipeline, p);
-                vkCmdDispatch(context.cmd(), (push.grid + kGroupSide - 1) / kGroupSide,
-                              (chunk.rows + kGroupSide - 1) / kGroupSide, 1);
+                context.dispatch(pipeline, push.grid, chunk.rows);
             }
         });
     return data.beams;

@@ -3,6 +3,7 @@
 
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/scene/effects.hpp"
+#include "engine/vk/shader_variant.hpp"
 #include "passes/common/frame_keys.hpp"
 
 #include <optional>
@@ -12,19 +13,17 @@ namespace vkw::passes {
 void add_godray_composite_pass(fg::FrameGraph& graph, fg::ImageHandle radiance, fg::ImageHandle view_depth,
                                bool inscatter_layer) {
     struct Data {
-        fg::BufferHandle constants;
-        fg::ImageHandle radiance, view_depth, scene_depth, hdr;
+        fg::ImageHandle hdr;
         std::optional<fg::ImageHandle> layer;
     };
     const auto& data = graph.add_pass<Data>(
         "godray composite", fg::PassKind::Graphics,
         [&](fg::PassBuilder& builder, Data& d) {
             builder.serves(Effect::VolumeCaustics);
-            const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
-            d.constants = builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants), stage);
-            d.radiance = builder.sample(radiance, stage);
-            d.view_depth = builder.sample(view_depth, stage);
-            d.scene_depth = builder.sample(graph.blackboard().get(keys::kSceneDepth), stage);
+            builder.uniform_buffer("FrameConstants", graph.blackboard().get(keys::kFrameConstants));
+            builder.sample("godrays", radiance, fg::Filter::Nearest);
+            builder.sample("view_depth", view_depth, fg::Filter::Nearest);
+            builder.sample("scene_depth", graph.blackboard().get(keys::kSceneDepth), fg::Filter::Nearest);
             d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
             if (inscatter_layer) {
                 // Cleared to 0 and blended like the HDR colour: it ends holding the godrays alone.
@@ -35,13 +34,12 @@ void add_godray_composite_pass(fg::FrameGraph& graph, fg::ImageHandle radiance, 
         [](const Data& d, fg::PassContext& context) {
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "common/fullscreen.vert";
-            desc.fragment_shader =
-                d.layer ? "godrays/godray_composite.frag.layer" : "godrays/godray_composite.frag.plain";
+            desc.fragment_shader = ShaderVariant{"godrays/godray_composite.frag"}
+                                       .define("VKWATER_INSCATTER_LAYER", d.layer.has_value())
+                                       .file();
             desc.additive_blend = true;
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
-            context.bind(pipeline,
-                         {context.uniform_buffer(0, d.constants), context.sampled_nearest(1, d.radiance),
-                          context.sampled_nearest(2, d.view_depth), context.sampled_nearest(3, d.scene_depth)});
+            context.bind(pipeline);
             vkCmdDraw(context.cmd(), 3, 1, 0, 0);
         });
     graph.blackboard().put(keys::kHdrColor, data.hdr);

@@ -7,20 +7,17 @@
 #include "passes/common/zeroed_buffer.hpp"
 #include "passes/water/camera_medium.hpp"
 
+#include <shader_structs/godrays/godray_lines.comp.hpp>
+
 #include <algorithm>
 
 namespace vkw::passes {
 namespace {
 
-constexpr uint32_t kGroupSide = 8;  // local_size of godray_lines.comp
-constexpr uint32_t kViews = 3;      // direct, mirrored, refracted: gl_GlobalInvocationID.z
+constexpr uint32_t kViews = 3;  // direct, mirrored, refracted: gl_GlobalInvocationID.z
 
-// Mirrors the push constants of shaders/godrays/godray_lines.comp.
-struct GodrayLinesPush {
-    uint32_t grid, per_pixel_medium;
-    float max_amplitude;
-    int32_t levels;
-};
+// The push-constant block of shaders/godrays/godray_lines.comp, generated from its SPIR-V (tools/shader_structs).
+using GodrayLinesPush = glsl::godray_lines_comp::Push;
 
 }  // namespace
 
@@ -54,28 +51,24 @@ fg::BufferHandle add_godray_lines_passes(fg::FrameGraph& graph, const GodrayLine
     push.max_amplitude = static_cast<float>(inputs.max_amplitude);
     push.levels = static_cast<int32_t>(godray_pyramid_levels(inputs.width, inputs.height));
     struct Data {
-        fg::BufferHandle constants, beams, radiance;
-        fg::ImageHandle view_depth;
+        fg::BufferHandle radiance;
     };
     const auto& data = graph.add_pass<Data>(
         "godray lines", fg::PassKind::Compute,
         [&](fg::PassBuilder& builder, Data& d) {
             builder.serves(Effect::VolumeCaustics);
-            const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-            d.constants = builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants), stage);
-            d.beams = builder.read_storage(inputs.beams, stage);
-            d.view_depth = builder.sample(inputs.view_depth, stage);
-            d.radiance = builder.read_write_storage(cleared, stage);
+            builder.uniform_buffer("FrameConstants", graph.blackboard().get(keys::kFrameConstants));
+            builder.read_storage("Beams", inputs.beams);
+            builder.sample("view_depth", inputs.view_depth, fg::Filter::Nearest);
+            d.radiance = builder.read_write_storage("Radiance", cleared);
         },
         [push](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
             desc.shader = "godrays/godray_lines.comp";
             const Pipeline& pipeline = context.pipeline("godray lines", desc);
-            context.bind(pipeline, {context.uniform_buffer(0, d.constants), context.storage_buffer(1, d.beams),
-                                    context.sampled_nearest(2, d.view_depth), context.storage_buffer(3, d.radiance)});
+            context.bind(pipeline);
             context.push_constants(pipeline, push);
-            const uint32_t groups = (push.grid + kGroupSide - 1) / kGroupSide;
-            vkCmdDispatch(context.cmd(), groups, groups, kViews);
+            context.dispatch(pipeline, push.grid, push.grid, kViews);
         });
     return data.radiance;
 }

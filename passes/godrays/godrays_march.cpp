@@ -4,24 +4,22 @@
 #include "engine/core/errors.hpp"
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/scene/effects.hpp"
+#include "engine/vk/shader_variant.hpp"
 #include "passes/caustics/caustics_resolve.hpp"
 #include "passes/common/frame_keys.hpp"
 #include "passes/receivers/sun_shadow.hpp"
 #include "passes/water/scene_optics.hpp"
 
+#include <shader_structs/godrays/godray_march.comp.hpp>
+
 #include <algorithm>
-#include <optional>
 #include <string>
-#include <vector>
 
 namespace vkw::passes {
 namespace {
 
-// Mirrors the push constants of shaders/godrays/godray_march.comp.
-struct GodrayMarchPush {
-    uint32_t steps;
-    float max_amplitude, max_depth, pad;
-};
+// The push-constant block of shaders/godrays/godray_march.comp, generated from its SPIR-V (tools/shader_structs).
+using GodrayMarchPush = glsl::godray_march_comp::Push;
 
 }  // namespace
 
@@ -32,52 +30,39 @@ fg::ImageHandle add_godray_march_pass(fg::FrameGraph& graph, const GodrayMarchIn
     const GodrayMarchPush push{inputs.steps, static_cast<float>(inputs.max_amplitude),
                                static_cast<float>(std::min(inputs.max_depth, 1e30)), 0.0f};
     struct Data {
-        fg::BufferHandle constants, optics;
-        fg::ImageHandle view_depth, target;
-        std::optional<fg::BufferHandle> caustic_frame;
-        std::optional<fg::ImageHandle> caustic_map;
+        fg::ImageHandle target;
+        bool caustics = false;
         SunShadowReads shadow;
     };
     const auto& data = graph.add_pass<Data>(
         "godray march", fg::PassKind::Compute,
         [&](fg::PassBuilder& builder, Data& d) {
             builder.serves(Effect::VolumeCaustics);
-            const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
             const fg::Blackboard& blackboard = graph.blackboard();
-            d.constants = builder.uniform_buffer(blackboard.get(keys::kFrameConstants), stage);
-            d.optics = builder.read_storage(blackboard.get(keys::kSceneOptics), stage);
-            d.view_depth = builder.sample(inputs.view_depth, stage);
-            if (blackboard.has(keys::kCausticMap)) {
-                d.caustic_frame = builder.uniform_buffer(blackboard.get(keys::kCausticMap).frame, stage);
-                d.caustic_map = builder.sample(blackboard.get(keys::kCausticMap).irradiance, stage);
+            builder.uniform_buffer("FrameConstants", blackboard.get(keys::kFrameConstants));
+            builder.read_storage("Optics", blackboard.get(keys::kSceneOptics));
+            builder.sample("view_depth", inputs.view_depth, fg::Filter::Nearest);
+            d.caustics = blackboard.has(keys::kCausticMap);
+            if (d.caustics) {
+                builder.uniform_buffer("CausticMapBlock", blackboard.get(keys::kCausticMap).frame);
+                builder.sample("caustic_map", blackboard.get(keys::kCausticMap).irradiance, fg::Filter::Nearest);
             }
-            if (blackboard.has(keys::kSunShadow)) d.shadow.declare(builder, &blackboard.get(keys::kSunShadow), stage);
-            fg::ImageInfo info;
-            info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
-            info.scale = inputs.scale;
-            d.target = builder.write_storage(builder.create_image("godray radiance image", info), stage);
+            if (blackboard.has(keys::kSunShadow)) d.shadow.declare(builder, &blackboard.get(keys::kSunShadow));
+            const fg::ImageHandle target = builder.create_image(
+                "godray radiance image", {VK_FORMAT_R32G32B32A32_SFLOAT, fg::SizeClass::OutputRelative, inputs.scale});
+            d.target = builder.write_storage("target", target);
         },
         [push](const Data& d, fg::PassContext& context) {
             const bool shadow = static_cast<bool>(d.shadow);
-            const std::string variant = d.caustic_map && shadow ? "caustics_shadow"
-                                        : d.caustic_map         ? "caustics"
-                                        : shadow                ? "shadow"
-                                                                : "plain";
             ComputePipelineDesc desc;
-            desc.shader = "godrays/godray_march.comp." + variant;
-            std::vector<fg::DescriptorBinding> bindings{
-                context.uniform_buffer(0, d.constants), context.storage_buffer(1, d.optics),
-                context.sampled_nearest(2, d.view_depth), context.storage_image(3, d.target)};
-            if (d.caustic_map) {
-                bindings.push_back(context.uniform_buffer(4, *d.caustic_frame));
-                bindings.push_back(context.sampled_nearest(5, *d.caustic_map));
-            }
-            d.shadow.add_bindings(context, bindings);
+            desc.shader = ShaderVariant{"godrays/godray_march.comp"}
+                              .define("VKWATER_CAUSTICS", d.caustics)
+                              .define("VKWATER_SUN_SHADOW", shadow)
+                              .file();
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
-            context.bind(pipeline, bindings);
+            context.bind(pipeline);
             context.push_constants(pipeline, push);
-            const VkExtent2D size = context.extent(d.target);
-            vkCmdDispatch(context.cmd(), (size.width + 7) / 8, (size.height + 7) / 8, 1);
+            context.dispatch(pipeline, d.target);
         });
     return data.target;
 }

@@ -12,31 +12,25 @@ fg::ImageHandle add_godray_resolve_pass(fg::FrameGraph& graph, fg::BufferHandle 
                                         float scale, uint32_t width, uint32_t height) {
     const auto levels = static_cast<int32_t>(godray_pyramid_levels(width, height));
     struct Data {
-        fg::BufferHandle constants, radiance;
-        fg::ImageHandle view_depth, image;
+        fg::ImageHandle image;
     };
     const auto& data = graph.add_pass<Data>(
         "godray resolve", fg::PassKind::Compute,
         [&](fg::PassBuilder& builder, Data& d) {
             builder.serves(Effect::VolumeCaustics);
-            const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-            d.constants = builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants), stage);
-            d.radiance = builder.read_storage(radiance, stage);
-            d.view_depth = builder.sample(view_depth, stage);
-            fg::ImageInfo info;
-            info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
-            info.scale = scale;
-            d.image = builder.write_storage(builder.create_image("godray radiance image", info), stage);
+            builder.uniform_buffer("FrameConstants", graph.blackboard().get(keys::kFrameConstants));
+            builder.read_storage("Radiance", radiance);
+            builder.sample("view_depth", view_depth, fg::Filter::Nearest);
+            const fg::ImageHandle image = builder.create_image(
+                "godray radiance image", {VK_FORMAT_R32G32B32A32_SFLOAT, fg::SizeClass::OutputRelative, scale});
+            d.image = builder.write_storage("target", image);
         },
         [levels](const Data& d, fg::PassContext& context) {
-            ComputePipelineDesc desc;
-            desc.shader = "godrays/godray_resolve.comp";
-            const Pipeline& pipeline = context.pipeline("godray resolve", desc);
-            context.bind(pipeline, {context.uniform_buffer(0, d.constants), context.storage_buffer(1, d.radiance),
-                                    context.sampled_nearest(2, d.view_depth), context.storage_image(3, d.image)});
+            const Pipeline& pipeline =
+                context.pipeline("godray resolve", ComputePipelineDesc{"godrays/godray_resolve.comp"});
+            context.bind(pipeline);
             context.push_constants(pipeline, levels);
-            const VkExtent2D size = context.extent(d.image);
-            vkCmdDispatch(context.cmd(), (size.width + 7) / 8, (size.height + 7) / 8, 1);
+            context.dispatch(pipeline, d.image);
         });
     return data.image;
 }

@@ -3,27 +3,26 @@
 
 #include "engine/framegraph/pass_context.hpp"
 
+#include <shader_structs/present/present_tonemap.frag.hpp>
+
 namespace vkw::passes {
 namespace {
 
-// Mirrors the push constants of shaders/present/present_tonemap.frag.
-struct TonemapPush {
-    float exposure;
-    uint32_t encode_srgb;
-};
+// The push-constant block of shaders/present/present_tonemap.frag, generated from its SPIR-V (tools/shader_structs).
+using TonemapPush = glsl::present_tonemap_frag::Push;
 
 }  // namespace
 
 fg::ImageHandle add_present_tonemap_pass(fg::FrameGraph& graph, fg::ImageHandle hdr, fg::ImageHandle target,
                                          const PresentTonemapSettings* settings) {
     struct Data {
-        fg::ImageHandle hdr;
         fg::ImageHandle target;
     };
     const auto& data = graph.add_pass<Data>(
         "present tonemap", fg::PassKind::Graphics,
         [&](fg::PassBuilder& builder, Data& d) {
-            d.hdr = builder.sample(hdr);
+            // texelFetch reads one texel per pixel: the sampler's filter never applies.
+            builder.sample("hdr", hdr, fg::Filter::Nearest);
             // Every pixel is written: what the image held before does not matter.
             d.target = builder.color_attachment(target, fg::LoadOp::DontCare);
         },
@@ -32,8 +31,7 @@ fg::ImageHandle add_present_tonemap_pass(fg::FrameGraph& graph, fg::ImageHandle 
             desc.vertex_shader = "common/fullscreen.vert";
             desc.fragment_shader = "present/present_tonemap.frag";
             const Pipeline& pipeline = context.pipeline("present tonemap", desc);
-            // texelFetch reads one texel per pixel: the sampler's filter never applies.
-            context.bind(pipeline, {context.sampled_nearest(0, d.hdr)});
+            context.bind(pipeline);
             context.push_constants(pipeline, TonemapPush{settings->exposure, settings->encode_srgb ? 1u : 0u});
             vkCmdDraw(context.cmd(), 3, 1, 0, 0);
         });

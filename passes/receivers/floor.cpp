@@ -27,13 +27,12 @@ void add_floor_pass(fg::FrameGraph& graph, bool caustic_layer) {
         [](const Data& d, fg::PassContext& context) {
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "receivers/floor.vert";
-            desc.fragment_shader = d.lighting.shader("receivers/receiver.frag") + d.layer.variant();
+            desc.fragment_shader =
+                d.lighting.shader("receivers/receiver.frag").define("VKWATER_CAUSTIC_LAYER", d.layer.written()).file();
             desc.depth_test = true;
             desc.depth_write = true;
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
-            std::vector<fg::DescriptorBinding> bindings;
-            d.lighting.add_bindings(context, bindings);
-            context.bind(pipeline, bindings);
+            context.bind(pipeline);
             context.push_constants(pipeline, ReceiverPush{});  // the camera's own view
             vkCmdDraw(context.cmd(), 6, 1, 0, 0);
         });

@@ -10,45 +10,35 @@
 namespace vkw::passes {
 
 void LightingInputs::declare(fg::PassBuilder& builder, const fg::Blackboard& blackboard, bool with_camera_medium) {
-    constants = builder.uniform_buffer(blackboard.get(keys::kFrameConstants),
-                                       VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-    optics = builder.read_storage(blackboard.get(keys::kSceneOptics));
-    if (with_camera_medium && blackboard.has(keys::kCameraMedium)) {
-        camera_medium = builder.sample(blackboard.get(keys::kCameraMedium), VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+    constexpr VkPipelineStageFlags2 fragment = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+    builder.uniform_buffer("FrameConstants", blackboard.get(keys::kFrameConstants),
+                           VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | fragment);
+    builder.read_storage("Optics", blackboard.get(keys::kSceneOptics));
+    camera_medium = with_camera_medium && blackboard.has(keys::kCameraMedium);
+    if (camera_medium) {
+        builder.sample("camera_medium_mask", blackboard.get(keys::kCameraMedium), fg::Filter::Linear, fragment);
     }
-    if (blackboard.has(keys::kCausticMap)) {
-        const CausticMap& caustics = blackboard.get(keys::kCausticMap);
-        caustic_frame = builder.uniform_buffer(caustics.frame, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-        caustic_map = builder.sample(caustics.irradiance, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-    }
-    if (blackboard.has(keys::kCameraCaustics)) {
-        const CameraCaustics& caustics = blackboard.get(keys::kCameraCaustics);
-        camera_caustic_receivers = builder.sample(caustics.receivers, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-        camera_caustics = builder.sample(caustics.irradiance, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-    }
-    if (blackboard.has(keys::kSunShadow)) {
-        sun_shadow.declare(builder, &blackboard.get(keys::kSunShadow), VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-    }
-}
-
-std::string LightingInputs::shader(const std::string& base) const {
-    return base + (camera_medium ? ".per_pixel" : ".frame") + (caustic_map ? "_caustics" : "") +
-           (camera_caustics ? "_camera_caustics" : "") + (sun_shadow ? "_shadow" : "");
-}
-
-void LightingInputs::add_bindings(const fg::PassContext& context, std::vector<fg::DescriptorBinding>& bindings) const {
-    bindings.push_back(context.uniform_buffer(0, constants));
-    bindings.push_back(context.storage_buffer(1, optics));
-    if (camera_medium) bindings.push_back(context.sampled(3, *camera_medium));
+    caustic_map = blackboard.has(keys::kCausticMap);
     if (caustic_map) {
-        bindings.push_back(context.uniform_buffer(4, *caustic_frame));
-        bindings.push_back(context.sampled(5, *caustic_map));
+        const CausticMap& caustics = blackboard.get(keys::kCausticMap);
+        builder.uniform_buffer("CausticMapBlock", caustics.frame, fragment);
+        builder.sample("caustic_map", caustics.irradiance, fg::Filter::Linear, fragment);
     }
+    camera_caustics = blackboard.has(keys::kCameraCaustics);
     if (camera_caustics) {
-        bindings.push_back(context.sampled_nearest(4, *camera_caustic_receivers));
-        bindings.push_back(context.sampled_nearest(5, *camera_caustics));
+        const CameraCaustics& caustics = blackboard.get(keys::kCameraCaustics);
+        builder.sample("caustic_receivers", caustics.receivers, fg::Filter::Nearest, fragment);
+        builder.sample("camera_caustics", caustics.irradiance, fg::Filter::Nearest, fragment);
     }
-    sun_shadow.add_bindings(context, bindings);
+    if (blackboard.has(keys::kSunShadow)) sun_shadow.declare(builder, &blackboard.get(keys::kSunShadow), fragment);
+}
+
+ShaderVariant LightingInputs::shader(const std::string& source) const {
+    return ShaderVariant{source}
+        .define("VKWATER_PER_PIXEL_MEDIUM", camera_medium)
+        .define("VKWATER_CAUSTICS", caustic_map)
+        .define("VKWATER_CAMERA_CAUSTICS", camera_caustics)
+        .define("VKWATER_SUN_SHADOW", static_cast<bool>(sun_shadow));
 }
 
 }  // namespace vkw::passes

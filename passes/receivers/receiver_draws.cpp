@@ -13,28 +13,34 @@ void use_receiver_mesh_vertices(GraphicsPipelineDesc& desc, bool with_normal) {
 }
 
 GraphicsPipelineDesc receiver_mesh_pipeline(const LightingInputs& lighting, const ReceiverMeshes& meshes,
-                                            const std::string& variant_suffix) {
+                                            bool caustic_layer) {
     GraphicsPipelineDesc desc;
     use_receiver_mesh_vertices(desc);
     const bool varied = meshes.varied_base_color();
-    desc.fragment_shader = lighting.shader("receivers/receiver.frag") + (varied ? "_mesh" : "") + variant_suffix;
+    desc.fragment_shader = lighting.shader("receivers/receiver.frag")
+                               .define("VKWATER_MESH_BASE_COLOR", varied)
+                               .define("VKWATER_CAUSTIC_LAYER", caustic_layer)
+                               .file();
     desc.depth_test = true;
     desc.depth_write = true;
     return desc;
 }
 
 void draw_receiver_meshes(const fg::PassContext& context, const Pipeline& pipeline, const ReceiverMeshes& meshes,
-                          fg::BufferHandle vertices, fg::BufferHandle indices, const glm::vec4& view,
-                          BaseColorTexture texture) {
+                          fg::BufferHandle vertices, fg::BufferHandle indices, const glm::vec4& view) {
+    // Meshes whose base colour varies have textures (ReceiverMeshes): the white texel stands in
+    // until each draw pushes its own.
+    const bool textured = meshes.varied_base_color();
+    context.bind(pipeline,
+                 textured ? std::vector{meshes.textures().binding(-1)} : std::vector<fg::DescriptorBinding>{});
     const VkBuffer vertex_buffer = context.buffer(vertices);
     const VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(context.cmd(), 0, 1, &vertex_buffer, &offset);
     vkCmdBindIndexBuffer(context.cmd(), context.buffer(indices), 0, VK_INDEX_TYPE_UINT32);
     for (const ReceiverDraw& draw : meshes.draws()) {
-        // Push descriptors update incrementally: the pass's other bindings stay as it pushed them.
-        if (texture == BaseColorTexture::Sampled && meshes.varied_base_color()) {
-            context.push_descriptors(pipeline, {meshes.textures().binding(kBaseColorTextureBinding, draw.texture)});
-        }
+        // Push descriptors update incrementally: the pass's other bindings stay as they were
+        // pushed. A pipeline that samples no texture skips it.
+        if (textured) context.push_descriptors(pipeline, {meshes.textures().binding(draw.texture)});
         context.push_constants(pipeline, ReceiverPush{glm::vec4(draw.albedo, 0.0f), view,
                                                       glm::vec4(draw.alpha, draw.alpha_cutoff, 0.0f, 0.0f)});
         vkCmdDrawIndexed(context.cmd(), draw.index_count, 1, draw.first_index, draw.vertex_offset, 0);

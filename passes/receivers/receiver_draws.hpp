@@ -25,23 +25,18 @@ struct ReceiverPush {
 // the layout without that attribute: the validation layer reports an attribute no stage consumes.
 void use_receiver_mesh_vertices(GraphicsPipelineDesc& desc, bool with_normal = true);
 
-// The base colour texture's binding in receivers/receiver.frag's mesh variants.
-inline constexpr uint32_t kBaseColorTextureBinding = 8;
-
 // receivers/mesh.vert + receivers/receiver.frag in the lighting inputs' variant (plus
-// `variant_suffix`, e.g. the caustic layer's "_layer"), depth tested and written. Where the meshes'
+// the caustic layer's macro when `caustic_layer`), depth tested and written. Where the meshes'
 // base colour varies (ReceiverMeshes::varied_base_color), the mesh variant, which samples the base
-// colour texture at kBaseColorTextureBinding and multiplies in the vertex colour.
+// colour texture (`base_color_texture`) and multiplies in the vertex colour.
 GraphicsPipelineDesc receiver_mesh_pipeline(const LightingInputs& lighting, const ReceiverMeshes& meshes,
-                                            const std::string& variant_suffix = "");
+                                            bool caustic_layer = false);
 
-enum class BaseColorTexture : bool { Unused, Sampled };
-
-// Binds the meshes' buffers and draws each part with its albedo and `view`, and with its base
-// colour texture pushed at kBaseColorTextureBinding when the pipeline samples one (a
-// receiver_mesh_pipeline of meshes whose base colour varies).
+// Binds `pipeline` with the pass's declared resources (PassContext::bind) and the meshes' buffers,
+// and draws each part with its albedo and `view`, and with its base colour texture where the
+// pipeline samples one (a receiver_mesh_pipeline of meshes whose base colour varies, a cutout
+// variant).
 void draw_receiver_meshes(const fg::PassContext& context, const Pipeline& pipeline, const ReceiverMeshes& meshes,
-                          fg::BufferHandle vertices, fg::BufferHandle indices, const glm::vec4& view,
-                          BaseColorTexture texture = BaseColorTexture::Sampled);
+                          fg::BufferHandle vertices, fg::BufferHandle indices, const glm::vec4& view);
 
 }  // namespace vkw::passes

@@ -104,10 +104,10 @@ void ReceiverTextures::upload(Context& context, const std::vector<const TextureI
         "receiver texture upload");
 }
 
-fg::DescriptorBinding ReceiverTextures::binding(uint32_t binding, int32_t index) const {
+fg::DescriptorBinding ReceiverTextures::binding(int32_t index) const {
     const DeviceTexture& texture = textures_[std::size_t(index + 1)];
     fg::DescriptorBinding result;
-    result.binding = binding;
+    result.name = "base_color_texture";
     result.type = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     result.image = {texture.sampler.handle(), texture.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     return result;

@@ -20,8 +20,8 @@ class ReceiverTextures {
 public:
     ReceiverTextures(Context& context, const std::vector<const MeshTexture*>& textures);
 
-    // A combined image sampler at `binding` for textures[index], or the white texel for -1.
-    fg::DescriptorBinding binding(uint32_t binding, int32_t index) const;
+    // textures[index], or the white texel for -1, for the mesh shaders' `base_color_texture`.
+    fg::DescriptorBinding binding(int32_t index) const;
 
 private:
     struct DeviceTexture {

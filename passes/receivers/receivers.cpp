@@ -25,11 +25,8 @@ void add_receivers_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes) {
             d.lighting.declare(builder, graph.blackboard());
         },
         [&meshes](const Data& d, fg::PassContext& context) {
-            const GraphicsPipelineDesc desc = receiver_mesh_pipeline(d.lighting, meshes, d.layer.variant());
+            const GraphicsPipelineDesc desc = receiver_mesh_pipeline(d.lighting, meshes, d.layer.written());
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
-            std::vector<fg::DescriptorBinding> bindings;
-            d.lighting.add_bindings(context, bindings);
-            context.bind(pipeline, bindings);
             draw_receiver_meshes(context, pipeline, meshes, d.vertices, d.indices,
                                  glm::vec4(0.0f));  // the camera's view
         });

@@ -3,6 +3,7 @@
 
 #include "engine/core/errors.hpp"
 #include "engine/framegraph/pass_context.hpp"
+#include "engine/vk/shader_variant.hpp"
 #include "passes/caustics/caustics_light_space.hpp"
 #include "passes/receivers/receiver_draws.hpp"
 
@@ -119,13 +120,15 @@ SunShadowMap add_sun_shadow_pass(fg::FrameGraph& graph, const ReceiverMeshes& me
             // Both variants clip the beam half at the water level; "cutout" also samples the parts' alpha.
             use_receiver_mesh_vertices(desc, /*with_normal=*/false);
             desc.vertex_shader = "receivers/sun_shadow.vert";
-            desc.fragment_shader = cutouts ? "receivers/sun_shadow.frag.cutout" : "receivers/sun_shadow.frag.solid";
-            if (cutouts) {}
+            desc.fragment_shader = ShaderVariant{"receivers/sun_shadow.frag"}.define("VKWATER_CUTOUT", cutouts).file();
             desc.depth_test = true;
             desc.depth_write = true;
             const Pipeline& pipeline =
                 context.pipeline(cutouts ? "sun shadow map with cutouts" : "sun shadow map", desc);
-            context.bind(pipeline, std::vector<fg::DescriptorBinding>{});
+            // The cutout variant's texture (cutouts have textures: ReceiverMeshes): the white texel
+            // until each draw pushes its own.
+            context.bind(pipeline,
+                         cutouts ? std::vector{meshes.textures().binding(-1)} : std::vector<fg::DescriptorBinding>{});
             const VkBuffer vertex_buffer = context.buffer(d.vertices);
             const VkDeviceSize offset = 0;
             vkCmdBindVertexBuffers(context.cmd(), 0, 1, &vertex_buffer, &offset);
@@ -142,10 +145,7 @@ SunShadowMap add_sun_shadow_pass(fg::FrameGraph& graph, const ReceiverMeshes& me
                           push.light_from_world);
                 push.clip_height[0] = clip_height;
                 for (const ReceiverDraw& draw : meshes.draws()) {
-                    if (cutouts) {
-                        context.push_descriptors(pipeline,
-                                                 {meshes.textures().binding(kBaseColorTextureBinding, draw.texture)});
-                    }
+                    if (cutouts) context.push_descriptors(pipeline, {meshes.textures().binding(draw.texture)});
                     push.material[0] = draw.alpha;
                     push.material[1] = draw.alpha_cutoff;
                     context.push_constants(pipeline, push);
@@ -160,14 +160,9 @@ SunShadowMap add_sun_shadow_pass(fg::FrameGraph& graph, const ReceiverMeshes& me
 
 void SunShadowReads::declare(fg::PassBuilder& builder, const SunShadowMap* map, VkPipelineStageFlags2 stages) {
     if (!map) return;
-    depth = builder.sample(map->depth, stages);
-    space = builder.uniform_buffer(map->space, stages);
-}
-
-void SunShadowReads::add_bindings(const fg::PassContext& context, std::vector<fg::DescriptorBinding>& bindings) const {
-    if (!depth) return;
-    bindings.push_back(context.sampled_nearest(6, *depth));
-    bindings.push_back(context.uniform_buffer(7, *space));
+    builder.sample("sun_shadow_map", map->depth, fg::Filter::Nearest, stages);
+    builder.uniform_buffer("SunShadowSpace", map->space, stages);
+    declared = true;
 }
 
 }  // namespace vkw::passes

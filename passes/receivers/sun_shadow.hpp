@@ -10,7 +10,7 @@
 //     under the water: docs/model.md section 1 shadows the beam along t). Under waves the beam's
 //     direction varies; the shadow follows the mean direction (an approximation).
 // Only the meshes occlude; the floor is a plane under everything and never shadows anything.
-// Receivers read it through LightingInputs (bindings 6 and 7) with
+// Receivers read it through LightingInputs (SunShadowReads) with
 // shaders/receivers/sun_shadow.glsl: a single depth compare with a slope-scaled bias.
 // Published as keys::kSunShadow; the renderer adds it when the scene has receiver meshes and
 // the sun is above the horizon.
@@ -69,16 +69,15 @@ struct SunShadowMap {
 
 SunShadowMap add_sun_shadow_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes, const SunShadowInputs& inputs);
 
-// A pass's reads of the sun shadow map, at the bindings every shader that includes
-// shaders/receivers/sun_shadow.glsl expects: 6 (the depth, sampled nearest) and 7 (its space).
-// Empty (and adding nothing) when the frame has no shadow map.
+// A pass's reads of the sun shadow map, under the names every shader that includes
+// shaders/receivers/sun_shadow.glsl gives them: `sun_shadow_map` (the depth, sampled nearest) and
+// `SunShadowSpace`. Empty (declaring nothing) when the frame has no shadow map.
 struct SunShadowReads {
-    std::optional<fg::ImageHandle> depth;
-    std::optional<fg::BufferHandle> space;
+    bool declared = false;
 
-    void declare(fg::PassBuilder& builder, const SunShadowMap* map, VkPipelineStageFlags2 stages);
-    explicit operator bool() const { return depth.has_value(); }
-    void add_bindings(const fg::PassContext& context, std::vector<fg::DescriptorBinding>& bindings) const;
+    // `stages` 0: the pass kind's shader stage (PassBuilder).
+    void declare(fg::PassBuilder& builder, const SunShadowMap* map, VkPipelineStageFlags2 stages = 0);
+    explicit operator bool() const { return declared; }
 };
 
 }  // namespace vkw::passes

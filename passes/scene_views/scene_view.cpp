@@ -42,11 +42,8 @@ fg::ImageHandle add_scene_view_pass(fg::FrameGraph& graph, const ReceiverMeshes&
             d.lighting.declare(builder, graph.blackboard(), /*with_camera_medium=*/false);
         },
         [&meshes, spec](const Data& d, fg::PassContext& context) {
-            const GraphicsPipelineDesc desc = receiver_mesh_pipeline(d.lighting, meshes, d.layer.variant());
+            const GraphicsPipelineDesc desc = receiver_mesh_pipeline(d.lighting, meshes, d.layer.written());
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
-            std::vector<fg::DescriptorBinding> bindings;
-            d.lighting.add_bindings(context, bindings);
-            context.bind(pipeline, bindings);
             const glm::vec4 view(spec.mirrored ? 1.0f : 0.0f, spec.camera_side ? 1.0f : -1.0f, spec.clip_margin, 0.0f);
             draw_receiver_meshes(context, pipeline, meshes, d.vertices, d.indices, view);
         });

@@ -14,7 +14,6 @@ void add_camera_medium_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
     push.bottom_y = static_cast<float>(bottom_y);
     push.amplitude = static_cast<float>(amplitude);
     struct Data {
-        fg::BufferHandle constants;
         WaterSurfaceReads surface;
         fg::ImageHandle mask;
     };
@@ -22,8 +21,7 @@ void add_camera_medium_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
         "camera medium", fg::PassKind::Graphics,
         [&](fg::PassBuilder& builder, Data& d) {
             builder.serves(Effect::UnderwaterView);
-            d.constants = builder.uniform_buffer(graph.blackboard().get(keys::kFrameConstants),
-                                                 VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            builder.uniform_buffer("FrameConstants", graph.blackboard().get(keys::kFrameConstants));
             d.surface.declare(builder, surface);
             d.mask = builder.create_image("camera medium", {VK_FORMAT_R8_UNORM});
             d.mask = builder.color_attachment(d.mask, fg::LoadOp::DontCare);
@@ -34,9 +32,7 @@ void add_camera_medium_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
             desc.fragment_shader = "water/camera_medium_mask.frag";
             const std::string key = d.surface.specialise(desc, "camera medium");
             const Pipeline& pipeline = context.pipeline(key, desc);
-            std::vector<fg::DescriptorBinding> bindings{context.uniform_buffer(0, d.constants)};
-            d.surface.add_fragment_bindings(context, bindings);
-            context.bind(pipeline, bindings);
+            context.bind(pipeline, d.surface.stand_ins(context));
             context.push_constants(pipeline, push);
             vkCmdDraw(context.cmd(), 3, 1, 0, 0);
         });

@@ -41,10 +41,10 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
         WaterSurfaceReads surface;
         fg::ImageHandle hdr, depth;
         LightingInputs lighting;
-        // Bound at 8 and 9; a missing one is stood in for by the other (its lookup is off).
+        // A missing one is stood in for by the other (its lookup is off).
         std::optional<fg::ImageHandle> reflection_view, refraction_view;
         CausticLayerTarget layer;
-        std::optional<fg::ImageHandle> refraction_view_caustic;  // bound at 10 with the layer and the views
+        std::optional<fg::ImageHandle> refraction_view_caustic;  // read with the layer and the views
     };
     const auto& data = graph.add_pass<Data>(
         "water", fg::PassKind::Graphics,
@@ -56,11 +56,18 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
             d.depth = scene_depth_attachment(builder, graph.blackboard());
             d.layer.create_or_load(builder, graph.blackboard(), caustic_layer);
             d.lighting.declare(builder, graph.blackboard());
-            if (lookups.reflection_view) d.reflection_view = builder.sample(*lookups.reflection_view, fragment);
-            if (lookups.refraction_view) d.refraction_view = builder.sample(*lookups.refraction_view, fragment);
+            if (lookups.reflection_view) {
+                d.reflection_view =
+                    builder.sample("reflection_view", *lookups.reflection_view, fg::Filter::Linear, fragment);
+            }
+            if (lookups.refraction_view) {
+                d.refraction_view =
+                    builder.sample("refraction_view", *lookups.refraction_view, fg::Filter::Linear, fragment);
+            }
             if (d.layer.image && d.refraction_view && graph.blackboard().has(keys::kRefractionViewCaustic)) {
                 d.refraction_view_caustic =
-                    builder.sample(graph.blackboard().get(keys::kRefractionViewCaustic), fragment);
+                    builder.sample("refraction_view_caustic", graph.blackboard().get(keys::kRefractionViewCaustic),
+                                   fg::Filter::Linear, fragment);
             }
         },
         [base = water_surface_push(surface, shading.refine_steps), lookups, shading](const Data& d,
@@ -68,9 +75,11 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
             const bool views = d.reflection_view || d.refraction_view;
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "water/water_surface.vert";
-            desc.fragment_shader =
-                d.lighting.shader("water/water_surface.frag") + (views ? "_views" : "") + d.layer.variant();
-            const bool layer_of_views = views && d.layer.image;
+            desc.fragment_shader = d.lighting.shader("water/water_surface.frag")
+                                       .define("VKWATER_SCENE_VIEWS", views)
+                                       .define("VKWATER_CAUSTIC_LAYER", d.layer.written())
+                                       .file();
+            const bool layer_of_views = views && d.layer.written();
             desc.depth_test = true;
             desc.depth_write = true;
             desc.topology = passes::WaterSurfaceReads::kTopology;
@@ -88,21 +97,18 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
                    std::to_string(reflection) + std::to_string(refraction) + "/side " + std::to_string(side) +
                    "/glitter " + std::to_string(glitter);
             const Pipeline& pipeline = context.pipeline(key, desc);
-            std::vector<fg::DescriptorBinding> bindings;
-            d.surface.add_bindings(context, bindings);
-            d.lighting.add_bindings(context, bindings);
+            std::vector<fg::DescriptorBinding> stand_ins = d.surface.stand_ins(context);
+            // A missing view's lookup is off, so the shader never reads it: the other view stands in
+            // (likewise for the refraction view's caustic layer).
             if (views) {
                 const fg::ImageHandle either = d.reflection_view ? *d.reflection_view : *d.refraction_view;
-                bindings.push_back(context.sampled(8, d.reflection_view.value_or(either)));
-                bindings.push_back(context.sampled(9, d.refraction_view.value_or(either)));
+                if (!d.reflection_view) stand_ins.push_back(context.sampled("reflection_view", either));
+                if (!d.refraction_view) stand_ins.push_back(context.sampled("refraction_view", either));
+                if (layer_of_views && !d.refraction_view_caustic) {
+                    stand_ins.push_back(context.sampled("refraction_view_caustic", either));
+                }
             }
-            // Without a refraction view the shader never reads binding 10 (its lookup is off):
-            // any image of the views stands in.
-            if (layer_of_views) {
-                const fg::ImageHandle either = d.reflection_view ? *d.reflection_view : *d.refraction_view;
-                bindings.push_back(context.sampled(10, d.refraction_view_caustic.value_or(either)));
-            }
-            context.bind(pipeline, bindings);
+            context.bind(pipeline, stand_ins);
             WaterSurfacePush push = base;
             push.reflection_steps = static_cast<uint32_t>(lookups.reflection_steps);
             push.refraction_steps = static_cast<uint32_t>(lookups.refraction_steps);

@@ -18,9 +18,9 @@ WaterSurfacePush water_surface_push(const WaterSurfaceBuffers& surface, uint32_t
 
 void WaterSurfaceReads::declare(fg::PassBuilder& builder, const WaterSurfaceBuffers& surface) {
     constexpr VkPipelineStageFlags2 fragment = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
-    mesh = builder.read_storage(surface.mesh, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | fragment);
-    waves = builder.uniform_buffer(surface.waves, fragment);
-    if (surface.ocean_fields) ocean_fields = builder.read_storage(*surface.ocean_fields, fragment);
+    mesh = builder.read_storage("Surface", surface.mesh, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | fragment);
+    waves = builder.uniform_buffer("Waves", surface.waves, fragment);
+    if (surface.ocean_fields) ocean_fields = builder.read_storage("Grids", *surface.ocean_fields, fragment);
     mesh_resolution = surface.mesh_resolution;
     // Flat water's mesh is its surface (every vertex exact, the triangles in its plane).
     surface_model = surface.model.ocean ? 2u : surface.model.wave_count > 0 ? 1u : 0u;
@@ -32,16 +32,10 @@ std::string WaterSurfaceReads::specialise(GraphicsPipelineDesc& desc, const std:
     return key + kModelNames[surface_model];
 }
 
-void WaterSurfaceReads::add_bindings(const fg::PassContext& context,
-                                     std::vector<fg::DescriptorBinding>& bindings) const {
-    bindings.push_back(context.storage_buffer(2, mesh));
-    add_fragment_bindings(context, bindings);
-}
-
-void WaterSurfaceReads::add_fragment_bindings(const fg::PassContext& context,
-                                              std::vector<fg::DescriptorBinding>& bindings) const {
-    bindings.push_back(context.uniform_buffer(11, waves));
-    bindings.push_back(context.storage_buffer(12, ocean_fields.value_or(mesh)));
+std::vector<fg::DescriptorBinding> WaterSurfaceReads::stand_ins(const fg::PassContext& context) const {
+    // The refinement's shader declares the ocean's fields in every model; only the ocean reads them.
+    if (ocean_fields) return {};
+    return {context.storage_buffer("Grids", mesh)};
 }
 
 void WaterSurfaceReads::draw(fg::PassContext& context) const {

@@ -4,6 +4,8 @@
 #include "engine/core/errors.hpp"
 #include "engine/framegraph/pass_context.hpp"
 
+#include <shader_structs/water/ocean_fft.comp.hpp>
+
 #include <bit>
 #include <string>
 
@@ -14,14 +16,8 @@ namespace {
 constexpr uint32_t kMinPoints = 16, kMaxPoints = 1024;  // kMaxPoints: the points of one work group
 constexpr uint32_t kMaxGroups = 65535;                  // per dispatch dimension
 
-// Mirrors the push constants of shaders/water/ocean_fft.comp.
-struct FftPush {
-    uint32_t n;
-    uint32_t log2n;
-    uint32_t element_stride;
-    uint32_t line_stride;
-    uint32_t line_count;  // grids * n
-};
+// The push-constant block of shaders/water/ocean_fft.comp, generated from its SPIR-V (tools/shader_structs).
+using FftPush = glsl::ocean_fft_comp::Params;
 
 // Work groups of one direction: 1024 points each, n * n * grid_count points in all.
 uint32_t fft_groups(uint32_t n, uint32_t grid_count) {
@@ -36,14 +32,10 @@ fg::BufferHandle add_fft_direction(fg::FrameGraph& graph, fg::BufferHandle grids
     };
     const auto& data = graph.add_pass<Data>(
         name, fg::PassKind::Compute,
-        [&](fg::PassBuilder& builder, Data& d) {
-            d.grids = builder.read_write_storage(grids, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
-        },
+        [&](fg::PassBuilder& builder, Data& d) { d.grids = builder.read_write_storage("Grids", grids); },
         [push](const Data& d, fg::PassContext& context) {
-            ComputePipelineDesc desc;
-            desc.shader = "water/ocean_fft.comp";
-            const Pipeline& pipeline = context.pipeline("ocean fft", desc);
-            context.bind(pipeline, {context.storage_buffer(0, d.grids)});
+            const Pipeline& pipeline = context.pipeline("ocean fft", ComputePipelineDesc{"water/ocean_fft.comp"});
+            context.bind(pipeline);
             context.push_constants(pipeline, push);
             vkCmdDispatch(context.cmd(), fft_groups(push.n, push.line_count / push.n), 1, 1);
         });

@@ -11,21 +11,13 @@
 
 namespace vkw::passes {
 
-namespace {
-
-constexpr uint32_t kGroupSide = 8;  // local_size_x = local_size_y = 8 in the grid kernels
-
-uint32_t groups(uint32_t invocations) { return (invocations + kGroupSide - 1) / kGroupSide; }
-
-}  // namespace
-
 WaterGridPush water_grid_push(const WaterSurfaceInputs& inputs) {
     return {static_cast<float>(inputs.level), static_cast<float>(inputs.half_extent), inputs.grid_resolution, 0, 0};
 }
 
 fg::BufferHandle create_water_vertices(fg::PassBuilder& builder, uint32_t grid_resolution) {
     const fg::BufferHandle vertices = builder.create_buffer("water surface", {water_surface_bytes(grid_resolution)});
-    return builder.write_storage(vertices, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+    return builder.write_storage("Vertices", vertices);
 }
 
 std::vector<WaterGridBand> water_grid_bands(VkDeviceSize max_range, VkDeviceSize alignment, uint32_t grid_resolution) {
@@ -54,14 +46,11 @@ std::vector<WaterGridBand> water_grid_bands(const fg::PassContext& context, uint
     return water_grid_bands(limits.maxStorageBufferRange, limits.minStorageBufferOffsetAlignment, grid_resolution);
 }
 
-void dispatch_water_band(fg::PassContext& context, const Pipeline& pipeline, const fg::DescriptorBinding& input,
-                         fg::BufferHandle vertices, const WaterGridBand& band, const void* push, uint32_t push_bytes) {
-    fg::DescriptorBinding output = context.storage_buffer(1, vertices);
-    output.buffer.offset = band.offset;
-    output.buffer.range = band.bytes;
-    context.bind(pipeline, {input, output});
+void dispatch_water_band(fg::PassContext& context, const Pipeline& pipeline, fg::BufferHandle vertices,
+                         const WaterGridBand& band, const void* push, uint32_t push_bytes) {
+    context.bind(pipeline, {context.storage_buffer("Vertices", vertices, band.offset, band.bytes)});
     context.push_constants(pipeline, push, push_bytes);
-    vkCmdDispatch(context.cmd(), groups(band.row_vertices), groups(band.rows), 1);
+    context.dispatch(pipeline, band.row_vertices, band.rows);
 }
 
 }  // namespace vkw::passes

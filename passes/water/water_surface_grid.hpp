@@ -44,57 +44,54 @@ std::vector<WaterGridBand> water_grid_bands(VkDeviceSize max_range, VkDeviceSize
 // The same for the device that `context` records for.
 std::vector<WaterGridBand> water_grid_bands(const fg::PassContext& context, uint32_t grid_resolution);
 
-// Binds and dispatches one band (8 x 8 groups), the push constants already filled in.
-void dispatch_water_band(fg::PassContext& context, const Pipeline& pipeline, const fg::DescriptorBinding& input,
-                         fg::BufferHandle vertices, const WaterGridBand& band, const void* push, uint32_t push_bytes);
+// Binds and dispatches one band, the push constants already filled in.
+void dispatch_water_band(fg::PassContext& context, const Pipeline& pipeline, fg::BufferHandle vertices,
+                         const WaterGridBand& band, const void* push, uint32_t push_bytes);
 
-// Records the grid kernel over every band: `pipeline` with `input` at binding 0, the band of
-// `vertices` at binding 1, and `push` (whose first member is `WaterGridPush grid`) with the
+// Records the grid kernel over every band: `pipeline` with the pass's declared input, the band of
+// `vertices` as `Vertices`, and `push` (whose first member is `WaterGridPush grid`) with the
 // band's rows filled in.
 template <class Push>
-void dispatch_water_grid(fg::PassContext& context, const Pipeline& pipeline, const fg::DescriptorBinding& input,
-                         fg::BufferHandle vertices, Push push) {
+void dispatch_water_grid(fg::PassContext& context, const Pipeline& pipeline, fg::BufferHandle vertices, Push push) {
     for (const WaterGridBand& band : water_grid_bands(context, push.grid.resolution)) {
         push.grid.first_row = band.first_row;
         push.grid.band_rows = band.rows;
-        dispatch_water_band(context, pipeline, input, vertices, band, &push, sizeof(Push));
+        dispatch_water_band(context, pipeline, vertices, band, &push, sizeof(Push));
     }
 }
 
-// A grid kernel's pass: its name, the kernel's shader and pipeline key, and how it reads its
-// input at binding 0 (VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER or VK_DESCRIPTOR_TYPE_STORAGE_BUFFER).
+// A grid kernel's pass: its name, the kernel's shader and pipeline key, and its input: the
+// shader's block `input`, a uniform buffer or (uniform_input false) a storage buffer.
 struct WaterGridKernel {
     const char* pass;
     const char* shader;
     const char* pipeline;
-    VkDescriptorType input;
+    const char* input;
+    bool uniform_input;
 };
 
-// Adds the compute pass that runs `kernel` over the grid: it reads `input` at binding 0,
-// writes a new vertex buffer (create_water_vertices) band by band (dispatch_water_grid) with
-// `push`, and returns that buffer.
+// Adds the compute pass that runs `kernel` over the grid: it reads `input`, writes a new vertex
+// buffer (create_water_vertices) band by band (dispatch_water_grid) with `push`, and returns that
+// buffer.
 template <class Push>
 fg::BufferHandle add_water_grid_pass(fg::FrameGraph& graph, const WaterGridKernel& kernel, fg::BufferHandle input,
                                      const Push& push) {
-    const bool uniform = kernel.input == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     struct Data {
-        fg::BufferHandle input;
         fg::BufferHandle vertices;
     };
     const auto& data = graph.add_pass<Data>(
         kernel.pass, fg::PassKind::Compute,
         [&](fg::PassBuilder& builder, Data& d) {
-            const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-            d.input = uniform ? builder.uniform_buffer(input, stage) : builder.read_storage(input, stage);
+            if (kernel.uniform_input) {
+                builder.uniform_buffer(kernel.input, input);
+            } else {
+                builder.read_storage(kernel.input, input);
+            }
             d.vertices = create_water_vertices(builder, push.grid.resolution);
         },
-        [kernel, uniform, push](const Data& d, fg::PassContext& context) {
-            ComputePipelineDesc desc;
-            desc.shader = kernel.shader;
-            const Pipeline& pipeline = context.pipeline(kernel.pipeline, desc);
-            const fg::DescriptorBinding in =
-                uniform ? context.uniform_buffer(0, d.input) : context.storage_buffer(0, d.input);
-            dispatch_water_grid(context, pipeline, in, d.vertices, push);
+        [kernel, push](const Data& d, fg::PassContext& context) {
+            const Pipeline& pipeline = context.pipeline(kernel.pipeline, ComputePipelineDesc{kernel.shader});
+            dispatch_water_grid(context, pipeline, d.vertices, push);
         });
     return data.vertices;
 }

@@ -7,24 +7,16 @@
 #include "passes/water/water_surface_spectrum.hpp"
 #include "passes/water/water_surface_sum.hpp"
 
+#include <shader_structs/water/ocean_spectra.comp.hpp>
+
 #include <numbers>
 
 namespace vkw::passes {
 
 namespace {
 
-constexpr uint32_t kSpectrumGroupSide = 8;  // ocean_spectra.comp's 8 x 8 groups; n >= 16
-
-// Mirrors the push constants of shaders/water/ocean_spectra.comp.
-struct SpectraPush {
-    uint32_t n;
-    float dk;
-    // The time in fp32: the phase w t then carries ulp(t) w, 1e-3 rad for the 11 rad/s modes
-    // of a 256-mode, 64 m patch at t = 1000 s (the sum model reduces its phases in double
-    // instead; here that would be a CPU pass over every mode each frame).
-    float time;
-    float choppiness;
-};
+// The push-constant block of shaders/water/ocean_spectra.comp, generated from its SPIR-V (tools/shader_structs).
+using SpectraPush = glsl::ocean_spectra_comp::Params;
 
 // Mirrors the push constants of shaders/water/ocean_grid.comp.
 struct GridPush {
@@ -37,28 +29,27 @@ fg::BufferHandle add_spectra_pass(fg::FrameGraph& graph, const WaterSurfaceInput
     const FftOceanSpectrum& spectrum = inputs.ocean->spectrum();
     const uint32_t n = spectrum.n;
     const fg::BufferHandle h0 = inputs.ocean->import_into(graph);
+    // The time in fp32: the phase w t then carries ulp(t) w, 1e-3 rad for the 11 rad/s modes of a
+    // 256-mode, 64 m patch at t = 1000 s (the sum model reduces its phases in double instead; here
+    // that would be a CPU pass over every mode each frame).
     const SpectraPush push{n, static_cast<float>(2.0 * std::numbers::pi / spectrum.patch_size),
                            static_cast<float>(inputs.time), static_cast<float>(inputs.waves.ocean.choppiness)};
     struct Data {
-        fg::BufferHandle h0;
         fg::BufferHandle grids;
     };
     const auto& data = graph.add_pass<Data>(
         "ocean spectra", fg::PassKind::Compute,
         [&](fg::PassBuilder& builder, Data& d) {
-            d.h0 = builder.read_storage(h0, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+            builder.read_storage("InitialSpectrum", h0);
             const VkDeviceSize bytes = VkDeviceSize{kOceanGridCount} * n * n * 4 * sizeof(float);
-            d.grids = builder.create_buffer("ocean spectra", {bytes});
-            d.grids = builder.write_storage(d.grids, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+            d.grids = builder.write_storage("Grids", builder.create_buffer("ocean spectra", {bytes}));
         },
         [push](const Data& d, fg::PassContext& context) {
-            ComputePipelineDesc desc;
-            desc.shader = "water/ocean_spectra.comp";
-            const Pipeline& pipeline = context.pipeline("ocean spectra", desc);
-            context.bind(pipeline, {context.storage_buffer(0, d.h0), context.storage_buffer(1, d.grids)});
+            const Pipeline& pipeline =
+                context.pipeline("ocean spectra", ComputePipelineDesc{"water/ocean_spectra.comp"});
+            context.bind(pipeline);
             context.push_constants(pipeline, push);
-            const uint32_t groups = push.n / kSpectrumGroupSide;  // <= 128
-            vkCmdDispatch(context.cmd(), groups, groups, 1);
+            context.dispatch(pipeline, push.n, push.n);  // <= 128 groups per side
         });
     return data.grids;
 }
@@ -75,7 +66,7 @@ WaterSurfaceBuffers add_ocean_passes(fg::FrameGraph& graph, const WaterSurfaceIn
     out.waves = add_wave_table_pass(graph, {}, inputs.time);
     const GridPush push{water_grid_push(inputs), spectrum.n, static_cast<float>(spectrum.n / spectrum.patch_size)};
     add_water_grid_and_mesh_passes(
-        graph, {"water surface (ocean grid)", "water/ocean_grid.comp", "ocean grid", VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+        graph, {"water surface (ocean grid)", "water/ocean_grid.comp", "ocean grid", "Grids", false},
         "water mesh (ocean grid)", *out.ocean_fields, push, mesh_resolution, out);
     out.model.ocean = true;
     out.model.ocean_n = push.n;

@@ -72,9 +72,9 @@ WaterSurfaceBuffers add_wave_sum_passes(fg::FrameGraph& graph, const WaterSurfac
     WaterSurfaceBuffers out;
     out.waves = add_wave_table_pass(graph, waves, inputs.time);
     const SumPush push{water_grid_push(inputs), static_cast<uint32_t>(waves.size())};
-    add_water_grid_and_mesh_passes(
-        graph, {"water surface (wave sum)", "water/wave_sum.comp", "wave sum", VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
-        "water mesh (wave sum)", out.waves, push, mesh_resolution, out);
+    add_water_grid_and_mesh_passes(graph,
+                                   {"water surface (wave sum)", "water/wave_sum.comp", "wave sum", "Waves", true},
+                                   "water mesh (wave sum)", out.waves, push, mesh_resolution, out);
     out.model.wave_count = push.wave_count;
     // sum (A k + s) k bounds |d^2 P / du^2| of the waves.
     double curvature = 0.0;

@@ -63,16 +63,14 @@ inline void add_probe_pass(fg::FrameGraph& graph, const passes::CausticMap& map,
     push.count_x = grid.count_x;
     push.count_z = grid.count_z;
     struct Data {
-        fg::ImageHandle map;
-        fg::BufferHandle frame, out;
+        fg::BufferHandle out;
     };
     const auto& data = graph.add_pass<Data>(
         "caustic probes", fg::PassKind::Compute,
         [&](fg::PassBuilder& builder, Data& d) {
-            const VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-            d.frame = builder.uniform_buffer(map.frame, stage);
-            d.map = builder.sample(map.irradiance, stage);
-            d.out = builder.write_storage(builder.create_buffer("caustic probes", {bytes}), stage);
+            builder.uniform_buffer("CausticMapBlock", map.frame);
+            builder.sample("caustic_map", map.irradiance);
+            d.out = builder.write_storage("Probes", builder.create_buffer("caustic probes", {bytes}));
         },
         [push](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
@@ -82,8 +80,7 @@ inline void add_probe_pass(fg::FrameGraph& graph, const passes::CausticMap& map,
                                     {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
             desc.layout.push_constant_bytes = sizeof(Push);
             const Pipeline& pipeline = context.pipeline("caustic probes", desc);
-            context.bind(pipeline, {context.uniform_buffer(0, d.frame), context.sampled(1, d.map),
-                                    context.storage_buffer(2, d.out)});
+            context.bind(pipeline);
             context.push_constants(pipeline, push);
             vkCmdDispatch(context.cmd(), (push.count_x * push.count_z + 63) / 64, 1, 1);
         });

@@ -30,7 +30,8 @@ fg::ImageHandle add_poison_pass(fg::FrameGraph& graph, const std::string& name, 
         .add_pass<Data>(
             name, fg::PassKind::Compute,
             [&](fg::PassBuilder& builder, Data& d) {
-                d.image = builder.write_storage(builder.create_image(name + " image", {VK_FORMAT_R32G32B32A32_SFLOAT}));
+                d.image = builder.write_storage("target",
+                                                builder.create_image(name + " image", {VK_FORMAT_R32G32B32A32_SFLOAT}));
             },
             [params](const Data& d, fg::PassContext& context) {
                 ComputePipelineDesc desc;
@@ -38,7 +39,7 @@ fg::ImageHandle add_poison_pass(fg::FrameGraph& graph, const std::string& name, 
                 desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
                 desc.layout.push_constant_bytes = sizeof(PoisonParams);
                 const Pipeline& pipeline = context.pipeline("poison", desc);
-                context.bind(pipeline, {context.storage_image(0, d.image)});
+                context.bind(pipeline);
                 context.push_constants(pipeline, params);
                 vkCmdDispatch(context.cmd(), kSize / 8, kSize / 8, 1);
             })

@@ -84,6 +84,69 @@ TEST(SpirvReflection, EveryResourceKindOfTheProbe) {
     EXPECT_EQ(probe.push_constant_bytes, 20u);  // vec4 + float, no tail padding
 }
 
+TEST(SpirvReflection, BindingsCarryTheShadersNames) {
+    // A block is named by its type (`Flux` in `buffer Flux { ... };`, also where the block has an
+    // instance name: `Constants` in `uniform Constants { ... } constants;`), any other resource by
+    // its variable: the names passes declare their resources under.
+    const ReflectedStage probe = reflect_file("tests/reflection_probe.comp.plain.spv");
+    std::vector<std::string> names;
+    for (const ReflectedBinding& b : probe.bindings) names.push_back(b.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"Constants", "Values", "textures", "separate_texture",
+                                               "separate_sampler", "storage", "texels", "storage_texels"}));
+    const ReflectedStage blur = reflect_file("godrays/godray_blur.comp.spv");
+    ASSERT_EQ(blur.bindings.size(), 3u);
+    EXPECT_EQ(blur.bindings[0].name, "source");
+    EXPECT_EQ(blur.bindings[2].name, "target");
+}
+
+TEST(SpirvReflection, ComputeStagesCarryTheirWorkgroupSize) {
+    const ReflectedStage blur = reflect_file("godrays/godray_blur.comp.spv");  // local_size_x = local_size_y = 8
+    EXPECT_EQ(std::vector<uint32_t>(std::begin(blur.local_size), std::end(blur.local_size)),
+              (std::vector<uint32_t>{8, 8, 1}));
+    // local_size_x = kGroupSize, a constant of 64 (not a specialization constant).
+    const ReflectedStage fft = reflect_file("water/ocean_fft.comp.spv");
+    EXPECT_EQ(std::vector<uint32_t>(std::begin(fft.local_size), std::end(fft.local_size)),
+              (std::vector<uint32_t>{64, 1, 1}));
+    const ReflectedStage sky = reflect_file("sky/sky.frag.frame.spv");
+    EXPECT_EQ(std::vector<uint32_t>(std::begin(sky.local_size), std::end(sky.local_size)),
+              (std::vector<uint32_t>{1, 1, 1}));
+}
+
+// Two stages of one pipeline, as reflect_spirv would give them, using `a` and `b` at binding 0.
+std::vector<ReflectedStage> two_stages(const std::string& a, const std::string& b) {
+    ReflectedStage vertex{"v.spv", VK_SHADER_STAGE_VERTEX_BIT, {{0, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, a}}};
+    ReflectedStage fragment{"f.spv", VK_SHADER_STAGE_FRAGMENT_BIT, {{0, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, b}}};
+    return {vertex, fragment};
+}
+
+TEST(SpirvReflection, LayoutBindingsTakeTheStagesCommonName) {
+    const std::vector<ReflectedStage> stages = two_stages("FrameConstants", "FrameConstants");
+    const PipelineLayoutDesc layout = derive_pipeline_layout("p", stages);
+    EXPECT_EQ(name_layout_bindings("p", layout, stages), std::vector<std::string>{"FrameConstants"});
+}
+
+TEST(SpirvReflection, StagesNamingOneBindingDifferentlyThrow) {
+    const std::vector<ReflectedStage> stages = two_stages("FrameConstants", "Frame");
+    const PipelineLayoutDesc layout = derive_pipeline_layout("p", stages);
+    try {
+        name_layout_bindings("p", layout, stages);
+        FAIL() << "no throw";
+    } catch (const InternalError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("binding 0 is 'Frame'"), std::string::npos) << what;
+        EXPECT_NE(what.find("'FrameConstants'"), std::string::npos) << what;
+    }
+}
+
+TEST(SpirvReflection, TwoBindingsOfOneNameThrow) {
+    ReflectedStage stage{
+        "c.spv",
+        VK_SHADER_STAGE_COMPUTE_BIT,
+        {{0, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, "Flux"}, {0, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, "Flux"}}};
+    const PipelineLayoutDesc layout = derive_pipeline_layout("p", {stage});
+    EXPECT_THROW(name_layout_bindings("p", layout, {stage}), InternalError);
+}
+
 TEST(SpirvReflection, OtherSetIsReported) {
     const ReflectedStage probe = reflect_file("tests/reflection_probe.comp.other_set.spv");
     ASSERT_FALSE(probe.bindings.empty());

@@ -57,16 +57,14 @@ std::vector<glm::vec4> probe_pixels(Context& gpu, const FrameConstants& constant
         passes::add_frame_constants_upload(graph, &constants);
         const passes::WaterSurfaceBuffers surface = passes::add_water_surface_passes(graph, inputs, mesh_resolution);
         struct Data {
-            fg::BufferHandle constants;
             passes::WaterSurfaceReads surface;
             fg::ImageHandle points, depth;
         };
         const auto& data = graph.add_pass<Data>(
             "refinement probe", fg::PassKind::Graphics,
             [&](fg::PassBuilder& builder, Data& d) {
-                d.constants = builder.uniform_buffer(
-                    graph.blackboard().get(keys::kFrameConstants),
-                    VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+                builder.uniform_buffer("FrameConstants", graph.blackboard().get(keys::kFrameConstants),
+                                       VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
                 d.surface.declare(builder, surface);
                 d.points = builder.color_attachment(builder.create_image("probe points", {}), fg::LoadOp::Clear);
                 d.depth = builder.depth_stencil_attachment(builder.create_image("probe depth", {VK_FORMAT_D32_SFLOAT}),
@@ -81,9 +79,7 @@ std::vector<glm::vec4> probe_pixels(Context& gpu, const FrameConstants& constant
                 desc.topology = passes::WaterSurfaceReads::kTopology;
                 const std::string key = d.surface.specialise(desc, "refinement probe");
                 const Pipeline& pipeline = context.pipeline(key, desc);
-                std::vector<fg::DescriptorBinding> bindings{context.uniform_buffer(0, d.constants)};
-                d.surface.add_bindings(context, bindings);
-                context.bind(pipeline, bindings);
+                context.bind(pipeline, d.surface.stand_ins(context));
                 context.push_constants(pipeline, push);
                 d.surface.draw(context);
             });

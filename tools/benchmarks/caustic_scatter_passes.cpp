@@ -52,9 +52,7 @@ fg::BufferHandle add_caustic_scatter_pass(fg::FrameGraph& graph, ScatterKind kin
     };
     const auto& data = graph.add_pass<Data>(
         name, fg::PassKind::Compute,
-        [&](fg::PassBuilder& builder, Data& d) {
-            d.target = builder.read_write_storage(cleared, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
-        },
+        [&](fg::PassBuilder& builder, Data& d) { d.target = builder.read_write_storage("Flux", cleared); },
         [push, kind, header, bytes, name](const Data& d, fg::PassContext& context) {
             const VkDeviceSize range = bytes - header;
             if (range > context.context().properties().limits.maxStorageBufferRange) {
@@ -71,10 +69,7 @@ fg::BufferHandle add_caustic_scatter_pass(fg::FrameGraph& graph, ScatterKind kin
             desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
             desc.layout.push_constant_bytes = sizeof(ScatterPush);
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
-            fg::DescriptorBinding target = context.storage_buffer(0, d.target);
-            target.buffer.offset = header;
-            target.buffer.range = range;
-            context.bind(pipeline, {target});
+            context.bind(pipeline, {context.storage_buffer("Flux", d.target, header, range)});
             context.push_constants(pipeline, push);
             const uint32_t groups = (push.resolution + kScatterGroupSide - 1) / kScatterGroupSide;
             vkCmdDispatch(context.cmd(), groups, groups, 1);

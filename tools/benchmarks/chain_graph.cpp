@@ -12,16 +12,15 @@ fg::ImageHandle add_chain(fg::FrameGraph& graph) {
         "gradient", fg::PassKind::Compute,
         [](fg::PassBuilder& builder, GradientData& d) {
             d.pattern = builder.create_image("pattern", {VK_FORMAT_R32G32B32A32_SFLOAT});
-            d.pattern = builder.write_storage(d.pattern);
+            d.pattern = builder.write_storage("target", d.pattern);
         },
         [](const GradientData& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
             desc.shader = kPatternShader;
             desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT}};
             const Pipeline& pipeline = context.pipeline("gradient", desc);
-            context.bind(pipeline, {context.storage_image(0, d.pattern)});
-            const VkExtent2D extent = context.extent(d.pattern);
-            vkCmdDispatch(context.cmd(), (extent.width + 7) / 8, (extent.height + 7) / 8, 1);
+            context.bind(pipeline);
+            context.dispatch(pipeline, d.pattern);
         });
     struct CopyData {
         fg::ImageHandle pattern;
@@ -30,7 +29,7 @@ fg::ImageHandle add_chain(fg::FrameGraph& graph) {
     const auto& copy = graph.add_pass<CopyData>(
         "copy texels", fg::PassKind::Graphics,
         [&](fg::PassBuilder& builder, CopyData& d) {
-            d.pattern = builder.sample(gradient.pattern);
+            d.pattern = builder.sample("source", gradient.pattern);
             d.doubled = builder.create_image("doubled", {VK_FORMAT_R32G32B32A32_SFLOAT});
             d.doubled = builder.color_attachment(d.doubled, fg::LoadOp::DontCare);
         },
@@ -40,7 +39,7 @@ fg::ImageHandle add_chain(fg::FrameGraph& graph) {
             desc.fragment_shader = kCopyShader;
             desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}};
             const Pipeline& pipeline = context.pipeline("copy", desc);
-            context.bind(pipeline, {context.sampled(0, d.pattern)});
+            context.bind(pipeline);
             vkCmdDraw(context.cmd(), 3, 1, 0, 0);
         });
     return copy.doubled;
