@@ -7,6 +7,8 @@
 #include "passes/present/readback.hpp"
 #include "tests/support/gpu_test.hpp"
 
+#include <shader_structs/tests/poison.comp.hpp>
+
 #include <cstring>
 #include <functional>
 #include <string>
@@ -18,11 +20,8 @@ namespace {
 constexpr uint32_t kSize = 16;
 constexpr VkDeviceSize kBytes = VkDeviceSize{kSize} * kSize * 16;
 
-struct PoisonParams {
-    int32_t x, y;
-    uint32_t channel;
-    uint32_t use_infinity;
-};
+// tests/poison.comp's push block (its bad texel, channel, and whether the poison is +Inf or NaN).
+using PoisonParams = glsl::poison_comp::Params;
 
 using DeclaredBindings = GpuTest;
 
@@ -45,7 +44,7 @@ void run_poison(Context& gpu, const std::function<fg::ImageHandle(fg::PassBuilde
         [&](const Data& d, fg::PassContext& context) {
             const Pipeline& pipeline = context.pipeline("poison", ComputePipelineDesc{"tests/poison.comp"});
             bind(context, pipeline, d.image);
-            context.push_constants(pipeline, PoisonParams{-1, -1, 0, 0});  // no poisoned texel
+            context.push_constants(pipeline, PoisonParams{{-1, -1}, 0, 0});  // no poisoned texel
             context.dispatch(pipeline, d.image);
         });
     passes::add_readback_pass(graph, data.image, readback.handle(), kBytes);

@@ -8,6 +8,8 @@
 #include "passes/present/readback.hpp"
 #include "tests/support/gpu_test.hpp"
 
+#include <shader_structs/tests/poison.comp.hpp>
+
 #include <string>
 
 namespace vkw::test {
@@ -16,11 +18,8 @@ namespace {
 constexpr uint32_t kSize = 16;
 constexpr VkDeviceSize kBytes = VkDeviceSize{kSize} * kSize * 16;
 
-struct PoisonParams {
-    int32_t x, y;
-    uint32_t channel;
-    uint32_t use_infinity;
-};
+// tests/poison.comp's push block (its bad texel, channel, and whether the poison is +Inf or NaN).
+using PoisonParams = glsl::poison_comp::Params;
 
 fg::ImageHandle add_poison_pass(fg::FrameGraph& graph, const std::string& name, PoisonParams params) {
     struct Data {
@@ -54,9 +53,9 @@ TEST_F(FrameGraphChecks, FiniteCheckNamesPassResourceAndTexel) {
         fg::PipelineStore pipelines;
         fg::FrameGraph graph;
         // A clean pass first, then the poisoned one: the report must name the second.
-        const fg::ImageHandle clean = add_poison_pass(graph, "clean", {-1, -1, 0, 0});
+        const fg::ImageHandle clean = add_poison_pass(graph, "clean", {{-1, -1}, 0, 0});
         graph.request_output(clean);
-        const fg::ImageHandle bad = add_poison_pass(graph, "poison", {5, 3, 2, infinity});
+        const fg::ImageHandle bad = add_poison_pass(graph, "poison", {{5, 3}, 2, infinity});
         passes::add_readback_pass(graph, bad, readback.handle(), kBytes);
         graph.compile(kSize, kSize);
         fg::FrameExecutor executor(context(), graph, pipelines, {.check_finite = true, .timing = fg::TimingMode::None});
@@ -79,8 +78,8 @@ TEST_F(FrameGraphChecks, CulledPassCreatesNoPipeline) {
     fg::FrameNeeds needs;
     needs.decide(Effect::VolumeCaustics, false, "test: not needed");
     fg::FrameGraph graph(needs);
-    const fg::ImageHandle used = add_poison_pass(graph, "used", {-1, -1, 0, 0});
-    add_poison_pass(graph, "unread", {-1, -1, 0, 0});  // nothing reads it
+    const fg::ImageHandle used = add_poison_pass(graph, "used", {{-1, -1}, 0, 0});
+    add_poison_pass(graph, "unread", {{-1, -1}, 0, 0});  // nothing reads it
     struct Data {
         fg::ImageHandle image;
     };
@@ -119,7 +118,7 @@ TEST_F(FrameGraphChecks, EveryTimingMethodReportsEachLivingPassOnce) {
         Buffer readback(context(), {kBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "readback");
         fg::PipelineStore pipelines;
         fg::FrameGraph graph;
-        passes::add_readback_pass(graph, add_poison_pass(graph, "fill", {-1, -1, 0, 0}), readback.handle(), kBytes);
+        passes::add_readback_pass(graph, add_poison_pass(graph, "fill", {{-1, -1}, 0, 0}), readback.handle(), kBytes);
         graph.compile(kSize, kSize);
         fg::FrameExecutor executor(context(), graph, pipelines, {.timing = mode});
         const fg::FrameReport report = executor.execute();
