@@ -34,7 +34,7 @@ fg::ImageHandle add_upscale_pass(fg::FrameGraph& graph, fg::ImageHandle source, 
             // Every pixel is written: what the image held before does not matter.
             d.target = builder.color_attachment(d.target, fg::LoadOp::DontCare);
         },
-        [width, height](const Data& d, fg::PassContext& context) {
+        [width, height](const Data&, fg::PassContext& context) {
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "common/fullscreen.vert";
             desc.fragment_shader = "frame/upscale.frag";

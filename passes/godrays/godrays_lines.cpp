@@ -62,7 +62,7 @@ fg::BufferHandle add_godray_lines_passes(fg::FrameGraph& graph, const GodrayLine
             builder.sample("view_depth", inputs.view_depth, fg::Filter::Nearest);
             d.radiance = builder.read_write_storage("Radiance", cleared);
         },
-        [push](const Data& d, fg::PassContext& context) {
+        [push](const Data&, fg::PassContext& context) {
             ComputePipelineDesc desc;
             desc.shader = "godrays/godray_lines.comp";
             const Pipeline& pipeline = context.pipeline("godray lines", desc);

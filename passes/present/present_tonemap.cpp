@@ -26,7 +26,7 @@ fg::ImageHandle add_present_tonemap_pass(fg::FrameGraph& graph, fg::ImageHandle 
             // Every pixel is written: what the image held before does not matter.
             d.target = builder.color_attachment(target, fg::LoadOp::DontCare);
         },
-        [settings](const Data& d, fg::PassContext& context) {
+        [settings](const Data&, fg::PassContext& context) {
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "common/fullscreen.vert";
             desc.fragment_shader = "present/present_tonemap.frag";

@@ -15,7 +15,7 @@ void add_scene_optics_pass(fg::FrameGraph& graph) {
             builder.uniform_buffer("FrameConstants", graph.blackboard().get(keys::kFrameConstants));
             d.optics = builder.write_storage("Optics", builder.create_buffer("scene optics", {3 * 16}));
         },
-        [](const Data& d, fg::PassContext& context) {
+        [](const Data&, fg::PassContext& context) {
             const Pipeline& pipeline = context.pipeline("scene optics", ComputePipelineDesc{"water/scene_optics.comp"});
             context.bind(pipeline);
             vkCmdDispatch(context.cmd(), 1, 1, 1);

@@ -33,7 +33,7 @@ fg::BufferHandle add_fft_direction(fg::FrameGraph& graph, fg::BufferHandle grids
     const auto& data = graph.add_pass<Data>(
         name, fg::PassKind::Compute,
         [&](fg::PassBuilder& builder, Data& d) { d.grids = builder.read_write_storage("Grids", grids); },
-        [push](const Data& d, fg::PassContext& context) {
+        [push](const Data&, fg::PassContext& context) {
             const Pipeline& pipeline = context.pipeline("ocean fft", ComputePipelineDesc{"water/ocean_fft.comp"});
             context.bind(pipeline);
             context.push_constants(pipeline, push);

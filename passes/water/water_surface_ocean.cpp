@@ -44,7 +44,7 @@ fg::BufferHandle add_spectra_pass(fg::FrameGraph& graph, const WaterSurfaceInput
             const VkDeviceSize bytes = VkDeviceSize{kOceanGridCount} * n * n * 4 * sizeof(float);
             d.grids = builder.write_storage("Grids", builder.create_buffer("ocean spectra", {bytes}));
         },
-        [push](const Data& d, fg::PassContext& context) {
+        [push](const Data&, fg::PassContext& context) {
             const Pipeline& pipeline =
                 context.pipeline("ocean spectra", ComputePipelineDesc{"water/ocean_spectra.comp"});
             context.bind(pipeline);

@@ -72,7 +72,7 @@ inline void add_probe_pass(fg::FrameGraph& graph, const passes::CausticMap& map,
             builder.sample("caustic_map", map.irradiance);
             d.out = builder.write_storage("Probes", builder.create_buffer("caustic probes", {bytes}));
         },
-        [push](const Data& d, fg::PassContext& context) {
+        [push](const Data&, fg::PassContext& context) {
             ComputePipelineDesc desc;
             desc.shader = "caustics/caustic_probe.comp";
             desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT},

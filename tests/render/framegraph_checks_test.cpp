@@ -32,7 +32,7 @@ fg::ImageHandle add_poison_pass(fg::FrameGraph& graph, const std::string& name, 
                 d.image = builder.write_storage("target",
                                                 builder.create_image(name + " image", {VK_FORMAT_R32G32B32A32_SFLOAT}));
             },
-            [params](const Data& d, fg::PassContext& context) {
+            [params](const Data&, fg::PassContext& context) {
                 ComputePipelineDesc desc;
                 desc.shader = "tests/poison.comp";
                 desc.layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT}};

@@ -33,7 +33,7 @@ fg::ImageHandle add_chain(fg::FrameGraph& graph) {
             d.doubled = builder.create_image("doubled", {VK_FORMAT_R32G32B32A32_SFLOAT});
             d.doubled = builder.color_attachment(d.doubled, fg::LoadOp::DontCare);
         },
-        [](const CopyData& d, fg::PassContext& context) {
+        [](const CopyData&, fg::PassContext& context) {
             GraphicsPipelineDesc desc;
             desc.vertex_shader = "common/fullscreen.vert";
             desc.fragment_shader = kCopyShader;
