@@ -6,7 +6,6 @@
 #include "engine/vk/spirv_reflection.hpp"
 
 #include <algorithm>
-#include <type_traits>
 
 namespace vkw::fg {
 
@@ -111,14 +110,11 @@ void PassContext::bind(const Pipeline& pipeline, const std::vector<DescriptorBin
     for (size_t i = 0; i < layout.names.size(); ++i) {
         const std::string& name = layout.names[i];
         if (name.empty()) continue;  // a declared layout's binding that no stage uses
-        const auto named = [&](const auto& item) {
-            if constexpr (std::is_same_v<std::decay_t<decltype(item)>, ResourceUse>)
-                return item.binding == name;
-            else
-                return item.name == name;
-        };
-        if (std::any_of(extra.begin(), extra.end(), named)) continue;
-        const auto use = std::find_if(uses.begin(), uses.end(), named);
+        if (std::any_of(extra.begin(), extra.end(), [&](const DescriptorBinding& b) { return b.name == name; })) {
+            continue;
+        }
+        const auto use =
+            std::find_if(uses.begin(), uses.end(), [&](const ResourceUse& u) { return u.binding == name; });
         if (use == uses.end()) {
             fail("declares no resource for '" + name + "' (binding " + std::to_string(layout.bindings[i].binding) +
                  ", a " + descriptor_type_name(layout.bindings[i].descriptorType) + "), which its shaders read");
