@@ -92,15 +92,56 @@ Context::Context(const ContextOptions& options)
     }
 }
 
+Context::Context(const BorrowedDevice& host)
+    : borrowed_(true), allocator_(host.allocator), validation_log_(std::make_shared<ValidationLog>(false)) {
+    if (!host.instance || !host.physical_device || !host.device || !host.queue) {
+        throw InternalError("the host's device: instance, physical device, device and queue must all be given");
+    }
+    if (!host.enabled_features) {
+        throw InternalError("the host's device: enabled_features must be the feature chain it was created with");
+    }
+    instance_ = host.instance;
+    physical_device_ = host.physical_device;
+    device_ = host.device;
+    queue_ = host.queue;
+    queue_family_ = host.queue_family;
+    vkGetPhysicalDeviceProperties(physical_device_, &properties_);
+    vkGetPhysicalDeviceMemoryProperties(physical_device_, &memory_properties_);
+    try {
+        if (properties_.apiVersion < VK_API_VERSION_1_3) {
+            throw InternalError("the host's device '" + device_name() + "' is not a Vulkan 1.3 device");
+        }
+        uint32_t family_count = 0;
+        vkGetPhysicalDeviceQueueFamilyProperties(physical_device_, &family_count, nullptr);
+        std::vector<VkQueueFamilyProperties> families(family_count);
+        vkGetPhysicalDeviceQueueFamilyProperties(physical_device_, &family_count, families.data());
+        const VkQueueFlags needed = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+        if (queue_family_ >= family_count || (families[queue_family_].queueFlags & needed) != needed) {
+            throw InternalError("the host's queue family " + std::to_string(queue_family_) + " on '" + device_name() +
+                                "' does not do both graphics and compute");
+        }
+        read_enabled_features(*host.enabled_features);
+        load_device_functions(host.debug_utils);
+        create_command_pool();
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
 Context::~Context() { release(); }
 
 void Context::release() {
     if (device_) {
         vkDeviceWaitIdle(device_);
-        if (command_pool_) vkDestroyCommandPool(device_, command_pool_, nullptr);
-        vkDestroyDevice(device_, nullptr);
+        if (command_pool_) vkDestroyCommandPool(device_, command_pool_, allocator_);
+        if (!borrowed_) vkDestroyDevice(device_, nullptr);
         device_ = VK_NULL_HANDLE;
         command_pool_ = VK_NULL_HANDLE;
+    }
+    if (borrowed_) {
+        instance_ = VK_NULL_HANDLE;  // the host's
+        return;
     }
     if (messenger_) {
         auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
@@ -259,13 +300,7 @@ void Context::create_device(bool swapchain) {
     enable.features.shaderInt64 = supported.features.shaderInt64;
     enable.features.wideLines = supported.features.wideLines;
     enable.features.fillModeNonSolid = supported.features.fillModeNonSolid;
-    features_.depth_clamp = supported.features.depthClamp;
-    features_.shader_float64 = supported.features.shaderFloat64;
-    features_.shader_int64 = supported.features.shaderInt64;
-    features_.buffer_int64_atomics = supported12.shaderBufferInt64Atomics;
-    features_.shared_int64_atomics = supported12.shaderSharedInt64Atomics;
-    features_.wide_lines = supported.features.wideLines;
-    features_.fill_mode_non_solid = supported.features.fillModeNonSolid;
+    read_enabled_features(enable);
 
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -285,16 +320,71 @@ void Context::create_device(bool swapchain) {
     info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
     info.ppEnabledExtensionNames = extensions.data();
     VKW_CHECK(vkCreateDevice(physical_device_, &info, nullptr, &device_), "device '" + device_name() + "'");
-    push_descriptor_set_ =
-        reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
     vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
+    load_device_functions(set_object_name_ != nullptr);
     set_name(device_, VK_OBJECT_TYPE_DEVICE, "vkwater device");
     set_name(queue_, VK_OBJECT_TYPE_QUEUE, "vkwater queue");
+    create_command_pool();
+}
 
+namespace {
+
+// The first structure of type `type` in a pNext chain, or null.
+template <class Struct>
+const Struct* find_in_chain(const void* chain, VkStructureType type) {
+    for (auto* node = static_cast<const VkBaseInStructure*>(chain); node; node = node->pNext) {
+        if (node->sType == type) return reinterpret_cast<const Struct*>(node);
+    }
+    return nullptr;
+}
+
+}  // namespace
+
+void Context::read_enabled_features(const VkPhysicalDeviceFeatures2& enabled) {
+    const auto* enabled12 = find_in_chain<VkPhysicalDeviceVulkan12Features>(
+        enabled.pNext, VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES);
+    const auto* enabled13 = find_in_chain<VkPhysicalDeviceVulkan13Features>(
+        enabled.pNext, VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);
+    if (!enabled13 || !enabled13->dynamicRendering || !enabled13->synchronization2) {
+        throw InternalError("device '" + device_name() +
+                            "' was created without dynamic rendering or synchronization2 "
+                            "(VkPhysicalDeviceVulkan13Features in its feature chain)");
+    }
+    features_.depth_clamp = enabled.features.depthClamp;
+    features_.shader_float64 = enabled.features.shaderFloat64;
+    features_.shader_int64 = enabled.features.shaderInt64;
+    features_.buffer_int64_atomics = enabled12 && enabled12->shaderBufferInt64Atomics;
+    features_.shared_int64_atomics = enabled12 && enabled12->shaderSharedInt64Atomics;
+    features_.wide_lines = enabled.features.wideLines;
+    features_.fill_mode_non_solid = enabled.features.fillModeNonSolid;
+}
+
+void Context::load_device_functions(bool debug_utils) {
+    push_descriptor_set_ =
+        reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
+    if (!push_descriptor_set_) {
+        throw InternalError("device '" + device_name() + "' was created without " +
+                            VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME + ", which vkwater binds its resources with");
+    }
+    if (!debug_utils) {
+        set_object_name_ = nullptr;
+        begin_label_ = nullptr;
+        end_label_ = nullptr;
+    } else if (!set_object_name_) {
+        set_object_name_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+            vkGetInstanceProcAddr(instance_, "vkSetDebugUtilsObjectNameEXT"));
+        begin_label_ = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
+            vkGetInstanceProcAddr(instance_, "vkCmdBeginDebugUtilsLabelEXT"));
+        end_label_ = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
+            vkGetInstanceProcAddr(instance_, "vkCmdEndDebugUtilsLabelEXT"));
+    }
+}
+
+void Context::create_command_pool() {
     VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
     pool_info.queueFamilyIndex = queue_family_;
-    VKW_CHECK(vkCreateCommandPool(device_, &pool_info, nullptr, &command_pool_), "one-shot command pool");
+    VKW_CHECK(vkCreateCommandPool(device_, &pool_info, allocator_, &command_pool_), "one-shot command pool");
     set_name(command_pool_, VK_OBJECT_TYPE_COMMAND_POOL, "one-shot command pool");
 }
 
@@ -352,7 +442,7 @@ void Context::submit_and_wait(const std::function<void(VkCommandBuffer)>& record
         record(cmd);
         VKW_CHECK(vkEndCommandBuffer(cmd), name);
         VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-        VKW_CHECK(vkCreateFence(device_, &fence_info, nullptr, &fence), name);
+        VKW_CHECK(vkCreateFence(device_, &fence_info, allocator_, &fence), name);
         VkCommandBufferSubmitInfo cmd_info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
         cmd_info.commandBuffer = cmd;
         VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
@@ -362,11 +452,11 @@ void Context::submit_and_wait(const std::function<void(VkCommandBuffer)>& record
         VKW_CHECK(vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX), name);
     } catch (...) {
         vkDeviceWaitIdle(device_);
-        if (fence) vkDestroyFence(device_, fence, nullptr);
+        if (fence) vkDestroyFence(device_, fence, allocator_);
         vkFreeCommandBuffers(device_, command_pool_, 1, &cmd);
         throw;
     }
-    vkDestroyFence(device_, fence, nullptr);
+    vkDestroyFence(device_, fence, allocator_);
     vkFreeCommandBuffers(device_, command_pool_, 1, &cmd);
 }
 

@@ -24,6 +24,22 @@ struct ContextOptions {
     bool print_validation_messages = true;         // echo failures to stderr as they happen
 };
 
+// A host's Vulkan objects, lent to a context that records into the host's frames (the embedding
+// library, include/vkwater/). The context destroys none of them; it makes its own command pool and
+// submits its uploads on the lent queue, which the host must not use from another thread meanwhile.
+struct BorrowedDevice {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physical_device = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE;
+    uint32_t queue_family = 0;  // must support graphics and compute
+    // The feature chain the device was created with (VkDeviceCreateInfo::pNext): what vkwater may use
+    // is read from it, never assumed. VkPhysicalDeviceVulkan12Features and ...13Features are read.
+    const VkPhysicalDeviceFeatures2* enabled_features = nullptr;
+    const VkAllocationCallbacks* allocator = nullptr;  // for every object the context makes; may be null
+    bool debug_utils = false;  // VK_EXT_debug_utils is enabled on the instance: objects get names
+};
+
 // Optional device features vkwater uses when present; each pass checks what it needs.
 struct DeviceFeatures {
     bool depth_clamp = false;
@@ -38,6 +54,9 @@ struct DeviceFeatures {
 class Context {
 public:
     explicit Context(const ContextOptions& options);
+    // Borrows the host's device; throws InternalError naming what it lacks (Vulkan 1.3, dynamic
+    // rendering, synchronization2, VK_KHR_push_descriptor, a graphics and compute queue family).
+    explicit Context(const BorrowedDevice& host);
     ~Context();
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;
@@ -53,6 +72,10 @@ public:
     // CPU devices (lavapipe) leave raster and fragment work out of timestamps.
     bool is_cpu_device() const { return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
     bool validation_enabled() const { return validation_; }
+    // Whether the instance and device are the host's (BorrowedDevice): left alive at destruction.
+    bool borrowed() const { return borrowed_; }
+    // The host's allocation callbacks for every Vulkan object vkwater makes (null: the driver's).
+    const VkAllocationCallbacks* allocator() const { return allocator_; }
     ValidationLog& validation_log() { return *validation_log_; }
     // Outlives the context, to read what its teardown reported.
     std::shared_ptr<ValidationLog> shared_validation_log() const { return validation_log_; }
@@ -97,9 +120,14 @@ private:
     void create_instance(const ContextOptions& options);
     void pick_physical_device(const std::string& wanted_name);
     void create_device(bool swapchain);
+    void read_enabled_features(const VkPhysicalDeviceFeatures2& enabled);
+    void load_device_functions(bool debug_utils);
+    void create_command_pool();
     void release();
 
     bool validation_ = false;
+    bool borrowed_ = false;
+    const VkAllocationCallbacks* allocator_ = nullptr;
     std::shared_ptr<ValidationLog> validation_log_;
     VkInstance instance_ = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;

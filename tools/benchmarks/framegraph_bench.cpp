@@ -240,7 +240,7 @@ int main() {
     std::printf("| pool: declare its graph (the needs included) | %.3f ms |\n", pool_declare_ms);
     std::printf("| pool: compile it | %.3f ms |\n", pool_compile_ms - pool_declare_ms);
 
-    Context context({});
+    Context context(ContextOptions{});
     VkCommandPool pool;
     VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pool_info.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
