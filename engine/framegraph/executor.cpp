@@ -38,14 +38,15 @@ FrameExecutor::FrameExecutor(Context& context, FrameGraph& graph, PipelineStore&
     // the first offender is still named and a single-submission frame stays one
     // submission (synchronization validation sees hazards only within one).
     VkDevice device = context_.device();
+    const VkAllocationCallbacks* allocator = context_.allocator();
 
     VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     pool_info.queueFamilyIndex = context_.queue_family();
-    VKW_CHECK(vkCreateCommandPool(device, &pool_info, nullptr, &command_pool_), "frame graph command pool");
+    VKW_CHECK(vkCreateCommandPool(device, &pool_info, allocator, &command_pool_), "frame graph command pool");
     context_.set_name(command_pool_, VK_OBJECT_TYPE_COMMAND_POOL, "frame graph command pool");
     VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    VKW_CHECK(vkCreateFence(device, &fence_info, nullptr, &fence_), "frame graph fence");
+    VKW_CHECK(vkCreateFence(device, &fence_info, allocator, &fence_), "frame graph fence");
     context_.set_name(fence_, VK_OBJECT_TYPE_FENCE, "frame graph fence");
 
     VkSamplerCreateInfo sampler_info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
@@ -53,12 +54,12 @@ FrameExecutor::FrameExecutor(Context& context, FrameGraph& graph, PipelineStore&
     sampler_info.addressModeU = sampler_info.addressModeV = sampler_info.addressModeW =
         VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     sampler_info.maxLod = 0.0f;
-    VKW_CHECK(vkCreateSampler(device, &sampler_info, nullptr, &linear_sampler_), "linear sampler");
+    VKW_CHECK(vkCreateSampler(device, &sampler_info, allocator, &linear_sampler_), "linear sampler");
     context_.set_name(linear_sampler_, VK_OBJECT_TYPE_SAMPLER, "linear clamp sampler");
     // For formats without linear filtering (depth): validation checks the sampler's filter
     // against the format even where the shader only uses texelFetch.
     sampler_info.magFilter = sampler_info.minFilter = VK_FILTER_NEAREST;
-    VKW_CHECK(vkCreateSampler(device, &sampler_info, nullptr, &nearest_sampler_), "nearest sampler");
+    VKW_CHECK(vkCreateSampler(device, &sampler_info, allocator, &nearest_sampler_), "nearest sampler");
     context_.set_name(nearest_sampler_, VK_OBJECT_TYPE_SAMPLER, "nearest clamp sampler");
 
     realize_resources(options_.check_finite);
@@ -68,31 +69,32 @@ FrameExecutor::FrameExecutor(Context& context, FrameGraph& graph, PipelineStore&
         VkQueryPoolCreateInfo query_info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
         query_info.queryType = VK_QUERY_TYPE_TIMESTAMP;
         query_info.queryCount = static_cast<uint32_t>(2 * graph_->compiled().order.size() + 2);
-        VKW_CHECK(vkCreateQueryPool(device, &query_info, nullptr, &query_pool_), "timestamp query pool");
+        VKW_CHECK(vkCreateQueryPool(device, &query_info, allocator, &query_pool_), "timestamp query pool");
     }
 }
 
 FrameExecutor::~FrameExecutor() {
     VkDevice device = context_.device();
+    const VkAllocationCallbacks* allocator = context_.allocator();
     vkDeviceWaitIdle(device);
     // Executors are made per window size and swapchain image: their names are dropped with them.
     for (VkFramebuffer framebuffer : framebuffers_) {
         context_.forget_name(framebuffer, VK_OBJECT_TYPE_FRAMEBUFFER);
-        if (framebuffer) vkDestroyFramebuffer(device, framebuffer, nullptr);
+        if (framebuffer) vkDestroyFramebuffer(device, framebuffer, allocator);
     }
     for (VkRenderPass render_pass : render_passes_) {
         context_.forget_name(render_pass, VK_OBJECT_TYPE_RENDER_PASS);
-        if (render_pass) vkDestroyRenderPass(device, render_pass, nullptr);
+        if (render_pass) vkDestroyRenderPass(device, render_pass, allocator);
     }
-    if (query_pool_) vkDestroyQueryPool(device, query_pool_, nullptr);
+    if (query_pool_) vkDestroyQueryPool(device, query_pool_, allocator);
     context_.forget_name(linear_sampler_, VK_OBJECT_TYPE_SAMPLER);
-    if (linear_sampler_) vkDestroySampler(device, linear_sampler_, nullptr);
+    if (linear_sampler_) vkDestroySampler(device, linear_sampler_, allocator);
     context_.forget_name(nearest_sampler_, VK_OBJECT_TYPE_SAMPLER);
-    if (nearest_sampler_) vkDestroySampler(device, nearest_sampler_, nullptr);
+    if (nearest_sampler_) vkDestroySampler(device, nearest_sampler_, allocator);
     context_.forget_name(fence_, VK_OBJECT_TYPE_FENCE);
-    if (fence_) vkDestroyFence(device, fence_, nullptr);
+    if (fence_) vkDestroyFence(device, fence_, allocator);
     context_.forget_name(command_pool_, VK_OBJECT_TYPE_COMMAND_POOL);
-    if (command_pool_) vkDestroyCommandPool(device, command_pool_, nullptr);
+    if (command_pool_) vkDestroyCommandPool(device, command_pool_, allocator);
 }
 
 // ---------------------------------------------------------------- resources
@@ -265,7 +267,7 @@ void FrameExecutor::create_render_passes() {
         info.pAttachments = descriptions.data();
         info.subpassCount = 1;
         info.pSubpasses = &subpass;
-        VKW_CHECK(vkCreateRenderPass(context_.device(), &info, nullptr, &render_passes_[pass]),
+        VKW_CHECK(vkCreateRenderPass(context_.device(), &info, context_.allocator(), &render_passes_[pass]),
                   "render pass of '" + decl.name + "'");
         context_.set_name(render_passes_[pass], VK_OBJECT_TYPE_RENDER_PASS, decl.name);
 
@@ -276,7 +278,7 @@ void FrameExecutor::create_render_passes() {
         framebuffer_info.width = extent.width;
         framebuffer_info.height = extent.height;
         framebuffer_info.layers = 1;
-        VKW_CHECK(vkCreateFramebuffer(context_.device(), &framebuffer_info, nullptr, &framebuffers_[pass]),
+        VKW_CHECK(vkCreateFramebuffer(context_.device(), &framebuffer_info, context_.allocator(), &framebuffers_[pass]),
                   "framebuffer of '" + decl.name + "'");
         context_.set_name(framebuffers_[pass], VK_OBJECT_TYPE_FRAMEBUFFER, decl.name);
     }

@@ -32,12 +32,14 @@ PipelineLayoutDesc checked_or_derived_layout(const std::string& name, const Pipe
 
 void Pipeline::create_layout(const Context& context, const PipelineLayoutDesc& desc, const std::string& name) {
     device_ = context.device();
+    allocator_ = context.allocator();
     layout_desc_ = desc;
     VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     set_info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
     set_info.bindingCount = static_cast<uint32_t>(desc.bindings.size());
     set_info.pBindings = desc.bindings.data();
-    VKW_CHECK(vkCreateDescriptorSetLayout(device_, &set_info, nullptr, &set_layout_), "set layout of '" + name + "'");
+    VKW_CHECK(vkCreateDescriptorSetLayout(device_, &set_info, allocator_, &set_layout_),
+              "set layout of '" + name + "'");
     context.set_name(set_layout_, VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, name);
 
     VkPushConstantRange range{VK_SHADER_STAGE_ALL, 0, desc.push_constant_bytes};
@@ -46,7 +48,7 @@ void Pipeline::create_layout(const Context& context, const PipelineLayoutDesc& d
     layout_info.pSetLayouts = &set_layout_;
     layout_info.pushConstantRangeCount = desc.push_constant_bytes > 0 ? 1 : 0;
     layout_info.pPushConstantRanges = &range;
-    VKW_CHECK(vkCreatePipelineLayout(device_, &layout_info, nullptr, &layout_), "layout of '" + name + "'");
+    VKW_CHECK(vkCreatePipelineLayout(device_, &layout_info, allocator_, &layout_), "layout of '" + name + "'");
     context.set_name(layout_, VK_OBJECT_TYPE_PIPELINE_LAYOUT, name);
 }
 
@@ -64,7 +66,7 @@ Pipeline::Pipeline(const Context& context, const ComputePipelineDesc& desc, cons
     info.stage.module = shader.handle();
     info.stage.pName = "main";
     info.layout = layout_;
-    VKW_CHECK(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_),
+    VKW_CHECK(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, allocator_, &pipeline_),
               "pipeline '" + name + "'");
     context.count_pipeline();
     context.set_name(pipeline_, VK_OBJECT_TYPE_PIPELINE, name);
@@ -176,16 +178,16 @@ Pipeline::Pipeline(const Context& context, const GraphicsPipelineDesc& desc, con
     info.pDynamicState = &dynamic;
     info.layout = layout_;
     info.renderPass = desc.render_pass;
-    VKW_CHECK(vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_),
+    VKW_CHECK(vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, allocator_, &pipeline_),
               "pipeline '" + name + "'");
     context.count_pipeline();
     context.set_name(pipeline_, VK_OBJECT_TYPE_PIPELINE, name);
 }
 
 Pipeline::~Pipeline() {
-    if (pipeline_) vkDestroyPipeline(device_, pipeline_, nullptr);
-    if (layout_) vkDestroyPipelineLayout(device_, layout_, nullptr);
-    if (set_layout_) vkDestroyDescriptorSetLayout(device_, set_layout_, nullptr);
+    if (pipeline_) vkDestroyPipeline(device_, pipeline_, allocator_);
+    if (layout_) vkDestroyPipelineLayout(device_, layout_, allocator_);
+    if (set_layout_) vkDestroyDescriptorSetLayout(device_, set_layout_, allocator_);
 }
 
 }  // namespace vkw

@@ -74,6 +74,8 @@ public:
 private:
     void create_layout(const Context& context, const PipelineLayoutDesc& desc, const std::string& name);
     VkDevice device_ = VK_NULL_HANDLE;
+    // Context::allocator(), kept because objects must be freed with the callbacks that made them.
+    const VkAllocationCallbacks* allocator_ = nullptr;
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;

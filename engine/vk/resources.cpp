@@ -10,11 +10,11 @@ namespace vkw {
 
 DeviceMemory::DeviceMemory(const Context& context, VkDeviceSize size, uint32_t type_bits,
                            VkMemoryPropertyFlags properties, const std::string& name)
-    : device_(context.device()), size_(size) {
+    : device_(context.device()), allocator_(context.allocator()), size_(size) {
     VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     info.allocationSize = size;
     info.memoryTypeIndex = context.find_memory_type(type_bits, properties);
-    VKW_CHECK(vkAllocateMemory(device_, &info, nullptr, &memory_), "memory of '" + name + "'");
+    VKW_CHECK(vkAllocateMemory(device_, &info, allocator_, &memory_), "memory of '" + name + "'");
     context.count_memory_allocation();
     context.set_name(memory_, VK_OBJECT_TYPE_DEVICE_MEMORY, name);
     if (properties & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT) {
@@ -30,6 +30,7 @@ DeviceMemory& DeviceMemory::operator=(DeviceMemory&& other) noexcept {
     if (this != &other) {
         reset();
         device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+        allocator_ = std::exchange(other.allocator_, nullptr);
         memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
         size_ = std::exchange(other.size_, 0);
         mapped_ = std::exchange(other.mapped_, nullptr);
@@ -38,7 +39,7 @@ DeviceMemory& DeviceMemory::operator=(DeviceMemory&& other) noexcept {
 }
 
 void DeviceMemory::reset() {
-    if (memory_) vkFreeMemory(device_, memory_, nullptr);  // unmaps implicitly
+    if (memory_) vkFreeMemory(device_, memory_, allocator_);  // unmaps implicitly
     memory_ = VK_NULL_HANDLE;
     mapped_ = nullptr;
 }
@@ -46,12 +47,13 @@ void DeviceMemory::reset() {
 Buffer Buffer::create_unbound(const Context& context, const BufferDesc& desc, const std::string& name) {
     Buffer buffer;
     buffer.device_ = context.device();
+    buffer.allocator_ = context.allocator();
     buffer.size_ = desc.size;
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     info.size = desc.size;
     info.usage = desc.usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    VKW_CHECK(vkCreateBuffer(buffer.device_, &info, nullptr, &buffer.buffer_), "buffer '" + name + "'");
+    VKW_CHECK(vkCreateBuffer(buffer.device_, &info, buffer.allocator_, &buffer.buffer_), "buffer '" + name + "'");
     context.set_name(buffer.buffer_, VK_OBJECT_TYPE_BUFFER, name);
     return buffer;
 }
@@ -84,6 +86,7 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
     if (this != &other) {
         reset();
         device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+        allocator_ = std::exchange(other.allocator_, nullptr);
         buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
         size_ = std::exchange(other.size_, 0);
         memory_ = std::move(other.memory_);
@@ -92,7 +95,7 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
 }
 
 void Buffer::reset() {
-    if (buffer_) vkDestroyBuffer(device_, buffer_, nullptr);
+    if (buffer_) vkDestroyBuffer(device_, buffer_, allocator_);
     buffer_ = VK_NULL_HANDLE;
     memory_ = DeviceMemory();
 }
@@ -101,6 +104,7 @@ Image Image::create_unbound(const Context& context, const ImageDesc& desc, const
     Image image;
     image.context_ = &context;
     image.device_ = context.device();
+    image.allocator_ = context.allocator();
     image.desc_ = desc;
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     info.imageType = VK_IMAGE_TYPE_2D;
@@ -113,7 +117,7 @@ Image Image::create_unbound(const Context& context, const ImageDesc& desc, const
     info.usage = desc.usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    VKW_CHECK(vkCreateImage(image.device_, &info, nullptr, &image.image_), "image '" + name + "'");
+    VKW_CHECK(vkCreateImage(image.device_, &info, image.allocator_, &image.image_), "image '" + name + "'");
     context.set_name(image.image_, VK_OBJECT_TYPE_IMAGE, name);
     return image;
 }
@@ -142,15 +146,15 @@ void Image::bind(const Context& context, VkDeviceMemory memory, VkDeviceSize off
     VkImageAspectFlags view_aspect = aspect();
     if (format_is_depth(desc_.format)) view_aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
     view_info.subresourceRange = {view_aspect, 0, desc_.mip_levels, 0, 1};
-    VKW_CHECK(vkCreateImageView(device_, &view_info, nullptr, &view_), "view of image '" + name + "'");
+    VKW_CHECK(vkCreateImageView(device_, &view_info, allocator_, &view_), "view of image '" + name + "'");
     context.set_name(view_, VK_OBJECT_TYPE_IMAGE_VIEW, name);
 }
 
 VkImageAspectFlags Image::aspect() const { return format_aspect(desc_.format); }
 
 Sampler::Sampler(const Context& context, const VkSamplerCreateInfo& info, const std::string& name)
-    : device_(context.device()) {
-    VKW_CHECK(vkCreateSampler(device_, &info, nullptr, &sampler_), "sampler '" + name + "'");
+    : device_(context.device()), allocator_(context.allocator()) {
+    VKW_CHECK(vkCreateSampler(device_, &info, allocator_, &sampler_), "sampler '" + name + "'");
     context.set_name(sampler_, VK_OBJECT_TYPE_SAMPLER, name);
 }
 
@@ -162,6 +166,7 @@ Sampler& Sampler::operator=(Sampler&& other) noexcept {
     if (this != &other) {
         reset();
         device_ = other.device_;
+        allocator_ = other.allocator_;
         sampler_ = other.sampler_;
         other.sampler_ = VK_NULL_HANDLE;
     }
@@ -169,7 +174,7 @@ Sampler& Sampler::operator=(Sampler&& other) noexcept {
 }
 
 void Sampler::reset() {
-    if (sampler_) vkDestroySampler(device_, sampler_, nullptr);
+    if (sampler_) vkDestroySampler(device_, sampler_, allocator_);
     sampler_ = VK_NULL_HANDLE;
 }
 
@@ -182,6 +187,7 @@ Image& Image::operator=(Image&& other) noexcept {
         reset();
         context_ = std::exchange(other.context_, nullptr);
         device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+        allocator_ = std::exchange(other.allocator_, nullptr);
         image_ = std::exchange(other.image_, VK_NULL_HANDLE);
         view_ = std::exchange(other.view_, VK_NULL_HANDLE);
         desc_ = other.desc_;
@@ -195,8 +201,8 @@ void Image::reset() {
         context_->forget_name(view_, VK_OBJECT_TYPE_IMAGE_VIEW);
         context_->forget_name(image_, VK_OBJECT_TYPE_IMAGE);
     }
-    if (view_) vkDestroyImageView(device_, view_, nullptr);
-    if (image_) vkDestroyImage(device_, image_, nullptr);
+    if (view_) vkDestroyImageView(device_, view_, allocator_);
+    if (image_) vkDestroyImage(device_, image_, allocator_);
     view_ = VK_NULL_HANDLE;
     image_ = VK_NULL_HANDLE;
     own_memory_ = DeviceMemory();

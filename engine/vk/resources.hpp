@@ -26,6 +26,8 @@ public:
 private:
     void reset();
     VkDevice device_ = VK_NULL_HANDLE;
+    // Context::allocator(), kept because objects must be freed with the callbacks that made them.
+    const VkAllocationCallbacks* allocator_ = nullptr;
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
     VkDeviceSize size_ = 0;
     void* mapped_ = nullptr;
@@ -57,6 +59,8 @@ public:
 private:
     void reset();
     VkDevice device_ = VK_NULL_HANDLE;
+    // Context::allocator(), kept because objects must be freed with the callbacks that made them.
+    const VkAllocationCallbacks* allocator_ = nullptr;
     VkBuffer buffer_ = VK_NULL_HANDLE;
     VkDeviceSize size_ = 0;
     DeviceMemory memory_;
@@ -94,6 +98,8 @@ private:
     void reset();
     const Context* context_ = nullptr;  // to drop the names with the objects (Context::forget_name)
     VkDevice device_ = VK_NULL_HANDLE;
+    // Context::allocator(), kept because objects must be freed with the callbacks that made them.
+    const VkAllocationCallbacks* allocator_ = nullptr;
     VkImage image_ = VK_NULL_HANDLE;
     VkImageView view_ = VK_NULL_HANDLE;
     ImageDesc desc_;
@@ -114,6 +120,8 @@ public:
 private:
     void reset();
     VkDevice device_ = VK_NULL_HANDLE;
+    // Context::allocator(), kept because objects must be freed with the callbacks that made them.
+    const VkAllocationCallbacks* allocator_ = nullptr;
     VkSampler sampler_ = VK_NULL_HANDLE;
 };
 

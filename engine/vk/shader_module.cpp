@@ -20,7 +20,7 @@ std::filesystem::path shader_directory() {
 }
 
 ShaderModule::ShaderModule(const Context& context, const std::string& name)
-    : device_(context.device()), file_(name + ".spv") {
+    : device_(context.device()), allocator_(context.allocator()), file_(name + ".spv") {
     const std::filesystem::path path = shader_directory() / (name + ".spv");
     std::ifstream file(path, std::ios::binary | std::ios::ate);
     if (!file) {
@@ -36,12 +36,12 @@ ShaderModule::ShaderModule(const Context& context, const std::string& name)
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     info.codeSize = static_cast<size_t>(size);
     info.pCode = words_.data();
-    VKW_CHECK(vkCreateShaderModule(device_, &info, nullptr, &module_), "shader '" + name + "'");
+    VKW_CHECK(vkCreateShaderModule(device_, &info, allocator_, &module_), "shader '" + name + "'");
     context.set_name(module_, VK_OBJECT_TYPE_SHADER_MODULE, name);
 }
 
 ShaderModule::~ShaderModule() {
-    if (module_) vkDestroyShaderModule(device_, module_, nullptr);
+    if (module_) vkDestroyShaderModule(device_, module_, allocator_);
 }
 
 }  // namespace vkw

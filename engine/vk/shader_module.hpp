@@ -31,6 +31,8 @@ public:
 
 private:
     VkDevice device_ = VK_NULL_HANDLE;
+    // Context::allocator(), kept because objects must be freed with the callbacks that made them.
+    const VkAllocationCallbacks* allocator_ = nullptr;
     VkShaderModule module_ = VK_NULL_HANDLE;
     std::vector<uint32_t> words_;
     std::string file_;
