@@ -15,7 +15,7 @@ fi
 if git rev-parse --is-inside-work-tree > /dev/null 2>&1; then
   mapfile -t files < <(git ls-files --cached --others --exclude-standard -- '*.cpp' '*.hpp' '*.h')
 else
-  mapfile -t files < <(find engine passes tools tests -name '*.cpp' -o -name '*.hpp' -o -name '*.h' | sort)
+  mapfile -t files < <(find engine passes library include examples tools tests -name '*.cpp' -o -name '*.hpp' -o -name '*.h' | sort)
 fi
 
 if [ "${1:-}" = "--fix" ]; then

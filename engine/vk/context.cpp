@@ -2,6 +2,7 @@
 
 #include "engine/core/errors.hpp"
 #include "engine/vk/check.hpp"
+#include "engine/vk/device_features.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -272,35 +273,10 @@ void Context::create_device(bool swapchain) {
     }
     queue_family_ = static_cast<uint32_t>(family - families.begin());
 
-    VkPhysicalDeviceVulkan13Features supported13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-    VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
-    supported12.pNext = &supported13;
-    VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-    supported.pNext = &supported12;
-    vkGetPhysicalDeviceFeatures2(physical_device_, &supported);
-    if (!supported13.dynamicRendering || !supported13.synchronization2) {
-        throw InternalError("device '" + device_name() + "' lacks dynamic rendering or synchronization2 (Vulkan 1.3)");
-    }
-
-    VkPhysicalDeviceVulkan13Features enable13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-    enable13.dynamicRendering = VK_TRUE;
-    enable13.synchronization2 = VK_TRUE;
-    // glslang's vulkan1.3 target declares compute local sizes with LocalSizeId, which
-    // needs maintenance4 (a feature every Vulkan 1.3 device has).
-    enable13.maintenance4 = supported13.maintenance4;
-    VkPhysicalDeviceVulkan12Features enable12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
-    enable12.pNext = &enable13;
-    enable12.shaderBufferInt64Atomics = supported12.shaderBufferInt64Atomics;
-    enable12.shaderSharedInt64Atomics = supported12.shaderSharedInt64Atomics;
-    enable12.hostQueryReset = supported12.hostQueryReset;
-    VkPhysicalDeviceFeatures2 enable{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-    enable.pNext = &enable12;
-    enable.features.depthClamp = supported.features.depthClamp;
-    enable.features.shaderFloat64 = supported.features.shaderFloat64;
-    enable.features.shaderInt64 = supported.features.shaderInt64;
-    enable.features.wideLines = supported.features.wideLines;
-    enable.features.fillModeNonSolid = supported.features.fillModeNonSolid;
-    read_enabled_features(enable);
+    DeviceFeatureChain enable;
+    const std::string lacking = request_device_features(physical_device_, enable);
+    if (!lacking.empty()) throw InternalError("device '" + device_name() + "' lacks " + lacking);
+    read_enabled_features(enable.features);
 
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -314,7 +290,7 @@ void Context::create_device(bool swapchain) {
     if (swapchain) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
 
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-    info.pNext = &enable;
+    info.pNext = &enable.features;
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queue_info;
     info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());

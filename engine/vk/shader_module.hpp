@@ -1,6 +1,7 @@
-// Loads SPIR-V compiled at build time. Shaders are found in $VKWATER_SHADER_DIR, else
-// in the build tree's shaders/ folder (baked in at configure time), else next to the
-// executable in ../share/vkwater/shaders.
+// Loads SPIR-V compiled at build time. Shaders are found in $VKWATER_SHADER_DIR, else where an
+// install put them beside the binary holding this code (<prefix>/share/vkwater/shaders beside
+// <prefix>/lib/libvkwater.so or <prefix>/bin/vkwater), else in the build tree's shaders/ folder
+// (baked in at configure time). An installed copy thus never reads the build tree it came from.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -15,6 +16,11 @@ namespace vkw {
 class Context;
 
 std::filesystem::path shader_directory();
+// The rule itself: `from_environment` when set, else the installed folder beside `module` (the
+// library or executable file) when it exists, else `build_tree` when it exists, else the
+// installed folder (for the error message).
+std::filesystem::path shader_directory_among(const char* from_environment, const std::filesystem::path& module,
+                                             const std::filesystem::path& build_tree);
 
 class ShaderModule {
 public:

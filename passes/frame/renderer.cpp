@@ -154,7 +154,7 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
                        const passes::ReceiverMeshes* receivers, const FrameOutput* output, LayerReadbacks layers,
                        passes::CausticReadRegionCache* read_regions, VkExtent2D output_size,
                        const CausticMapCarrying* carry) {
-    const bool caustic_layer = layers.caustic != VK_NULL_HANDLE && !output;
+    const bool caustic_layer = output ? output->caustic_layer : layers.caustic != VK_NULL_HANDLE;
     const bool inscatter_layer = layers.inscatter != VK_NULL_HANDLE && !output;
     // The waves' amplitude bound, once: for the FFT ocean it builds the CPU surface.
     const double amplitude = scene.water ? water_bounds(scene).hi.y - scene.water->level : 0.0;

@@ -65,6 +65,9 @@ class ReceiverMeshes;
 // image itself (the window hands the HDR colour on to its present graph).
 struct FrameOutput {
     std::function<void(fg::FrameGraph& graph, fg::ImageHandle hdr)> add_passes;
+    // The frame also renders the caustic layer (keys::kCausticLayer on the graph's blackboard) for
+    // `add_passes` to hand on (the embedding library's optional output).
+    bool caustic_layer = false;
 };
 
 // Declares every pass of a frame into `graph`. `constants` is read at record time.

@@ -26,6 +26,9 @@ std::vector<Layer> layer_table() {
         {"engine/window", {"engine/core", "engine/vk", "engine/image"}},
         // passes/frame: the frame's composition, on top of every technique; no tool.
         {"passes/frame", joined({kEngineForPasses, kPassGroups})},
+        // library/: the embedding library's implementation, over the frame's composition; its public
+        // headers (include/vkwater/, included with angle brackets) include only each other.
+        {"library", joined({kEngineForPasses, kPassGroups, {"passes/frame"}})},
         // tools/: on top. The reference renderer shares no real-time code: it sees the scene, the
         // CPU water, the image I/O and the core only, so it stays an independent ground truth.
         {"tools/reference", {"engine/core", "engine/scene", "engine/water", "engine/image"}},
@@ -41,8 +44,8 @@ std::vector<Layer> layer_table() {
         // tests/: may include anything under test, and each other's support files.
         {"tests", joined({kEngineForPasses,
                           kPassGroups,
-                          {"engine/window", "passes/frame", "tools/reference", "tools/metrics", "tools/povray",
-                           "tools/benchmarks", "tools/vkwater"}})},
+                          {"engine/window", "passes/frame", "library", "tools/reference", "tools/metrics",
+                           "tools/povray", "tools/benchmarks", "tools/vkwater"}})},
     };
     for (std::string_view group : kPassGroups) table.push_back({group, joined({kEngineForPasses, kPassGroups})});
     return table;

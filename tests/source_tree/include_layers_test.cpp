@@ -34,7 +34,7 @@ bool is_source(const fs::path& path) {
 std::vector<IncludeEdge> read_edges() {
     static const std::regex include_line(R"(^\s*#\s*include\s+\"([^\"]+)\")");
     std::vector<IncludeEdge> edges;
-    for (const char* top : {"engine", "passes", "tools", "tests"}) {
+    for (const char* top : {"engine", "passes", "library", "tools", "tests"}) {
         for (const fs::directory_entry& entry : fs::recursive_directory_iterator(kRoot / top)) {
             if (!entry.is_regular_file() || !is_source(entry.path())) continue;
             std::ifstream in(entry.path());

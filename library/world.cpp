@@ -1,0 +1,149 @@
+// vkwater::World (include/vkwater/world.hpp): a scene and the renderer that records its frames into
+// a host's command buffer, on a vkw::Context that borrows the host's device.
+#include <vkwater/world.hpp>
+
+#include "engine/core/errors.hpp"
+#include "engine/framegraph/executor.hpp"
+#include "engine/scene/scene_loader.hpp"
+#include "engine/vk/context.hpp"
+#include "library/host_targets.hpp"
+#include "library/status_from_exception.hpp"
+#include "passes/caustics/caustic_layer.hpp"
+#include "passes/common/frame_keys.hpp"
+#include "passes/common/whole_image_copy.hpp"
+#include "passes/frame/renderer.hpp"
+#include "passes/present/host_composite.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cstring>
+
+namespace vkwater {
+
+struct World::State {
+    std::unique_ptr<vkw::Context> context;
+    vkw::Scene scene;
+    std::unique_ptr<vkw::Renderer> renderer;
+
+    // Declares and compiles the frame (or reuses the compiled one) with the host's targets imported.
+    vkw::fg::FrameExecutor& prepare(const Frame& frame, vkw::fg::TimingMode timing);
+};
+
+namespace {
+
+glm::dvec3 to_glm(const std::array<double, 3>& v) { return {v[0], v[1], v[2]}; }
+std::array<double, 3> from_glm(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+
+vkw::Camera scene_camera_from(const Camera& camera, const vkw::Camera& defaults) {
+    vkw::Camera out = defaults;  // exposure and the rest of the scene's camera stay
+    out.position = to_glm(camera.position);
+    out.target = to_glm(camera.target);
+    out.fov_y_deg = camera.fov_y_deg;
+    out.near_plane = camera.near_plane;
+    out.far_plane = camera.far_plane;
+    return out;
+}
+
+std::array<float, 16> column_major(const glm::dmat4& m) {
+    const glm::mat4 single(m);
+    std::array<float, 16> out;
+    std::memcpy(out.data(), glm::value_ptr(single), sizeof(out));
+    return out;
+}
+
+}  // namespace
+
+World::World(std::unique_ptr<State> state) : state_(std::move(state)) {}
+
+World::~World() = default;
+
+Result<std::unique_ptr<World>> World::load(const HostDevice& device, const std::string& scene_file,
+                                           const std::vector<std::string>& overrides) {
+    return create(device, [&](State& state) { state.scene = vkw::load_scene(scene_file, overrides); });
+}
+
+Result<std::unique_ptr<World>> World::parse(const HostDevice& device, const std::string& scene_json,
+                                            const std::string& name, const std::vector<std::string>& overrides) {
+    return create(device, [&](State& state) { state.scene = vkw::parse_scene(scene_json, name, overrides); });
+}
+
+Result<std::unique_ptr<World>> World::create(const HostDevice& device, const std::function<void(State&)>& read_scene) {
+    auto state = std::make_unique<State>();
+    const Status status = detail::run_guarded([&] {
+        read_scene(*state);
+        if (!state->scene.water) {
+            throw vkw::UserError(state->scene.source.string() + ": water: missing (a world needs water to draw)");
+        }
+        vkw::BorrowedDevice borrowed{device.instance,  device.physical_device, device.device,
+                                     device.queue,     device.queue_family,    device.enabled_features,
+                                     device.allocator, device.debug_utils};
+        state->context = std::make_unique<vkw::Context>(borrowed);
+        state->renderer = std::make_unique<vkw::Renderer>(*state->context);
+    });
+    if (!status) return status;
+    return std::unique_ptr<World>(new World(std::move(state)));
+}
+
+Camera World::scene_camera() const {
+    const vkw::Camera& camera = state_->scene.camera;
+    return {from_glm(camera.position), from_glm(camera.target), camera.fov_y_deg, camera.near_plane, camera.far_plane};
+}
+
+double World::scene_time() const { return state_->scene.water->time; }
+
+CameraMatrices World::matrices(const Camera& camera, uint32_t width, uint32_t height) {
+    const vkw::Camera scene_camera = scene_camera_from(camera, vkw::Camera{});
+    // vkwater draws with a y-flipped viewport; the host's matrices carry that flip instead, so that a
+    // standard viewport (0, 0, width, height) puts its pixels where vkwater's are.
+    glm::dmat4 flip_y(1.0);
+    flip_y[1][1] = -1.0;
+    const double aspect = double(width) / double(height == 0 ? 1 : height);
+    return {column_major(vkw::view_matrix(scene_camera)),
+            column_major(flip_y * vkw::projection_matrix(scene_camera, aspect))};
+}
+
+vkw::fg::FrameExecutor& World::State::prepare(const Frame& frame, vkw::fg::TimingMode timing) {
+    const detail::HostTargets targets = detail::check_host_targets(*context, frame);
+    scene.camera = scene_camera_from(frame.camera, scene.camera);
+    scene.water->time = frame.time_seconds;
+
+    vkw::RenderOptions options;
+    options.width = frame.color.width;
+    options.height = frame.color.height;
+    options.timing = timing;
+    vkw::FrameOutput output;
+    output.caustic_layer = targets.caustic_layer.has_value();
+    output.add_passes = [&targets](vkw::fg::FrameGraph& graph, vkw::fg::ImageHandle hdr) {
+        const vkw::fg::ImageHandle color = graph.import_image("host colour", targets.color);
+        const vkw::fg::ImageHandle depth = graph.import_image("host depth", targets.depth);
+        const vkw::fg::ImageHandle scene_depth = graph.blackboard().get(vkw::keys::kSceneDepth);
+        graph.request_output(vkw::passes::add_host_composite_pass(graph, hdr, scene_depth, color, depth));
+        if (targets.caustic_layer) {
+            const vkw::fg::ImageHandle layer = graph.import_image("host caustic layer", *targets.caustic_layer);
+            vkw::passes::add_whole_image_copy_pass(graph, "caustic layer to the host",
+                                                   graph.blackboard().get(vkw::keys::kCausticLayer), layer);
+        }
+    };
+    return renderer->prepare_frame(scene, options, output);
+}
+
+Status World::record(VkCommandBuffer cmd, const Frame& frame) {
+    return detail::run_guarded([&] {
+        if (cmd == VK_NULL_HANDLE) throw vkw::UserError("World::record: cmd: a command buffer must be given");
+        state_->prepare(frame, vkw::fg::TimingMode::None).record(cmd);
+    });
+}
+
+Result<FrameTimings> World::time_frame(const Frame& frame) {
+    FrameTimings timings;
+    const Status status = detail::run_guarded([&] {
+        const vkw::fg::FrameReport report = state_->prepare(frame, vkw::fg::TimingMode::Auto).execute();
+        timings.method = report.method_name();
+        timings.total_ms = report.total_ms;
+        for (const vkw::fg::PassTime& pass : report.passes) timings.passes.push_back({pass.pass, pass.ms});
+    });
+    if (!status) return status;
+    return timings;
+}
+
+}  // namespace vkwater

@@ -1,0 +1,297 @@
+// The embedding library (include/vkwater/) on a device the test lends it, as a host engine would:
+// the frame recorded into the host's command buffer and targets equals the CLI renderer's image
+// wherever the host drew nothing, the host's nearer pixels survive, every Vulkan object goes
+// through the host's allocator, and a mistake in the host's targets is a Status naming it.
+#include <vkwater/world.hpp>
+#include "engine/scene/scene_loader.hpp"
+#include "engine/vk/device_features.hpp"
+#include "engine/vk/resources.hpp"
+#include "passes/frame/renderer.hpp"
+#include "tests/support/gpu_test.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
+#include <unordered_map>
+
+namespace {
+
+using vkw::Buffer;
+using vkw::Image;
+
+const std::string kPool = std::string(VKWATER_SOURCE_DIR) + "/scenes/pool.json";
+constexpr uint32_t kWidth = 160, kHeight = 120;
+// The host's own object, nearer than anything vkwater draws: a rectangle of depth 1 (the near
+// plane, reverse Z) and a colour no scene produces.
+constexpr uint32_t kBoxX0 = 40, kBoxX1 = 90, kBoxY0 = 30, kBoxY1 = 70;
+constexpr float kBoxColor[4] = {0.25f, -1.0f, 7.0f, 1.0f};
+
+bool in_box(uint32_t x, uint32_t y) { return x >= kBoxX0 && x < kBoxX1 && y >= kBoxY0 && y < kBoxY1; }
+
+// Counts the host allocator's live allocations: what vkwater makes through it must all be freed.
+struct CountingAllocator {
+    std::mutex mutex;
+    std::unordered_map<void*, size_t> live;
+    std::atomic<uint64_t> total{0};
+
+    static void* allocate(void* user, size_t size, size_t alignment, VkSystemAllocationScope) {
+        auto* self = static_cast<CountingAllocator*>(user);
+        void* p = std::aligned_alloc(alignment, (size + alignment - 1) / alignment * alignment);
+        std::lock_guard lock(self->mutex);
+        self->live[p] = size;
+        ++self->total;
+        return p;
+    }
+    static void* reallocate(void* user, void* original, size_t size, size_t alignment, VkSystemAllocationScope scope) {
+        auto* self = static_cast<CountingAllocator*>(user);
+        if (!original) return allocate(user, size, alignment, scope);
+        if (size == 0) {
+            release(user, original);
+            return nullptr;
+        }
+        size_t old_size = 0;
+        {
+            std::lock_guard lock(self->mutex);
+            old_size = self->live.at(original);
+        }
+        void* p = allocate(user, size, alignment, scope);
+        std::memcpy(p, original, std::min(old_size, size));
+        release(user, original);
+        return p;
+    }
+    static void release(void* user, void* memory) {
+        if (!memory) return;
+        auto* self = static_cast<CountingAllocator*>(user);
+        {
+            std::lock_guard lock(self->mutex);
+            self->live.erase(memory);
+        }
+        std::free(memory);
+    }
+    VkAllocationCallbacks callbacks() {
+        VkAllocationCallbacks c{};
+        c.pUserData = this;
+        c.pfnAllocation = allocate;
+        c.pfnReallocation = reallocate;
+        c.pfnFree = release;
+        return c;
+    }
+};
+
+class WorldTest : public vkw::test::GpuTest {
+protected:
+    void TearDown() override {
+        color_ = {};
+        depth_ = {};
+        color_in_ = {};
+        depth_in_ = {};
+        color_out_ = {};
+        depth_out_ = {};
+        GpuTest::TearDown();  // destroys the device: the host's objects go first
+    }
+
+    vkwater::HostDevice host_device(const VkAllocationCallbacks* allocator = nullptr) {
+        // The features the test's device was created with (vkw::Context enables this very request).
+        vkw::request_device_features(context().physical_device(), features_);
+        return {context().instance(),     context().physical_device(), context().device(), context().queue(),
+                context().queue_family(), &features_.features,         allocator,          true};
+    }
+
+    // The host's targets, filled as a host would have drawn them: the scene cleared (colour 0,
+    // depth 0 = far) and the box; each then in TRANSFER_DST, as the upload leaves it.
+    void make_targets() {
+        color_ = Image(
+            context(),
+            {kWidth, kHeight, VK_FORMAT_R32G32B32A32_SFLOAT,
+             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT},
+            "host colour");
+        depth_ = Image(context(),
+                       {kWidth, kHeight, VK_FORMAT_D32_SFLOAT,
+                        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                            VK_IMAGE_USAGE_TRANSFER_DST_BIT},
+                       "host depth");
+        const size_t pixels = size_t{kWidth} * kHeight;
+        const auto host_buffer = [&](VkDeviceSize bytes, VkBufferUsageFlags usage, const char* name) {
+            return Buffer(context(), {bytes, usage, true}, name);
+        };
+        color_in_ = host_buffer(pixels * 16, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "host colour upload");
+        depth_in_ = host_buffer(pixels * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "host depth upload");
+        color_out_ = host_buffer(pixels * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "host colour readback");
+        depth_out_ = host_buffer(pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "host depth readback");
+        auto* color = static_cast<float*>(color_in_.mapped());
+        auto* depth = static_cast<float*>(depth_in_.mapped());
+        for (uint32_t y = 0; y < kHeight; ++y) {
+            for (uint32_t x = 0; x < kWidth; ++x) {
+                const size_t i = size_t{y} * kWidth + x;
+                for (int c = 0; c < 4; ++c) color[4 * i + c] = in_box(x, y) ? kBoxColor[c] : (c == 3 ? 1.0f : 0.0f);
+                depth[i] = in_box(x, y) ? 1.0f : 0.0f;
+            }
+        }
+    }
+
+    static void barrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
+                        VkImageLayout to, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                        VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
+        VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+        b.srcStageMask = src_stage;
+        b.srcAccessMask = src_access;
+        b.dstStageMask = dst_stage;
+        b.dstAccessMask = dst_access;
+        b.oldLayout = from;
+        b.newLayout = to;
+        b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        b.image = image;
+        b.subresourceRange = {aspect, 0, 1, 0, 1};
+        VkDependencyInfo info{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+        info.imageMemoryBarrierCount = 1;
+        info.pImageMemoryBarriers = &b;
+        vkCmdPipelineBarrier2(cmd, &info);
+    }
+
+    static void copy(VkCommandBuffer cmd, VkBuffer buffer, VkImage image, VkImageAspectFlags aspect, bool to_image) {
+        VkBufferImageCopy region{};
+        region.imageSubresource = {aspect, 0, 0, 1};
+        region.imageExtent = {kWidth, kHeight, 1};
+        if (to_image) {
+            vkCmdCopyBufferToImage(cmd, buffer, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        } else {
+            vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer, 1, &region);
+        }
+    }
+
+    vkwater::Frame frame(const vkwater::World& world) const {
+        vkwater::Frame frame;
+        frame.camera = world.scene_camera();
+        frame.time_seconds = world.scene_time();
+        const vkwater::ImageState uploaded{VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+                                           VK_ACCESS_2_TRANSFER_WRITE_BIT};
+        const vkwater::ImageState read_back{VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+                                            VK_ACCESS_2_TRANSFER_READ_BIT};
+        frame.color = {color_.handle(), color_.view(), VK_FORMAT_R32G32B32A32_SFLOAT, kWidth, kHeight,
+                       uploaded,        read_back};
+        frame.depth = {depth_.handle(), depth_.view(), VK_FORMAT_D32_SFLOAT, kWidth, kHeight, uploaded, read_back};
+        return frame;
+    }
+
+    // Uploads the host's targets, records `world`'s frame after them and reads both back.
+    vkwater::Status run_frame(vkwater::World& world) {
+        vkwater::Status status;
+        const vkwater::Frame host_frame = frame(world);
+        context().submit_and_wait(
+            [&](VkCommandBuffer cmd) {
+                barrier(cmd, color_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                        VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+                barrier(cmd, depth_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                        VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+                copy(cmd, color_in_.handle(), color_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, true);
+                copy(cmd, depth_in_.handle(), depth_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, true);
+                status = world.record(cmd, host_frame);
+                if (!status) return;
+                copy(cmd, color_out_.handle(), color_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, false);
+                copy(cmd, depth_out_.handle(), depth_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, false);
+            },
+            "host frame");
+        return status;
+    }
+
+    const float* color_pixels() const { return static_cast<const float*>(color_out_.mapped()); }
+    const float* depth_pixels() const { return static_cast<const float*>(depth_out_.mapped()); }
+
+    vkw::DeviceFeatureChain features_;
+    Image color_, depth_;
+    Buffer color_in_, depth_in_, color_out_, depth_out_;
+};
+
+TEST_F(WorldTest, HostFrameEqualsTheRenderersImageOutsideTheHostsNearerPixels) {
+    auto world = vkwater::World::load(host_device(), kPool);
+    ASSERT_TRUE(world) << world.status().message;
+    make_targets();
+    const vkwater::Status status = run_frame(*world.value());
+    ASSERT_TRUE(status) << status.message;
+
+    vkw::Renderer renderer(context());
+    vkw::RenderOptions options;
+    options.width = kWidth;
+    options.height = kHeight;
+    options.timing = vkw::fg::TimingMode::None;
+    const vkw::ImageRGBA32F reference = renderer.render(vkw::load_scene(kPool), options).image;
+
+    // Outside the box the same passes ran on the same device from the same SPIR-V, and the composite
+    // copies each texel: the images are equal bit for bit (tolerance 0, alpha excepted: the host gets 1).
+    size_t outside = 0, box = 0, lit = 0;
+    for (uint32_t y = 0; y < kHeight; ++y) {
+        for (uint32_t x = 0; x < kWidth; ++x) {
+            const float* got = color_pixels() + 4 * (size_t{y} * kWidth + x);
+            const float* want = reference.pixel(int(x), int(y));
+            if (in_box(x, y)) {
+                ++box;
+                for (int c = 0; c < 4; ++c) ASSERT_EQ(got[c], kBoxColor[c]) << x << "," << y;
+                ASSERT_EQ(depth_pixels()[size_t{y} * kWidth + x], 1.0f);
+                continue;
+            }
+            ++outside;
+            for (int c = 0; c < 3; ++c) ASSERT_EQ(got[c], want[c]) << x << "," << y << " channel " << c;
+            ASSERT_EQ(got[3], 1.0f);
+            if (got[0] + got[1] + got[2] > 0.0f) ++lit;
+            // The host's depth now holds vkwater's: the water and floor are between the planes.
+            const float depth = depth_pixels()[size_t{y} * kWidth + x];
+            ASSERT_TRUE(depth >= 0.0f && depth < 1.0f) << depth;
+        }
+    }
+    EXPECT_EQ(box, size_t{kBoxX1 - kBoxX0} * (kBoxY1 - kBoxY0));
+    EXPECT_EQ(lit, outside);  // pool has no black pixel: a blank frame would fail here
+}
+
+TEST_F(WorldTest, EveryObjectGoesThroughTheHostsAllocatorAndIsFreed) {
+    CountingAllocator counter;
+    const VkAllocationCallbacks callbacks = counter.callbacks();
+    {
+        auto world = vkwater::World::load(host_device(&callbacks), kPool);
+        ASSERT_TRUE(world) << world.status().message;
+        make_targets();
+        ASSERT_TRUE(run_frame(*world.value()));
+        EXPECT_GT(counter.total.load(), 0u);
+    }
+    std::lock_guard lock(counter.mutex);
+    EXPECT_TRUE(counter.live.empty()) << counter.live.size() << " allocations left after the world";
+}
+
+TEST_F(WorldTest, MistakesAreStatusesThatNameThem) {
+    const auto missing = vkwater::World::load(host_device(), "no/such/scene.json");
+    ASSERT_FALSE(missing);
+    EXPECT_EQ(missing.status().kind, vkwater::ErrorKind::InvalidInput);
+    EXPECT_NE(missing.status().message.find("no/such/scene.json"), std::string::npos) << missing.status().message;
+
+    const auto bad_field = vkwater::World::load(host_device(), kPool, {"camera.fov_y_deg=500"});
+    ASSERT_FALSE(bad_field);
+    EXPECT_NE(bad_field.status().message.find("camera.fov_y_deg"), std::string::npos) << bad_field.status().message;
+
+    auto world = vkwater::World::load(host_device(), kPool);
+    ASSERT_TRUE(world) << world.status().message;
+    make_targets();
+    vkwater::Frame frame_8bit = frame(*world.value());
+    frame_8bit.color.format = VK_FORMAT_R8G8B8A8_UNORM;
+    vkwater::Frame frame_small_depth = frame(*world.value());
+    frame_small_depth.depth.width = kWidth / 2;
+    vkwater::Frame frame_no_cmd = frame(*world.value());
+    const std::pair<const vkwater::Frame*, std::string> cases[] = {{&frame_8bit, "color: format RGBA8_UNORM"},
+                                                                   {&frame_small_depth, "depth: size 80x120"}};
+    for (const auto& [bad, named] : cases) {
+        context().submit_and_wait(
+            [&](VkCommandBuffer cmd) {
+                const vkwater::Status status = world.value()->record(cmd, *bad);
+                EXPECT_EQ(status.kind, vkwater::ErrorKind::InvalidInput);
+                EXPECT_NE(status.message.find(named), std::string::npos) << status.message;
+            },
+            "refused frame");
+    }
+    const vkwater::Status no_cmd = world.value()->record(VK_NULL_HANDLE, frame_no_cmd);
+    EXPECT_EQ(no_cmd.kind, vkwater::ErrorKind::InvalidInput);
+}
+
+}  // namespace
