@@ -47,6 +47,10 @@ DeviceRequirements::~DeviceRequirements() = default;
 
 VkPhysicalDeviceFeatures2* DeviceRequirements::features() { return &chain_->features; }
 
+VkPhysicalDeviceVulkan12Features& DeviceRequirements::vulkan12_features() { return chain_->features12; }
+
+VkPhysicalDeviceVulkan13Features& DeviceRequirements::vulkan13_features() { return chain_->features13; }
+
 void** DeviceRequirements::host_features_tail() { return &chain_->features13.pNext; }
 
 }  // namespace vkwater

@@ -45,6 +45,15 @@ std::string FrameGraph::physical_signature() const {
     out.add(graph.output_width);
     out.add(graph.output_height);
     out.add(resources_.size());
+    // Framebuffers (VkRenderPass recording) hold an imported image's view; with dynamic rendering
+    // the executor reads the imported handles from the graph it runs, so another image of the same
+    // size, format and states (a host's next target) needs no new objects.
+    bool framebuffers = false;
+    for (uint32_t pass : graph.order) {
+        framebuffers = framebuffers || (passes_[pass].kind == PassKind::Graphics &&
+                                        recording_of(pass) == RecordingKind::RenderPassObject);
+    }
+    out.add(framebuffers);
     for (uint32_t r = 0; r < resources_.size(); ++r) {
         const ResourceDecl& decl = resources_[r];
         const bool live = graph.resource_live[r];
@@ -54,12 +63,14 @@ std::string FrameGraph::physical_signature() const {
         out.add(live);
         if (!live) continue;
         if (decl.imported) {
-            // The same objects in the same states: the executor keeps no copy of them, but the
-            // recorded views, framebuffers and barriers name them.
+            // The same objects in the same states: the executor keeps no copy of them, but
+            // framebuffers name their views.
             if (decl.is_image) {
                 const ImportedImage& image = decl.imported_image;
-                out.add(image.image);
-                out.add(image.view);
+                if (framebuffers) {
+                    out.add(image.image);
+                    out.add(image.view);
+                }
                 out.add(image.width);
                 out.add(image.height);
                 out.add(image.format);

@@ -32,8 +32,8 @@ struct HostDevice {
 
 // What to enable on a device for vkwater: the extensions and a feature chain with every feature it
 // needs set and every optional one it can use set where `physical_device` supports it. The chain's
-// storage lives in this object; pass `features()` as VkDeviceCreateInfo::pNext (it may be extended
-// with the host's own structures through the last link's pNext, `host_features_tail()`).
+// storage lives in this object, which must outlive the device's use by vkwater (HostDevice points
+// into it); pass `features()` as VkDeviceCreateInfo::pNext.
 class DeviceRequirements {
 public:
     explicit DeviceRequirements(VkPhysicalDevice physical_device);
@@ -45,7 +45,11 @@ public:
     const Status& supported() const { return status_; }
     const std::vector<const char*>& extensions() const { return extensions_; }
     VkPhysicalDeviceFeatures2* features();
-    void** host_features_tail();  // the last link's pNext, where a host chains its own features
+    // The chain's Vulkan 1.2 and 1.3 structures, for a host that turns on more of their features
+    // (a structure type may appear only once in a chain, so the host cannot add its own of these).
+    VkPhysicalDeviceVulkan12Features& vulkan12_features();
+    VkPhysicalDeviceVulkan13Features& vulkan13_features();
+    void** host_features_tail();  // the last link's pNext, where a host chains its other structures
 
 private:
     struct Chain;

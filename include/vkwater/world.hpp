@@ -42,6 +42,8 @@ struct CameraMatrices {
 
 // A host image and the states it is in before the frame and must be left in after it. vkwater
 // derives its barriers from these: it waits for `before` and makes its writes available to `after`.
+// `before` must name the stages and accesses of the host's last use: understated (stages NONE after
+// a draw), the barrier that orders vkwater after the host is missing, and no layer reports it.
 struct ImageState {
     VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
     VkPipelineStageFlags2 stages = VK_PIPELINE_STAGE_2_NONE;

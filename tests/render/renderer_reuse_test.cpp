@@ -3,6 +3,8 @@
 // moved slider (sun, wave amplitude) reach the image and make no pipeline and allocate no memory;
 // a new output size makes new objects, and no pipeline is ever created twice.
 #include "engine/scene/scene_loader.hpp"
+#include "engine/vk/resources.hpp"
+#include "passes/common/whole_image_copy.hpp"
 #include "passes/frame/renderer.hpp"
 #include "tests/render/overhead_scene.hpp"
 #include "tests/support/gpu_test.hpp"
@@ -111,6 +113,37 @@ TEST_F(RendererReuse, ASceneLoadedWhereAFreedOneLivedGetsItsOwnReceivers) {
     // The box top's red is proportional to its albedo's: 0.1 / 0.8 of the first scene's, within the fp32
     // shading's 1e-5 (the receiver tests'); the stale meshes would show the first scene's red again.
     EXPECT_NEAR(blue_scene_red, red / 8.0f, 1e-5f * red);
+}
+
+// A caller that hands each frame to another image of the same size and format (a host's next
+// target, the embedding library's) keeps the frame's device objects under dynamic rendering, where
+// the executor reads imported images from the graph it runs; a VkRenderPass frame's framebuffers
+// name the image's view, so there a new image is a new signature.
+TEST_F(RendererReuse, AnotherImportedTargetOfTheSameKindKeepsTheObjectsUnderDynamicRendering) {
+    const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/calm.json");
+    const uint32_t width = 32, height = 24;
+    const ImageDesc desc{width, height, VK_FORMAT_R32G32B32A32_SFLOAT,
+                         VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT};  // a view needs a view usage
+    const Image targets[2] = {Image(context(), desc, "target a"), Image(context(), desc, "target b")};
+    const auto output_into = [&](const Image& target) {
+        return FrameOutput{[&target, &desc](fg::FrameGraph& graph, fg::ImageHandle hdr) {
+            fg::ImportedImage imported{target.handle(), target.view(), width, height, desc.format};
+            imported.final_state = fg::AccessState{VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
+            passes::add_whole_image_copy_pass(graph, "to the target", hdr, graph.import_image("target", imported));
+        }};
+    };
+    for (const fg::RecordingKind recording :
+         {fg::RecordingKind::DynamicRendering, fg::RecordingKind::RenderPassObject}) {
+        Renderer renderer(context());
+        RenderOptions options{width, height, false, fg::TimingMode::None};
+        options.recording = recording;
+        for (int frame = 0; frame < 4; ++frame) {
+            renderer.prepare_frame(scene, options, output_into(targets[frame % 2])).execute();
+        }
+        const bool dynamic = recording == fg::RecordingKind::DynamicRendering;
+        EXPECT_EQ(renderer.realize_count(), dynamic ? 1u : 4u) << (dynamic ? "dynamic rendering" : "render passes");
+    }
 }
 
 }  // namespace
