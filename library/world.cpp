@@ -17,13 +17,17 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cstring>
+#include <string>
 
 namespace vkwater {
 
 struct World::State {
     std::unique_ptr<vkw::Context> context;
     vkw::Scene scene;
-    std::unique_ptr<vkw::Renderer> renderer;
+    // One renderer per frame in flight, each with its own frame images, sharing the pipelines; frame
+    // i is recorded by renderers[i % size].
+    std::vector<std::unique_ptr<vkw::Renderer>> renderers;
+    size_t next_frame = 0;
 
     // Declares and compiles the frame (or reuses the compiled one) with the host's targets imported.
     vkw::fg::FrameExecutor& prepare(const Frame& frame, vkw::fg::TimingMode timing);
@@ -58,18 +62,24 @@ World::World(std::unique_ptr<State> state) : state_(std::move(state)) {}
 World::~World() = default;
 
 Result<std::unique_ptr<World>> World::load(const HostDevice& device, const std::string& scene_file,
-                                           const std::vector<std::string>& overrides) {
-    return create(device, [&](State& state) { state.scene = vkw::load_scene(scene_file, overrides); });
+                                           const WorldOptions& options) {
+    return create(device, options, [&](State& state) { state.scene = vkw::load_scene(scene_file, options.overrides); });
 }
 
 Result<std::unique_ptr<World>> World::parse(const HostDevice& device, const std::string& scene_json,
-                                            const std::string& name, const std::vector<std::string>& overrides) {
-    return create(device, [&](State& state) { state.scene = vkw::parse_scene(scene_json, name, overrides); });
+                                            const std::string& name, const WorldOptions& options) {
+    return create(device, options,
+                  [&](State& state) { state.scene = vkw::parse_scene(scene_json, name, options.overrides); });
 }
 
-Result<std::unique_ptr<World>> World::create(const HostDevice& device, const std::function<void(State&)>& read_scene) {
+Result<std::unique_ptr<World>> World::create(const HostDevice& device, const WorldOptions& options,
+                                             const std::function<void(State&)>& read_scene) {
     auto state = std::make_unique<State>();
     const Status status = detail::run_guarded([&] {
+        if (options.frames_in_flight < 1 || options.frames_in_flight > 8) {
+            throw vkw::UserError("vkwater::WorldOptions: frames_in_flight " + std::to_string(options.frames_in_flight) +
+                                 " (accepted: 1 to 8)");
+        }
         read_scene(*state);
         if (!state->scene.water) {
             throw vkw::UserError(state->scene.source.string() + ": water: missing (a world needs water to draw)");
@@ -78,7 +88,10 @@ Result<std::unique_ptr<World>> World::create(const HostDevice& device, const std
                                      device.queue,     device.queue_family,    device.enabled_features,
                                      device.allocator, device.debug_utils};
         state->context = std::make_unique<vkw::Context>(borrowed);
-        state->renderer = std::make_unique<vkw::Renderer>(*state->context);
+        const auto pipelines = std::make_shared<vkw::fg::PipelineStore>();
+        for (uint32_t i = 0; i < options.frames_in_flight; ++i) {
+            state->renderers.push_back(std::make_unique<vkw::Renderer>(*state->context, pipelines));
+        }
     });
     if (!status) return status;
     return std::unique_ptr<World>(new World(std::move(state)));
@@ -124,7 +137,10 @@ vkw::fg::FrameExecutor& World::State::prepare(const Frame& frame, vkw::fg::Timin
                                                    graph.blackboard().get(vkw::keys::kCausticLayer), layer);
         }
     };
-    return renderer->prepare_frame(scene, options, output);
+    vkw::Renderer& renderer = *renderers[next_frame % renderers.size()];
+    vkw::fg::FrameExecutor& executor = renderer.prepare_frame(scene, options, output);
+    ++next_frame;  // prepared: the next frame takes the next set
+    return executor;
 }
 
 Status World::record(VkCommandBuffer cmd, const Frame& frame) {

@@ -122,7 +122,8 @@ Context::Context(const BorrowedDevice& host)
                                 "' does not do both graphics and compute");
         }
         read_enabled_features(*host.enabled_features);
-        load_device_functions(host.debug_utils);
+        load_device_functions();
+        if (host.debug_utils) load_debug_utils();
         create_command_pool();
     } catch (...) {
         release();
@@ -217,14 +218,16 @@ void Context::create_instance(const ContextOptions& options) {
             vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
         VKW_CHECK(create(instance_, &messenger_info, nullptr, &messenger_), "validation messenger");
     }
-    if (debug_utils) {
-        set_object_name_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
-            vkGetInstanceProcAddr(instance_, "vkSetDebugUtilsObjectNameEXT"));
-        begin_label_ = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
-            vkGetInstanceProcAddr(instance_, "vkCmdBeginDebugUtilsLabelEXT"));
-        end_label_ = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
-            vkGetInstanceProcAddr(instance_, "vkCmdEndDebugUtilsLabelEXT"));
-    }
+    if (debug_utils) load_debug_utils();
+}
+
+void Context::load_debug_utils() {
+    set_object_name_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+        vkGetInstanceProcAddr(instance_, "vkSetDebugUtilsObjectNameEXT"));
+    begin_label_ = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
+        vkGetInstanceProcAddr(instance_, "vkCmdBeginDebugUtilsLabelEXT"));
+    end_label_ = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
+        vkGetInstanceProcAddr(instance_, "vkCmdEndDebugUtilsLabelEXT"));
 }
 
 void Context::pick_physical_device(const std::string& wanted_name) {
@@ -297,7 +300,7 @@ void Context::create_device(bool swapchain) {
     info.ppEnabledExtensionNames = extensions.data();
     VKW_CHECK(vkCreateDevice(physical_device_, &info, nullptr, &device_), "device '" + device_name() + "'");
     vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
-    load_device_functions(set_object_name_ != nullptr);
+    load_device_functions();
     set_name(device_, VK_OBJECT_TYPE_DEVICE, "vkwater device");
     set_name(queue_, VK_OBJECT_TYPE_QUEUE, "vkwater queue");
     create_command_pool();
@@ -335,24 +338,12 @@ void Context::read_enabled_features(const VkPhysicalDeviceFeatures2& enabled) {
     features_.fill_mode_non_solid = enabled.features.fillModeNonSolid;
 }
 
-void Context::load_device_functions(bool debug_utils) {
+void Context::load_device_functions() {
     push_descriptor_set_ =
         reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
     if (!push_descriptor_set_) {
         throw InternalError("device '" + device_name() + "' was created without " +
                             VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME + ", which vkwater binds its resources with");
-    }
-    if (!debug_utils) {
-        set_object_name_ = nullptr;
-        begin_label_ = nullptr;
-        end_label_ = nullptr;
-    } else if (!set_object_name_) {
-        set_object_name_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
-            vkGetInstanceProcAddr(instance_, "vkSetDebugUtilsObjectNameEXT"));
-        begin_label_ = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
-            vkGetInstanceProcAddr(instance_, "vkCmdBeginDebugUtilsLabelEXT"));
-        end_label_ = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
-            vkGetInstanceProcAddr(instance_, "vkCmdEndDebugUtilsLabelEXT"));
     }
 }
 

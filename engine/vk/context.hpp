@@ -121,7 +121,8 @@ private:
     void pick_physical_device(const std::string& wanted_name);
     void create_device(bool swapchain);
     void read_enabled_features(const VkPhysicalDeviceFeatures2& enabled);
-    void load_device_functions(bool debug_utils);
+    void load_debug_utils();       // the names and labels of VK_EXT_debug_utils
+    void load_device_functions();  // VK_KHR_push_descriptor's command
     void create_command_pool();
     void release();
 

@@ -3,7 +3,7 @@
 // leaves its images in and those it hands to vkwater are visibly the same values.
 #pragma once
 
-#include "vkwater/world.hpp"
+#include <vkwater/world.hpp>
 
 #include <vulkan/vulkan.h>
 

@@ -2,7 +2,7 @@
 // colour and depth targets (reverse Z), before vkwater records the water around and in front of it.
 #pragma once
 
-#include "vkwater/world.hpp"
+#include <vkwater/world.hpp>
 
 #include <vulkan/vulkan.h>
 

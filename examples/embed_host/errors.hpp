@@ -3,7 +3,7 @@
 // itself never does (vkwater/status.hpp).
 #pragma once
 
-#include "vkwater/status.hpp"
+#include <vkwater/status.hpp>
 
 #include <vulkan/vulkan.h>
 

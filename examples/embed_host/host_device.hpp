@@ -3,7 +3,7 @@
 // destroys nothing of them.
 #pragma once
 
-#include "vkwater/device.hpp"
+#include <vkwater/device.hpp>
 
 #include <vulkan/vulkan.h>
 

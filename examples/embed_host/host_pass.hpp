@@ -5,7 +5,7 @@
 #include "box.hpp"
 #include "gpu_memory.hpp"
 
-#include "vkwater/world.hpp"
+#include <vkwater/world.hpp>
 
 #include <vulkan/vulkan.h>
 

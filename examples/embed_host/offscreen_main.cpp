@@ -6,6 +6,7 @@
 // and OUT_PREFIX.box_mask.pfm (1 where the host drew the box, read from its depth before vkwater's).
 // Exit codes: 0; 1 for what the user can fix (arguments, scene file), or for any validation
 // message; 2 for the device or an internal failure.
+#include "arguments.hpp"
 #include "barriers.hpp"
 #include "box.hpp"
 #include "errors.hpp"
@@ -15,7 +16,7 @@
 #include "host_pass.hpp"
 #include "pfm.hpp"
 
-#include "vkwater/world.hpp"
+#include <vkwater/world.hpp>
 
 #include <algorithm>
 #include <cerrno>
@@ -47,16 +48,6 @@ struct Args {
     bool validation = false;
 };
 
-uint32_t parse_count(const std::string& option, const std::string& text, uint32_t max) {
-    char* end = nullptr;
-    const unsigned long value = std::strtoul(text.c_str(), &end, 10);
-    if (text.empty() || text[0] == '-' || *end != '\0' || value < 1 || value > max) {
-        throw HostError(option + " " + text + " (accepted: an integer in [1, " + std::to_string(max) + "])\n" + kUsage,
-                        kExitInvalidInput);
-    }
-    return static_cast<uint32_t>(value);
-}
-
 Args parse_args(int argc, char** argv) {
     Args args;
     std::vector<std::string> positional;
@@ -67,11 +58,11 @@ Args parse_args(int argc, char** argv) {
             return argv[++i];
         };
         if (arg == "--width") {
-            args.width = parse_count(arg, value(), 16384);
+            args.width = parse_count(arg, value(), 16384, kUsage);
         } else if (arg == "--height") {
-            args.height = parse_count(arg, value(), 16384);
+            args.height = parse_count(arg, value(), 16384, kUsage);
         } else if (arg == "--frames") {
-            args.frames = parse_count(arg, value(), 100000);
+            args.frames = parse_count(arg, value(), 100000, kUsage);
         } else if (arg == "--validation") {
             args.validation = true;
         } else if (arg.starts_with("-")) {

@@ -4,6 +4,7 @@
 // depth targets and draws its box, has vkwater record the water into them, and blits the colour into
 // the swapchain image it presents. It quits when the window is closed, or after N frames when given.
 // Exit codes as embed_host_offscreen's.
+#include "arguments.hpp"
 #include "barriers.hpp"
 #include "box.hpp"
 #include "errors.hpp"
@@ -12,7 +13,7 @@
 #include "host_device.hpp"
 #include "host_pass.hpp"
 
-#include "vkwater/world.hpp"
+#include <vkwater/world.hpp>
 
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
@@ -46,13 +47,7 @@ Args parse_args(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--frames" && i + 1 < argc) {
-            char* end = nullptr;
-            const long frames = std::strtol(argv[++i], &end, 10);
-            if (*end != '\0' || frames < 1 || frames > 1000000) {
-                throw HostError(std::string("--frames ") + argv[i] + " (accepted: an integer in [1, 1000000])",
-                                kExitInvalidInput);
-            }
-            args.frames = static_cast<uint32_t>(frames);
+            args.frames = parse_count(arg, argv[++i], 1000000, kUsage);
         } else if (arg == "--validation") {
             args.validation = true;
         } else if (arg.starts_with("-")) {

@@ -5,9 +5,9 @@
 //   ...each frame, in a command buffer the host has begun and will submit:
 //   vkwater::Status status = world.value()->record(cmd, frame);
 //
-// Threading: a World is used by one thread at a time, and its frames run one at a time: the GPU
-// must have finished the submission holding one record() before the next record()'s submission
-// starts (the frame's own images are reused from frame to frame). docs/embedding.md has the rest.
+// Threading: a World is used by one thread at a time. Its frames may overlap on the GPU up to
+// WorldOptions::frames_in_flight (1 by default: each frame's submission waits for the one before).
+// docs/embedding.md has the rest.
 #pragma once
 
 #include <vkwater/device.hpp>
@@ -85,15 +85,24 @@ struct FrameTimings {
     std::vector<PassTiming> passes;
 };
 
+struct WorldOptions {
+    // Changes to the scene, "field.path=value" as the CLI's --set (e.g. "camera.fov_y_deg=75").
+    std::vector<std::string> overrides;
+    // How many of the host's frames may be on the GPU at once, 1 to 8. record() cycles through this
+    // many sets of the frame's own images and buffers, so frame i + frames_in_flight reuses frame i's:
+    // the GPU must have finished frame i before that frame's submission starts (the usual contract of
+    // frames in flight). Each set costs the frame's transient memory again; pipelines are shared.
+    uint32_t frames_in_flight = 1;
+};
+
 class World {
 public:
-    // A scene file (JSON, scenes/README.md), with optional overrides "field.path=value" as the CLI's --set.
+    // A scene file (JSON, scenes/README.md).
     static Result<std::unique_ptr<World>> load(const HostDevice& device, const std::string& scene_file,
-                                               const std::vector<std::string>& overrides = {});
+                                               const WorldOptions& options = {});
     // The same from JSON text in memory; `name` stands in for the file in messages and glTF paths.
     static Result<std::unique_ptr<World>> parse(const HostDevice& device, const std::string& scene_json,
-                                                const std::string& name,
-                                                const std::vector<std::string>& overrides = {});
+                                                const std::string& name, const WorldOptions& options = {});
     ~World();
     World(const World&) = delete;
     World& operator=(const World&) = delete;
@@ -113,7 +122,7 @@ public:
 private:
     struct State;
     explicit World(std::unique_ptr<State> state);
-    static Result<std::unique_ptr<World>> create(const HostDevice& device,
+    static Result<std::unique_ptr<World>> create(const HostDevice& device, const WorldOptions& options,
                                                  const std::function<void(State&)>& read_scene);
     std::unique_ptr<State> state_;
 };

@@ -398,7 +398,10 @@ void Renderer::forget_compiled_frames() {
     for (std::unique_ptr<CompiledFrame>& frame : compiled_) frame.reset();
 }
 
-Renderer::Renderer(Context& context) : context_(context), constants_(std::make_unique<FrameConstants>()) {}
+Renderer::Renderer(Context& context, std::shared_ptr<fg::PipelineStore> pipelines)
+    : context_(context),
+      pipelines_(pipelines ? std::move(pipelines) : std::make_shared<fg::PipelineStore>()),
+      constants_(std::make_unique<FrameConstants>()) {}
 
 Renderer::~Renderer() = default;
 
@@ -426,7 +429,7 @@ fg::FrameExecutor& Renderer::prepare_frame(const Scene& scene, const RenderOptio
 void Renderer::reload_shaders() {
     vkDeviceWaitIdle(context_.device());
     forget_compiled_frames();
-    pipelines_ = fg::PipelineStore{};
+    *pipelines_ = fg::PipelineStore{};  // shared: the other renderers must reload too (the window has one)
 }
 
 Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptions& options,
@@ -532,7 +535,7 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
     auto frame = std::make_unique<CompiledFrame>();
     frame->graph = std::move(graph);
     frame->options = executor_options;
-    frame->executor = std::make_unique<fg::FrameExecutor>(context_, *frame->graph, pipelines_, executor_options);
+    frame->executor = std::make_unique<fg::FrameExecutor>(context_, *frame->graph, *pipelines_, executor_options);
     ++realize_count_;
     compiled = std::move(frame);
     return *compiled;

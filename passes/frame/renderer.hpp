@@ -108,7 +108,10 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
 
 class Renderer {
 public:
-    explicit Renderer(Context& context);
+    // `pipelines`: a store shared with other renderers on the same device (the embedding library's
+    // frames in flight, one renderer each); pipelines never change once made, so sharing is safe.
+    // None: the renderer's own.
+    explicit Renderer(Context& context, std::shared_ptr<fg::PipelineStore> pipelines = nullptr);
     ~Renderer();
     RenderResult render(const Scene& scene, const RenderOptions& options);
 
@@ -122,7 +125,7 @@ public:
     void reload_shaders();
 
     // Pipelines created so far; culled passes never add one.
-    const fg::PipelineStore& pipelines() const { return pipelines_; }
+    const fg::PipelineStore& pipelines() const { return *pipelines_; }
     // How many times the frame's device objects were made: once per physical signature of the
     // compiled graph (output size, the passes that live, their resources), not per frame.
     size_t realize_count() const { return realize_count_; }
@@ -141,7 +144,7 @@ private:
     const passes::ReceiverMeshes* receiver_meshes(const Scene& scene);
     fg::ImportedImage kept_caustic_map(const fg::ImageInfo& info, CausticMapCarry mode);
     Context& context_;
-    fg::PipelineStore pipelines_;
+    std::shared_ptr<fg::PipelineStore> pipelines_;
     std::unique_ptr<FrameConstants> constants_;  // stable address, read when the frame records
     std::unique_ptr<Readback> readback_;         // declared before compiled_: destroyed after them
     // Per RenderOptions::caustic_map_carry: the frame's declaration and the objects that run it.
