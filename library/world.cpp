@@ -154,7 +154,9 @@ Result<FrameTimings> World::time_frame(const Frame& frame) {
     FrameTimings timings;
     const Status status = detail::run_guarded([&] {
         const vkw::fg::FrameReport report = state_->prepare(frame, vkw::fg::TimingMode::Auto).execute();
-        timings.method = report.method_name();
+        timings.method = report.method == vkw::fg::TimingMode::Timestamps ? "timestamps"
+                         : report.method == vkw::fg::TimingMode::Fences   ? "fences"
+                                                                          : "whole frame";
         timings.total_ms = report.total_ms;
         for (const vkw::fg::PassTime& pass : report.passes) timings.passes.push_back({pass.pass, pass.ms});
     });

@@ -95,6 +95,8 @@ protected:
         depth_in_ = {};
         color_out_ = {};
         depth_out_ = {};
+        caustic_ = {};
+        caustic_out_ = {};
     }
 
     vkwater::HostDevice host_device(const VkAllocationCallbacks* allocator = nullptr) {
@@ -177,6 +179,11 @@ protected:
         frame.color = {color_.handle(), color_.view(), VK_FORMAT_R32G32B32A32_SFLOAT, kWidth, kHeight,
                        uploaded,        read_back};
         frame.depth = {depth_.handle(), depth_.view(), VK_FORMAT_D32_SFLOAT, kWidth, kHeight, uploaded, read_back};
+        if (caustic_.handle()) {
+            // Written whole by its copy: it enters holding nothing.
+            frame.caustic_layer = {
+                caustic_.handle(), caustic_.view(), VK_FORMAT_R32G32B32A32_SFLOAT, kWidth, kHeight, {}, read_back};
+        }
         return frame;
     }
 
@@ -214,6 +221,8 @@ protected:
                 to_readback(depth_, VK_IMAGE_ASPECT_DEPTH_BIT);
                 copy(cmd, color_out_.handle(), color_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, false);
                 copy(cmd, depth_out_.handle(), depth_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, false);
+                if (caustic_.handle())
+                    copy(cmd, caustic_out_.handle(), caustic_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, false);
             },
             "host frame");
         return status;
@@ -227,8 +236,8 @@ protected:
     const float* depth_pixels() const { return static_cast<const float*>(depth_out_.mapped()); }
 
     vkw::DeviceFeatureChain features_;
-    Image color_, depth_;
-    Buffer color_in_, depth_in_, color_out_, depth_out_;
+    Image color_, depth_, caustic_;
+    Buffer color_in_, depth_in_, color_out_, depth_out_, caustic_out_;
 };
 
 TEST_F(WorldTest, HostFrameEqualsTheRenderersImageOutsideTheHostsNearerPixels) {
@@ -273,6 +282,52 @@ void WorldTest::expect_renderers_image_outside_the_box(const std::string& scene)
     }
     EXPECT_EQ(box, size_t{kBoxX1 - kBoxX0} * (kBoxY1 - kBoxY0));
     EXPECT_EQ(lit, outside);  // pool has no black pixel: a blank frame would fail here
+}
+
+// The optional outputs: the caustic layer copied into a host image equals the renderer's layer bit
+// for bit, and a timed frame reports each pass, the composite into the host's targets among them.
+TEST_F(WorldTest, TheCausticLayerAndThePassTimesReachTheHost) {
+    auto world = vkwater::World::load(host_device(), kPool);
+    ASSERT_TRUE(world) << world.status().message;
+    make_targets();
+    // A view needs a usage a view serves (sampling), besides the copies in and out.
+    caustic_ = Image(context(),
+                     {kWidth, kHeight, VK_FORMAT_R32G32B32A32_SFLOAT,
+                      VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT},
+                     "host caustic layer");
+    caustic_out_ = Buffer(context(), {size_t{kWidth} * kHeight * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true},
+                          "host caustic layer readback");
+    const vkwater::Status status = run_frame(*world.value());
+    ASSERT_TRUE(status) << status.message;
+
+    vkw::Renderer renderer(context());
+    vkw::RenderOptions options;
+    options.width = kWidth;
+    options.height = kHeight;
+    options.timing = vkw::fg::TimingMode::None;
+    options.caustic_layer = true;
+    const vkw::ImageRGBA32F reference = renderer.render(vkw::load_scene(kPool), options).image;
+    ASSERT_EQ(reference.layers.size(), 1u);
+    const std::vector<float>& want = reference.layers[0].rgb;
+    const auto* got = static_cast<const float*>(caustic_out_.mapped());
+    float low = got[0], high = got[0];
+    for (size_t i = 0; i < size_t{kWidth} * kHeight; ++i) {
+        for (int c = 0; c < 3; ++c) ASSERT_EQ(got[4 * i + c], want[3 * i + c]) << "pixel " << i << " channel " << c;
+        low = std::min(low, got[4 * i]);
+        high = std::max(high, got[4 * i]);
+    }
+    EXPECT_LT(low, high) << "pool's caustics vary over the floor: a constant layer is no layer";
+
+    vkwater::Frame timed = frame(*world.value());  // the targets are where the readback left them
+    timed.color.before = timed.color.after;
+    timed.depth.before = timed.depth.after;
+    const auto timings = world.value()->time_frame(timed);
+    ASSERT_TRUE(timings) << timings.status().message;
+    EXPECT_EQ(timings.value().method, "fences");  // lavapipe: a CPU device
+    EXPECT_GT(timings.value().total_ms, 0.0);
+    const auto& passes = timings.value().passes;
+    EXPECT_TRUE(std::any_of(passes.begin(), passes.end(),
+                            [](const vkwater::PassTiming& p) { return p.pass == "host composite" && p.ms > 0.0; }));
 }
 
 // A host with two frames in flight: two frames recorded back to back into one command buffer, so
