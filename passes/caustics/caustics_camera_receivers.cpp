@@ -54,7 +54,7 @@ fg::ImageHandle add_caustic_receivers_pass(fg::FrameGraph& graph, const Receiver
             desc.depth_write = true;
             const Pipeline& floor = context.pipeline("caustic receivers floor", desc);
             context.bind(floor);
-            context.push_constants(floor, ReceiverPush{glm::vec4(0.0f), view});
+            context.push_constants(floor, receiver_push(glm::vec4(0.0f), view));
             vkCmdDraw(context.cmd(), 6, 1, 0, 0);
             if (!d.vertices) return;
             GraphicsPipelineDesc mesh_desc = desc;

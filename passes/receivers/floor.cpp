@@ -33,7 +33,7 @@ void add_floor_pass(fg::FrameGraph& graph, bool caustic_layer) {
             desc.depth_write = true;
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
             context.bind(pipeline);
-            context.push_constants(pipeline, ReceiverPush{});  // the camera's own view
+            context.push_constants(pipeline, receiver_push(glm::vec4(0.0f), glm::vec4(0.0f)));  // the camera's own view
             vkCmdDraw(context.cmd(), 6, 1, 0, 0);
         });
     graph.blackboard().put(keys::kHdrColor, data.hdr);

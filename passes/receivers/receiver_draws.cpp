@@ -41,8 +41,8 @@ void draw_receiver_meshes(const fg::PassContext& context, const Pipeline& pipeli
         // Push descriptors update incrementally: the pass's other bindings stay as they were
         // pushed. A pipeline that samples no texture skips it.
         if (textured) context.push_descriptors(pipeline, {meshes.textures().binding(draw.texture)});
-        context.push_constants(pipeline, ReceiverPush{glm::vec4(draw.albedo, 0.0f), view,
-                                                      glm::vec4(draw.alpha, draw.alpha_cutoff, 0.0f, 0.0f)});
+        context.push_constants(pipeline, receiver_push(glm::vec4(draw.albedo, 0.0f), view,
+                                                       glm::vec4(draw.alpha, draw.alpha_cutoff, 0.0f, 0.0f)));
         vkCmdDrawIndexed(context.cmd(), draw.index_count, 1, draw.first_index, draw.vertex_offset, 0);
     }
 }

@@ -1,5 +1,5 @@
 // What every pass that draws the receiver meshes shares: the push constants of the
-// receiver shaders (mirroring shaders/receivers/receiver_push.glsl), the meshes' pipeline
+// receiver shaders (shaders/receivers/receiver_push.glsl), the meshes' pipeline
 // description and the draw loop. Used by the camera's receivers pass and the scene views.
 #pragma once
 
@@ -9,16 +9,21 @@
 #include "passes/receivers/receiver_meshes.hpp"
 
 #include <glm/glm.hpp>
+#include <shader_structs/receivers/receiver.frag.hpp>
 
 namespace vkw::passes {
 
-struct ReceiverPush {
-    glm::vec4 albedo{0.0f};
-    // x: 1 mirrored; y: side kept (+1 the camera's, -1 the other, 0 not a scene view); z: clip margin, m
-    glm::vec4 view{0.0f};
-    // The mesh variant's cutout: x the base colour factor's alpha, y the cutoff (negative: opaque)
-    glm::vec4 material{1.0f, -1.0f, 0.0f, 0.0f};
-};
+// The receiver shaders' push block (shaders/receivers/receiver_push.glsl), generated from its SPIR-V:
+// albedo; view.x 1 mirrored, view.y the side kept (+1 the camera's, -1 the other, 0 not a scene view),
+// view.z the clip margin in m; material.x the base colour factor's alpha, material.y the mesh
+// variant's cutoff (negative: opaque).
+using ReceiverPush = glsl::receiver_frag::Receiver;
+
+// A receiver's push block; opaque unless `material` names a cutout.
+inline ReceiverPush receiver_push(glm::vec4 albedo, glm::vec4 view,
+                                  glm::vec4 material = glm::vec4(1.0f, -1.0f, 0.0f, 0.0f)) {
+    return {albedo, view, material};
+}
 
 // receivers/mesh.vert and its vertex layout (position, normal, texture coordinates, RGBA colour: 12
 // floats), for any fragment shader. A vertex shader that reads no normal (the sun shadow map's) takes

@@ -7,6 +7,9 @@
 #include "passes/caustics/caustics_light_space.hpp"
 #include "passes/receivers/receiver_draws.hpp"
 
+#include <glm/gtc/type_ptr.hpp>
+#include <shader_structs/receivers/sun_shadow.frag.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -74,12 +77,11 @@ SunShadowSpace fit_sun_shadow(const SunShadowInputs& in) {
 }
 
 namespace {
-// Mirrors the push constants of receivers/sun_shadow.vert and .frag.
-struct ShadowPush {
-    float light_from_world[16];
-    float clip_height[4];  // x: meshes above this height cast nothing in this half
-    float material[4];     // x: the base colour factor's alpha, y: a cutout's threshold (negative: opaque)
-};
+// The push block of receivers/sun_shadow.vert and .frag, generated from the cutout fragment variant
+// (the one that declares all of it; tools/shader_structs): light_from_world; clip.x, meshes above
+// this height cast nothing in this half; material.x the base colour factor's alpha, material.y a
+// cutout's threshold (negative: opaque).
+using ShadowPush = glsl::sun_shadow_frag::SunShadowPush;
 }  // namespace
 
 SunShadowMap add_sun_shadow_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes, const SunShadowInputs& inputs) {
@@ -141,13 +143,12 @@ SunShadowMap add_sun_shadow_pass(fg::FrameGraph& graph, const ReceiverMeshes& me
                 vkCmdSetViewport(context.cmd(), 0, 1, &viewport);
                 vkCmdSetScissor(context.cmd(), 0, 1, &scissor);
                 ShadowPush push{};
-                std::copy(std::begin(projection.light_from_world), std::end(projection.light_from_world),
-                          push.light_from_world);
-                push.clip_height[0] = clip_height;
+                push.light_from_world = glm::make_mat4(projection.light_from_world);
+                push.clip.x = clip_height;
                 for (const ReceiverDraw& draw : meshes.draws()) {
                     if (cutouts) context.push_descriptors(pipeline, {meshes.textures().binding(draw.texture)});
-                    push.material[0] = draw.alpha;
-                    push.material[1] = draw.alpha_cutoff;
+                    push.material.x = draw.alpha;
+                    push.material.y = draw.alpha_cutoff;
                     context.push_constants(pipeline, push);
                     vkCmdDrawIndexed(context.cmd(), draw.index_count, 1, draw.first_index, draw.vertex_offset, 0);
                 }

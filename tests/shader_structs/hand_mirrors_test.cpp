@@ -130,15 +130,5 @@ TEST(HandMirrors, CausticLightSpacePushIsCausticLightSpace) {
     EXPECT_EQ(sizeof(photons_comp::Push), 128u);
 }
 
-// receivers/receiver_push.glsl: three vec4, 48 bytes.
-TEST(HandMirrors, ReceiverPushIsTheReceiverBlock) {
-    using Hand = vkw::passes::ReceiverPush;
-    using Generated = receiver_frag::Receiver;
-    EXPECT_EQ(sizeof(Hand), sizeof(Generated));
-    EXPECT_SAME_OFFSET(Hand, Generated, albedo);
-    EXPECT_SAME_OFFSET(Hand, Generated, view);
-    EXPECT_SAME_OFFSET(Hand, Generated, material);
-}
-
 }  // namespace
 }  // namespace vkw::test
