@@ -8,6 +8,7 @@
 vkwater_shader_structs(TARGET vkwater_shader_structs
   DEPENDS vkwater_shaders vkwater_shaders_caustics_bench
   SHADERS
+  common/shared_blocks.comp
   receivers/floor.vert
   receivers/mesh.vert
   receivers/receiver.frag.per_pixel_caustics_shadow_mesh_layer

@@ -1,5 +1,5 @@
-// Per-frame constants, std140. Mirrored field by field by
-// passes/common/frame_constants.hpp; change both together.
+// Per-frame constants, std140. Their C++ mirror is generated from common/shared_blocks.comp
+// (vkw::glsl::shared_blocks_comp::FrameConstants, used as vkw::FrameConstants).
 #ifndef VKWATER_FRAME_CONSTANTS_GLSL
 #define VKWATER_FRAME_CONSTANTS_GLSL
 

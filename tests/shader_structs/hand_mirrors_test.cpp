@@ -3,7 +3,6 @@
 // generated structs, a drift between a hand mirror and its shader fails here.
 #include "passes/caustics/caustics_light_space.hpp"
 #include "passes/caustics/caustics_photons.hpp"
-#include "passes/common/frame_constants.hpp"
 #include "passes/receivers/receiver_draws.hpp"
 #include "passes/receivers/sun_shadow.hpp"
 #include "passes/water/water_surface_draw.hpp"
@@ -52,40 +51,6 @@ TEST(HandMirrors, WaterSurfacePushIsWaterSurfaceFragParams) {
     EXPECT_SAME_OFFSET(Hand, Generated, mesh_sag);
     EXPECT_SAME_OFFSET(Hand, Generated, bottom_y);
     EXPECT_SAME_OFFSET(Hand, Generated, amplitude);
-}
-
-// The std140 frame constants: the hand mirror is alignas(16) and the generated one padded to 16,
-// both 720 bytes.
-TEST(HandMirrors, FrameConstantsIsTheFrameConstantsBlock) {
-    using Hand = vkw::FrameConstants;
-    using Generated = water_frag::FrameConstants;
-    EXPECT_EQ(sizeof(Hand), sizeof(Generated));
-    EXPECT_EQ(sizeof(Generated), 720u);
-    EXPECT_SAME_OFFSET(Hand, Generated, view_proj);
-    EXPECT_SAME_OFFSET(Hand, Generated, inv_view_proj);
-    EXPECT_SAME_OFFSET(Hand, Generated, camera_position);
-    EXPECT_SAME_OFFSET(Hand, Generated, sun_direction);
-    EXPECT_SAME_OFFSET(Hand, Generated, sun_irradiance);
-    EXPECT_SAME_OFFSET(Hand, Generated, sky_radiance);
-    EXPECT_SAME_OFFSET(Hand, Generated, sky_zenith);
-    EXPECT_SAME_OFFSET(Hand, Generated, sky_horizon);
-    EXPECT_SAME_OFFSET(Hand, Generated, sky_ground);
-    EXPECT_SAME_OFFSET(Hand, Generated, sky_params);
-    EXPECT_SAME_OFFSET(Hand, Generated, sky_average);
-    EXPECT_SAME_OFFSET(Hand, Generated, sun_disk);
-    EXPECT_SAME_OFFSET(Hand, Generated, floor_plane);
-    EXPECT_SAME_OFFSET(Hand, Generated, floor_albedo);
-    EXPECT_SAME_OFFSET(Hand, Generated, viewport);
-    EXPECT_SAME_OFFSET(Hand, Generated, water);
-    EXPECT_SAME_OFFSET(Hand, Generated, medium_sigma_t);
-    EXPECT_SAME_OFFSET(Hand, Generated, medium_sigma_s);
-    EXPECT_SAME_OFFSET(Hand, Generated, camera_medium);
-    EXPECT_SAME_OFFSET(Hand, Generated, camera_near);
-    EXPECT_SAME_OFFSET(Hand, Generated, medium_options);
-    EXPECT_SAME_OFFSET(Hand, Generated, floor_grout);
-    EXPECT_SAME_OFFSET(Hand, Generated, glitter);
-    EXPECT_SAME_OFFSET(Hand, Generated, unresolved_slopes);
-    EXPECT_EQ(sizeof(Hand::unresolved_slopes), sizeof(Generated::unresolved_slopes));
 }
 
 // receivers/sun_shadow.glsl's uniform block: the hand mirror groups each (mat4, vec4) pair as a
