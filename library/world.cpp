@@ -4,6 +4,7 @@
 
 #include "engine/core/errors.hpp"
 #include "engine/framegraph/executor.hpp"
+#include "engine/scene/range.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/context.hpp"
 #include "library/host_targets.hpp"
@@ -16,6 +17,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -46,6 +48,32 @@ vkw::Camera scene_camera_from(const Camera& camera, const vkw::Camera& defaults)
     out.near_plane = camera.near_plane;
     out.far_plane = camera.far_plane;
     return out;
+}
+
+// The host's camera and clock, checked as the scene loader checks a file's (the same ranges), since
+// they reach the frame without passing through it.
+void check_camera_and_time(const Camera& camera, double time_seconds) {
+    const auto refuse = [](const std::string& field, double value, const std::string& accepted) {
+        throw vkw::UserError("vkwater::Frame: " + field + " " + vkw::format_number(value) + " (accepted: " + accepted +
+                             ")");
+    };
+    const auto finite = [](const std::array<double, 3>& v) {
+        return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+    };
+    if (!finite(camera.position) || !finite(camera.target) || camera.position == camera.target) {
+        throw vkw::UserError(
+            "vkwater::Frame: camera.position and camera.target (accepted: finite points, not the same one)");
+    }
+    if (!(camera.fov_y_deg > 1.0 && camera.fov_y_deg < 179.0)) {
+        refuse("camera.fov_y_deg", camera.fov_y_deg, "1 < value < 179 degrees");
+    }
+    if (!(camera.near_plane > 0.0 && std::isfinite(camera.near_plane))) {
+        refuse("camera.near_plane", camera.near_plane, "a finite value > 0 m");
+    }
+    if (!(camera.far_plane > camera.near_plane && std::isfinite(camera.far_plane))) {
+        refuse("camera.far_plane", camera.far_plane, "a finite value > camera.near_plane");
+    }
+    if (!std::isfinite(time_seconds)) refuse("time_seconds", time_seconds, "a finite number of seconds");
 }
 
 std::array<float, 16> column_major(const glm::dmat4& m) {
@@ -117,6 +145,7 @@ CameraMatrices World::matrices(const Camera& camera, uint32_t width, uint32_t he
 
 vkw::fg::FrameExecutor& World::State::prepare(const Frame& frame, vkw::fg::TimingMode timing) {
     const detail::HostTargets targets = detail::check_host_targets(*context, frame);
+    check_camera_and_time(frame.camera, frame.time_seconds);
     scene.camera = scene_camera_from(frame.camera, scene.camera);
     scene.water->time = frame.time_seconds;
 

@@ -392,9 +392,13 @@ TEST_F(WorldTest, MistakesAreStatusesThatNameThem) {
     frame_8bit.color.format = VK_FORMAT_R8G8B8A8_UNORM;
     vkwater::Frame frame_small_depth = frame(*world.value());
     frame_small_depth.depth.width = kWidth / 2;
+    vkwater::Frame frame_wide = frame(*world.value());
+    frame_wide.camera.fov_y_deg = 200.0;
     vkwater::Frame frame_no_cmd = frame(*world.value());
-    const std::pair<const vkwater::Frame*, std::string> cases[] = {{&frame_8bit, "color: format RGBA8_UNORM"},
-                                                                   {&frame_small_depth, "depth: size 80x120"}};
+    const std::pair<const vkwater::Frame*, std::string> cases[] = {
+        {&frame_8bit, "color: format RGBA8_UNORM"},
+        {&frame_small_depth, "depth: size 80x120"},
+        {&frame_wide, "camera.fov_y_deg 200 (accepted: 1 < value < 179 degrees)"}};
     for (const auto& [bad, named] : cases) {
         context().submit_and_wait(
             [&](VkCommandBuffer cmd) {
