@@ -33,6 +33,7 @@
 #include "engine/scene/scene.hpp"
 
 #include <glm/glm.hpp>
+#include <shader_structs/common/shared_blocks.comp.hpp>
 
 #include <cstdint>
 #include <memory>
@@ -91,13 +92,10 @@ struct CausticInputs {
     std::string read_note;
 };
 
-// Mirrors struct CausticLightSpace of shaders/caustics/caustic_light_space.glsl.
-struct CausticLightSpacePush {
-    float origin[4];  // xyz, floor height
-    float u_axis[4];  // u / texel_u, W
-    float v_axis[4];  // v / texel_v, H
-    float sun[4];     // s, n
-};
+// struct CausticLightSpace of shaders/caustics/caustic_light_space.glsl (origin: xyz, floor height;
+// u_axis: u / texel_u, W; v_axis: v / texel_v, H; sun: s, n), generated once from
+// common/shared_blocks.comp; four vec4, the same in std140 and std430.
+using CausticLightSpacePush = glsl::shared_blocks_comp::CausticLightSpace;
 static_assert(sizeof(CausticLightSpacePush) == 64);
 
 struct CausticMapFrame {

@@ -7,8 +7,8 @@
 #ifndef VKWATER_CAUSTIC_LIGHT_SPACE_GLSL
 #define VKWATER_CAUSTIC_LIGHT_SPACE_GLSL
 
-// std140 and std430 lay this out identically (four vec4). Mirrored by CausticLightSpacePush in
-// passes/caustics/caustics_light_space.hpp.
+// std140 and std430 lay this out identically (four vec4). Its C++ mirror is generated from
+// common/shared_blocks.comp (CausticLightSpacePush in passes/caustics/caustics_light_space.hpp).
 struct CausticLightSpace {
     vec4 origin;  // xyz: a world point at texel coordinate (0, 0) and depth 0; w: floor height y
     vec4 u_axis;  // xyz: u / (texel size along u), 1/m; w: map width W in texels
