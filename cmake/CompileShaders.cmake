@@ -94,7 +94,7 @@ function(vkwater_compile_shader_variants)
 endfunction()
 
 # vkwater_shader_structs(TARGET name SHADERS godrays/godray_blur.comp godrays/godray_beams.comp.shadow ...
-#                        [DEPENDS shader targets...])
+#                        [SHARED common/shared_blocks.comp] [DEPENDS shader targets...])
 # The C++ mirrors of each shader's push-constant and uniform blocks (tools/shader_structs), one
 # header per shader: ${CMAKE_BINARY_DIR}/generated/shader_structs/<path>.hpp, namespace
 # vkw::glsl::<file name, '.' as '_'>. A shader compiled in variants is named by one variant's
@@ -102,8 +102,13 @@ endfunction()
 # library: a target that links it may `#include <shader_structs/<path>.hpp>`, and the headers are
 # generated before it compiles. TARGET_check compiles every header in one translation unit, with
 # -Wpadded as an error, as part of the build. DEPENDS: the targets that compile the shaders.
+# SHARED (one of SHADERS): the shader whose structs are shared; every other header aliases a
+# struct of the same name to its type instead of defining its own (tools/shader_structs --shared).
 function(vkwater_shader_structs)
-  cmake_parse_arguments(ARG "" "TARGET" "SHADERS;DEPENDS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET;SHARED" "SHADERS;DEPENDS" ${ARGN})
+  if(ARG_SHARED AND NOT ARG_SHARED IN_LIST ARG_SHADERS)
+    message(FATAL_ERROR "vkwater_shader_structs: SHARED ${ARG_SHARED} is not one of SHADERS")
+  endif()
   set(root ${CMAKE_BINARY_DIR}/generated)
   set(headers)
   set(sources)
@@ -127,10 +132,16 @@ function(vkwater_shader_structs)
     list(APPEND namespaces ${namespace})
     set(spv ${VKWATER_SHADER_OUTPUT_DIR}/${shader}.spv)
     set(header ${root}/shader_structs/${source}.hpp)
+    set(shared_arguments)
+    set(shared_spv)
+    if(ARG_SHARED AND NOT shader STREQUAL ARG_SHARED)
+      set(shared_spv ${VKWATER_SHADER_OUTPUT_DIR}/${ARG_SHARED}.spv)
+      set(shared_arguments --shared ${shared_spv} ${ARG_SHARED})
+    endif()
     add_custom_command(
       OUTPUT ${header}
-      COMMAND vkwater_shader_structs_tool ${spv} ${header} ${source} ${variant}
-      DEPENDS ${spv} vkwater_shader_structs_tool
+      COMMAND vkwater_shader_structs_tool ${spv} ${header} ${source} ${variant} ${shared_arguments}
+      DEPENDS ${spv} ${shared_spv} vkwater_shader_structs_tool
       COMMENT "C++ mirrors of ${shader}'s blocks"
       VERBATIM)
     list(APPEND headers ${header})

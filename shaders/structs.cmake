@@ -4,9 +4,11 @@
 # read in the variant that declares the most blocks (the blocks the others declare are the same).
 # Left out: the shaders without a block (common/fullscreen.vert, common/calibration.frag,
 # tests/gradient.comp, tests/copy_texels.frag) and tests/shader_structs_refused.comp, whose block the
-# generator must refuse (tests/shader_structs).
+# generator must refuse (tests/shader_structs). The structs of common/shared_blocks.comp are one C++
+# type in every header (an alias there), so that one struct fills the same block of many shaders.
 vkwater_shader_structs(TARGET vkwater_shader_structs
   DEPENDS vkwater_shaders vkwater_shaders_caustics_bench
+  SHARED common/shared_blocks.comp
   SHADERS
   common/shared_blocks.comp
   receivers/floor.vert

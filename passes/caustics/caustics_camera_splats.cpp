@@ -9,6 +9,7 @@
 #include "passes/common/zeroed_buffer.hpp"
 
 #include <shader_structs/caustics/caustic_camera_resolve.comp.hpp>
+#include <shader_structs/caustics/caustic_camera_splats.comp.hpp>
 
 #include <optional>
 #include <string>
@@ -17,11 +18,8 @@
 namespace vkw::passes {
 namespace {
 
-// Mirrors the push constants of shaders/caustics/caustic_camera_splats.comp.
-struct CameraSplatPush {
-    CausticPhotonSourcePush source;
-    uint32_t resolution, sub, first_row, rows, jitter, width, height, pad;
-};
+// The push constants of shaders/caustics/caustic_camera_splats.comp, generated from its SPIR-V.
+using CameraSplatPush = glsl::caustic_camera_splats_comp::Push;
 static_assert(sizeof(CameraSplatPush) == 128, "the push-constant size every device supports");
 
 // The push-constant block of shaders/caustics/caustic_camera_resolve.comp, generated from its SPIR-V (tools/shader_structs).

@@ -9,6 +9,8 @@
 #include "passes/common/zeroed_buffer.hpp"
 #include "passes/water/water_surface.hpp"
 
+#include <shader_structs/caustics/caustic_photons.comp.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -24,16 +26,11 @@ namespace {
 constexpr uint32_t kGroupSide = 8;  // local_size of caustic_photons.comp
 constexpr uint32_t kMaxGroups = 65535;
 
-// Mirrors the push constants of shaders/caustics/caustic_photons.comp.
-struct CausticPhotonPush {
-    CausticPhotonSourcePush source;
-    uint32_t resolution;
-    uint32_t sub_and_flags;  // bits 0-7: S; bit 8: jitter; bit 9: cull outside read_x, read_y
-    uint32_t chunk_rows;     // the chunk's first cell row | its cell rows << 16 (R <= 4096)
-    uint32_t vertex_offset;  // the element of the chunk's binding that holds vertex (0, first row)
-    uint32_t band_first, band_rows;
-    uint32_t read_x, read_y;  // the read texels' columns and rows, [first, end): first | end << 16
-};
+// The push constants of shaders/caustics/caustic_photons.comp, generated from its SPIR-V
+// (tools/shader_structs): sub_and_flags holds S in bits 0-7, then the flags below; chunk_rows the
+// chunk's first cell row | its cell rows << 16 (R <= 4096); read_x and read_y the read texels'
+// columns and rows, [first, end): first | end << 16.
+using CausticPhotonPush = glsl::caustic_photons_comp::Push;
 constexpr uint32_t kJitterFlag = 1u << 8, kCullFlag = 1u << 9;
 static_assert(sizeof(CausticPhotonPush) == 128, "the push-constant size every device supports");
 

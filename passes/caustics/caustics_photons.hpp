@@ -35,12 +35,9 @@
 namespace vkw::passes {
 
 // What the push constants of every photon kernel begin with (struct CausticPhotonSource of
-// shaders/caustics/caustic_grid_photon.glsl): the light-space frame, E_s / LSB and sigma_t.
-struct CausticPhotonSourcePush {
-    CausticLightSpacePush space;
-    float deposit_scale[4];
-    float sigma_t[4];
-};
+// shaders/caustics/caustic_photon_source.glsl, generated once from common/shared_blocks.comp): the
+// light-space frame, E_s / LSB and sigma_t.
+using CausticPhotonSourcePush = glsl::shared_blocks_comp::CausticPhotonSource;
 static_assert(sizeof(CausticPhotonSourcePush) == 96);
 
 // Throws vkw::InternalError for inputs out of range.

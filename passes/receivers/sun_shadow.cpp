@@ -7,7 +7,6 @@
 #include "passes/caustics/caustics_light_space.hpp"
 #include "passes/receivers/receiver_draws.hpp"
 
-#include <glm/gtc/type_ptr.hpp>
 #include <shader_structs/receivers/sun_shadow.frag.hpp>
 
 #include <algorithm>
@@ -52,15 +51,10 @@ ShadowProjection fit_shadow_projection(const glm::dvec3& direction, const glm::d
     const glm::dvec4 row_z(-s / extent.z, hi.z / extent.z);
     ShadowProjection projection{};
     for (int col = 0; col < 4; ++col) {
-        projection.light_from_world[col * 4 + 0] = float(row_x[col]);
-        projection.light_from_world[col * 4 + 1] = float(row_y[col]);
-        projection.light_from_world[col * 4 + 2] = float(row_z[col]);
-        projection.light_from_world[col * 4 + 3] = col == 3 ? 1.0f : 0.0f;
+        projection.light_from_world[col] =
+            glm::vec4(float(row_x[col]), float(row_y[col]), float(row_z[col]), col == 3 ? 1.0f : 0.0f);
     }
-    projection.params[0] = float(std::max(extent.x, extent.y) / size);
-    projection.params[1] = float(extent.z);
-    projection.params[2] = float(size);
-    projection.params[3] = 1.0f;
+    projection.params = glm::vec4(float(std::max(extent.x, extent.y) / size), float(extent.z), float(size), 1.0f);
     return projection;
 }
 
@@ -143,7 +137,7 @@ SunShadowMap add_sun_shadow_pass(fg::FrameGraph& graph, const ReceiverMeshes& me
                 vkCmdSetViewport(context.cmd(), 0, 1, &viewport);
                 vkCmdSetScissor(context.cmd(), 0, 1, &scissor);
                 ShadowPush push{};
-                push.light_from_world = glm::make_mat4(projection.light_from_world);
+                push.light_from_world = projection.light_from_world;
                 push.clip.x = clip_height;
                 for (const ReceiverDraw& draw : meshes.draws()) {
                     if (cutouts) context.push_descriptors(pipeline, {meshes.textures().binding(draw.texture)});

@@ -22,6 +22,7 @@
 #include "passes/receivers/receiver_meshes.hpp"
 
 #include <glm/glm.hpp>
+#include <shader_structs/common/shared_blocks.comp.hpp>
 
 #include <cstdint>
 #include <optional>
@@ -42,18 +43,15 @@ struct SunShadowInputs {
     std::optional<UnderwaterBeam> beam;          // the right half: the scene has water
 };
 
-// One half's projection; mirrors a (mat4, vec4) pair of shaders/receivers/sun_shadow.glsl.
-struct ShadowProjection {
-    float light_from_world[16];  // column-major: world -> (x, y) in [-1, 1], z = 1 nearest the light
-    float params[4];             // x: texel size, m (the larger side); y: depth range, m; z: size, texels;
-                                 // w: 1 when the map has this half
-};
+// One half's projection, struct ShadowProjection of shaders/receivers/sun_shadow.glsl, generated
+// once from common/shared_blocks.comp: light_from_world, world -> (x, y) in [-1, 1], z = 1 nearest
+// the light; params x: texel size, m (the larger side), y: depth range, m, z: size, texels, w: 1
+// when the map has this half.
+using ShadowProjection = glsl::shared_blocks_comp::ShadowProjection;
 
-// Mirrors struct SunShadowSpace of shaders/receivers/sun_shadow.glsl (std140 = std430 here).
-struct SunShadowSpace {
-    ShadowProjection sun;   // left half, along s
-    ShadowProjection beam;  // right half, along t under the water (params.w = 0 without water)
-};
+// The uniform block SunShadowSpace of the same file: `sun`, the left half, along s; `beam`, the
+// right half, along t under the water (params.w = 0 without water).
+using SunShadowSpace = glsl::shared_blocks_comp::SunShadowSpace;
 static_assert(sizeof(SunShadowSpace) == 160);
 
 // Throws vkw::InternalError for a non-unit direction, an empty or non-finite box, or size

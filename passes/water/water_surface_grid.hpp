@@ -9,20 +9,17 @@
 #include "passes/water/water_surface.hpp"
 
 #include <vulkan/vulkan.h>
+#include <shader_structs/common/shared_blocks.comp.hpp>
 
 #include <cstdint>
 #include <vector>
 
 namespace vkw::passes {
 
-// Mirrors struct WaterGrid of water_vertex.glsl.
-struct WaterGridPush {
-    float level;
-    float half_extent;
-    uint32_t resolution;
-    uint32_t first_row;  // set per band by dispatch_water_grid
-    uint32_t band_rows;  // likewise
-};
+// struct WaterGrid of shaders/water/water_vertex.glsl, generated once from common/shared_blocks.comp
+// (every grid kernel's push block begins with one): level, half_extent, resolution, and the band's
+// first_row and band_rows, which dispatch_water_grid sets.
+using WaterGridPush = glsl::shared_blocks_comp::WaterGrid;
 
 WaterGridPush water_grid_push(const WaterSurfaceInputs& inputs);
 

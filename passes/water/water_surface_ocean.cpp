@@ -7,6 +7,7 @@
 #include "passes/water/water_surface_spectrum.hpp"
 #include "passes/water/water_surface_sum.hpp"
 
+#include <shader_structs/water/ocean_grid.comp.hpp>
 #include <shader_structs/water/ocean_spectra.comp.hpp>
 
 #include <numbers>
@@ -18,12 +19,9 @@ namespace {
 // The push-constant block of shaders/water/ocean_spectra.comp, generated from its SPIR-V (tools/shader_structs).
 using SpectraPush = glsl::ocean_spectra_comp::Params;
 
-// Mirrors the push constants of shaders/water/ocean_grid.comp.
-struct GridPush {
-    WaterGridPush grid;
-    uint32_t n;
-    float nodes_per_metre;
-};
+// The push-constant block of shaders/water/ocean_grid.comp (a WaterGridPush, then the FFT's size and
+// its nodes per metre).
+using GridPush = glsl::ocean_grid_comp::Params;
 
 fg::BufferHandle add_spectra_pass(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs) {
     const FftOceanSpectrum& spectrum = inputs.ocean->spectrum();

@@ -7,6 +7,8 @@
 #include "engine/water/wave_terms.hpp"
 #include "passes/water/water_surface_grid.hpp"
 
+#include <shader_structs/water/wave_sum.comp.hpp>
+
 #include <cmath>
 #include <numbers>
 
@@ -14,22 +16,14 @@ namespace vkw::passes {
 
 namespace {
 
-// Mirrors struct Wave of shaders/water/wave_sum.comp (32 bytes in std140).
-struct GpuWave {
-    float k_vector[2];
-    float phase_at_origin;
-    float amplitude;
-    float displacement_scale;
-    float unused[3];
-};
-static_assert(sizeof(GpuWave) == 32);
-// vkCmdUpdateBuffer writes at most 65536 bytes: the whole table in one call.
+// struct Wave of shaders/water/wave_sum.comp (32 bytes in std140) and its push block (a
+// WaterGridPush, then the number of waves), generated from its SPIR-V.
+using GpuWave = glsl::wave_sum_comp::Wave;
+using SumPush = glsl::wave_sum_comp::Params;
+// The kernel's uniform block holds kMaxGpuWaves of them; vkCmdUpdateBuffer writes at most 65536
+// bytes: the whole table in one call.
+static_assert(sizeof(glsl::wave_sum_comp::Waves) == sizeof(GpuWave) * kMaxGpuWaves);
 static_assert(sizeof(GpuWave) * kMaxGpuWaves <= 65536);
-
-struct SumPush {
-    WaterGridPush grid;
-    uint32_t wave_count;
-};
 
 // wave_terms() rounded to fp32. The phase is reduced to [-pi, pi] in double first (sin and cos
 // do not notice), so that fp32 holds it to 2^-24 rad however large w t has grown, instead of to

@@ -45,7 +45,8 @@ layout(set = 0, binding = 3, std430) buffer Lost { uint64_t lost[]; };
 // The receivers' view (passes/caustics/caustics_camera_receivers.hpp): normal toward the eye, distance.
 layout(set = 0, binding = 5) uniform sampler2D receivers;
 
-// Mirrors CameraSplatPush in passes/caustics/caustics_camera_splats.cpp (128 bytes).
+// Its C++ type (CameraSplatPush in passes/caustics/caustics_camera_splats.cpp) is generated from
+// this shader; 128 bytes.
 layout(push_constant) uniform Push {
     CausticPhotonSource source;
     uint resolution;  // R cells per side

@@ -13,16 +13,11 @@
 #define VKWATER_CAUSTIC_GRID_PHOTON_GLSL
 
 #include "caustics/caustic_photon.glsl"
+#include "caustics/caustic_photon_source.glsl"
 #ifdef VKWATER_SUN_SHADOW
 #include "caustics/caustic_receiver_hit.glsl"  // bindings 6 and 7: the sun shadow map
 #endif
 
-// What every photon kernel's push constants begin with (std430 and std140 alike: six vec4).
-struct CausticPhotonSource {
-    CausticLightSpace space;
-    vec4 deposit_scale;  // rgb: E_s / LSB per channel (0 for a sun at or below the horizon)
-    vec4 sigma_t;        // rgb: extinction, 1/m
-};
 
 // Which photons one dispatch traces: cell rows first_row .. first_row + rows of an R x R grid, S x S
 // photons per cell.

@@ -38,7 +38,8 @@ layout(set = 0, binding = 2, std430) buffer Lost { uint64_t lost[]; };
 // 0 .. H - 1), then the same widened by kAdaptiveSplatReach along both axes (rows H .. 2H - 1).
 layout(set = 0, binding = 3, std430) readonly buffer ReadRows { uint read_rows[]; };
 
-// Mirrors CausticPhotonPush in passes/caustics/caustics_photons.cpp (128 bytes, the guaranteed minimum).
+// Its C++ type (CausticPhotonPush in passes/caustics/caustics_photons.cpp) is generated from this
+// shader; 128 bytes, the guaranteed minimum.
 layout(push_constant) uniform Push {
     CausticPhotonSource source;
     uint resolution;     // R cells per side

@@ -24,14 +24,14 @@ const float kNoReceiver = 3.0e38;
 // Depth of the nearest mesh in x's column along t0, minus x's own depth (metres; kNoReceiver where
 // the column holds no mesh or lies outside the map).
 float mesh_gap(vec3 x) {
-    const vec4 q = sun_shadow.beam_from_world * vec4(x, 1.0);
+    const vec4 q = sun_shadow.beam.light_from_world * vec4(x, 1.0);
     const vec2 uv = vec2(0.5 + 0.5 * q.x, 0.5 - 0.5 * q.y);  // the pass flips y (sun_shadow.glsl)
     if (!(all(greaterThanEqual(uv, vec2(0.0))) && all(lessThan(uv, vec2(1.0))))) return kNoReceiver;
-    const float size = sun_shadow.beam_params.z;
+    const float size = sun_shadow.beam.params.z;
     const ivec2 texel = min(ivec2(uv * size), ivec2(size - 1.0)) + ivec2(int(size), 0);
     const float occluder = texelFetch(sun_shadow_map, texel, 0).r;
     if (!(occluder > 0.0)) return kNoReceiver;  // the clear: no mesh in this column
-    return (q.z - occluder) * sun_shadow.beam_params.y;  // reversed depth: 1 nearest the water
+    return (q.z - occluder) * sun_shadow.beam.params.y;  // reversed depth: 1 nearest the water
 }
 
 // The receiver gap at x: the floor (t0 runs (x.y - floor) / -t0.y to it) or a mesh in front of it.
@@ -42,9 +42,9 @@ float receiver_gap(vec3 x, vec3 t0, float floor_y) {
 // The path length from the photon's entry to its receiver, at most floor_length (the floor along
 // the photon's own direction, where f = 0 exactly when no mesh is in front of it).
 float receiver_path(CausticPhoton photon, vec3 t0, float floor_y, float floor_length) {
-    if (sun_shadow.beam_params.w < 0.5) return floor_length;
+    if (sun_shadow.beam.params.w < 0.5) return floor_length;
     const vec3 p = photon.entry, t = photon.direction;
-    const float tolerance = kReceiverTolerance * sun_shadow.beam_params.x;
+    const float tolerance = kReceiverTolerance * sun_shadow.beam.params.x;
     const float along = max(dot(t, t0), 0.1);  // the ray's advance in depth per metre (t near t0)
     float l0 = floor_length;
     float f0 = min(0.0, mesh_gap(p + l0 * t));

@@ -9,7 +9,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0, rgba32f) uniform readonly image2D sub_frame;
 layout(binding = 1, rgba32f) uniform image2D sum;
 
-// Mirrors AccumulatePush in passes/frame/accumulate.cpp.
+// Its C++ type (AccumulatePush in passes/frame/accumulate.cpp) is generated from this shader.
 layout(push_constant) uniform Push {
     uint first;   // 1: the sum starts with this sub-frame
     uint last;    // 1: scale the sum by `scale`

@@ -22,7 +22,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 1, std430) readonly buffer Surface { WaterVertex vertices[]; };
 layout(set = 0, binding = 2, std430) writeonly buffer Beams { GodrayBeam beams[]; };
 
-// Mirrors GodrayBeamsPush in passes/godrays/godrays_beams.cpp.
+// Its C++ type (GodrayBeamsPush in passes/godrays/godrays_beams.cpp) is generated from this shader.
 layout(push_constant) uniform Push {
     uint resolution;   // R: surface cells per side
     uint grid;         // G: beams per side

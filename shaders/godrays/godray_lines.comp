@@ -57,7 +57,7 @@ layout(set = 0, binding = 2) uniform sampler2D view_depth;
 // The pyramids of godray_pyramid.glsl, in units of godray_lsb().
 layout(set = 0, binding = 3, std430) buffer Radiance { uint64_t radiance[]; };
 
-// Mirrors GodrayLinesPush in passes/godrays/godrays_lines.cpp.
+// Its C++ type (GodrayLinesPush in passes/godrays/godrays_lines.cpp) is generated from this shader.
 layout(push_constant) uniform Push {
     uint grid;              // G: beams per side
     uint per_pixel_medium;  // 1: view_depth.g decides each pixel's view; 0: the frame's camera medium

@@ -32,7 +32,7 @@ layout(set = 0, binding = 1, std430) readonly buffer Optics { SceneOptics optics
 layout(set = 0, binding = 2) uniform sampler2D view_depth;  // r: distance to the scene, g: 1 in the water
 layout(set = 0, binding = 3, rgba32f) writeonly uniform image2D target;
 
-// Mirrors GodrayMarchPush in passes/godrays/godrays_march.cpp.
+// Its C++ type (GodrayMarchPush in passes/godrays/godrays_march.cpp) is generated from this shader.
 layout(push_constant) uniform Push {
     uint steps;           // N per segment
     float max_amplitude;  // m: a bound on the waves' height, the margin of the surface's depth

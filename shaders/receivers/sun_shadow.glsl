@@ -9,12 +9,17 @@
 #ifndef VKWATER_SUN_SHADOW_GLSL
 #define VKWATER_SUN_SHADOW_GLSL
 
-// Mirrored by SunShadowSpace in passes/receivers/sun_shadow.hpp.
+// One half's orthographic projection. Its C++ type, and SunShadowSpace's, are generated once from
+// common/shared_blocks.comp (passes/receivers/sun_shadow.hpp fills them).
+struct ShadowProjection {
+    mat4 light_from_world;  // world -> (x, y) in [-1, 1], z = 1 nearest the light, 0 farthest
+    vec4 params;            // x: texel size, m; y: depth range, m; z: map size, texels (each half);
+                            // w: 1 when the map has this half
+};
+
 layout(set = 0, binding = 7, std140) uniform SunShadowSpace {
-    mat4 light_from_world;  // along s: world -> (x, y) in [-1, 1], z = 1 nearest the sun, 0 farthest
-    vec4 params;            // x: texel size, m; y: depth range, m; z: map size, texels (each half)
-    mat4 beam_from_world;   // the same along the refracted beam t, for the objects under the water
-    vec4 beam_params;       // as params; w: 1 when the map has this half (the scene has water)
+    ShadowProjection sun;   // the left half, along s
+    ShadowProjection beam;  // the right half, along the refracted beam t, for the objects under the water
 } sun_shadow;
 layout(set = 0, binding = 6) uniform sampler2D sun_shadow_map;
 
@@ -43,14 +48,14 @@ float shadow_map_visibility(mat4 light_from_world, vec4 params, int half_index, 
 
 // The direct sun at p above the water, or at the point where its refracted beam enters the water.
 float sun_visibility(vec3 p, float cos_sun) {
-    return shadow_map_visibility(sun_shadow.light_from_world, sun_shadow.params, 0, p, cos_sun);
+    return shadow_map_visibility(sun_shadow.sun.light_from_world, sun_shadow.sun.params, 0, p, cos_sun);
 }
 
 // The refracted beam t (flat surface) at p under the water, by the objects under the water;
 // cos_beam = -t.N of the lit side.
 float beam_visibility_under_water(vec3 p, float cos_beam) {
-    if (sun_shadow.beam_params.w < 0.5) return 1.0;
-    return shadow_map_visibility(sun_shadow.beam_from_world, sun_shadow.beam_params, 1, p, cos_beam);
+    if (sun_shadow.beam.params.w < 0.5) return 1.0;
+    return shadow_map_visibility(sun_shadow.beam.light_from_world, sun_shadow.beam.params, 1, p, cos_beam);
 }
 
 #endif

@@ -1,6 +1,6 @@
 // The push constants of the water surface's draw (water_surface.vert and .frag) and of the
-// camera-medium pass (camera_medium_mask.frag), mirrored by
-// WaterSurfacePush in passes/water/water_surface_draw.hpp. The choices that change which code
+// camera-medium pass (camera_medium_mask.frag); their C++ type, WaterSurfacePush in
+// passes/water/water_surface_draw.hpp, is generated from water_surface.frag. The choices that change which code
 // runs (the wave model, the Fresnel form, the lookups) are specialization constants instead.
 #ifndef VKWATER_WATER_SURFACE_PARAMS_GLSL
 #define VKWATER_WATER_SURFACE_PARAMS_GLSL

@@ -10,7 +10,8 @@ struct WaterVertex {
     vec4 normal;    // xyz unit normal toward the air (y > 0), w = 0
 };
 
-// The head of every grid kernel's push constants (WaterGridPush in passes/water/water_surface_grid.hpp).
+// The head of every grid kernel's push constants; its C++ type, WaterGridPush in
+// passes/water/water_surface_grid.hpp, is generated once from common/shared_blocks.comp.
 // One dispatch writes a band of rows, first_row .. first_row + band_rows - 1, into a vertex
 // buffer binding that starts at row first_row: a storage-buffer binding is limited to
 // maxStorageBufferRange (128 MiB on lavapipe, R = 2047), and large grids take several bands.

@@ -17,6 +17,7 @@
 #include "passes/water/water_surface.hpp"
 
 #include <glm/glm.hpp>
+#include <shader_structs/caustics/caustic_probe.comp.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -48,18 +49,14 @@ struct CausticRun {
 
 inline void add_probe_pass(fg::FrameGraph& graph, const passes::CausticMap& map, const ProbeGrid& grid, VkBuffer host,
                            VkDeviceSize bytes) {
-    struct Push {
-        float corner[4], step_x[4], step_z[4], normal[4];
-        uint32_t count_x, count_z;
-    };
-    auto v4 = [](const glm::dvec3& v, float* out) {
-        out[0] = float(v.x), out[1] = float(v.y), out[2] = float(v.z), out[3] = 0.0f;
-    };
+    // caustics/caustic_probe.comp's push block, generated from its SPIR-V.
+    using Push = glsl::caustic_probe_comp::Push;
+    const auto v4 = [](const glm::dvec3& v) { return glm::vec4(glm::vec3(v), 0.0f); };
     Push push{};
-    v4(grid.corner, push.corner);
-    v4(grid.step_x, push.step_x);
-    v4(grid.step_z, push.step_z);
-    v4(grid.normal, push.normal);
+    push.corner = v4(grid.corner);
+    push.step_x = v4(grid.step_x);
+    push.step_z = v4(grid.step_z);
+    push.normal = v4(grid.normal);
     push.count_x = grid.count_x;
     push.count_z = grid.count_z;
     struct Data {

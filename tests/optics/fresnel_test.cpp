@@ -7,6 +7,8 @@
 #include "tests/support/compute_runner.hpp"
 #include "tests/support/gpu_test.hpp"
 
+#include <shader_structs/tests/fresnel_sweep.comp.hpp>
+
 #include <cmath>
 #include <numbers>
 
@@ -40,11 +42,8 @@ double fp32_bound(double cos_i, double n_i, double n_t) {
     return 16.0 * std::ldexp(1.0, -24) + slope * d_cos_t;
 }
 
-struct Push {
-    float ior;
-    uint32_t count;
-    float table_cos[7];
-};
+// tests/fresnel_sweep.comp's push block, generated from its SPIR-V.
+using Push = glsl::fresnel_sweep_comp::Params;
 
 constexpr double kTableDeg[7] = {0, 30, 45, 60, 75, 85, 89};
 // docs/model.md section 2: air to water, n = 1.333, as printed (5 or 6 decimals).

@@ -6,6 +6,7 @@
 #include "tests/support/gpu_test.hpp"
 
 #include <glm/glm.hpp>
+#include <shader_structs/tests/glitter_sweep.comp.hpp>
 
 #include <cmath>
 #include <numbers>
@@ -15,15 +16,9 @@ namespace {
 
 constexpr double kIor = 1.333;
 
-struct Push {
-    glm::vec4 to_source;
-    glm::vec4 centre;      // w: half width
-    glm::vec4 covariance;  // w: ior
-    glm::vec2 mean_slope;
-    uint32_t n;
-    uint32_t mode;
-};
-static_assert(sizeof(Push) == 64);
+// tests/glitter_sweep.comp's push block, generated from its SPIR-V (centre.w: the half width;
+// covariance.w: the ior).
+using Push = glsl::glitter_sweep_comp::Params;
 
 glm::dvec3 direction(double elevation_deg, double azimuth_deg) {
     const double e = elevation_deg * std::numbers::pi / 180.0, a = azimuth_deg * std::numbers::pi / 180.0;

@@ -7,6 +7,8 @@
 #include "tests/support/gpu_test.hpp"
 #include "tools/reference/optics.hpp"
 
+#include <shader_structs/tests/in_scatter_sweep.comp.hpp>
+
 #include <cmath>
 
 namespace vkw::test {
@@ -15,10 +17,8 @@ namespace {
 constexpr uint32_t kCases = 3 * 4 * 15 * 2 * 3 * 3 * 3;
 constexpr int kStride = 24;
 
-struct Push {
-    uint32_t count;
-    float ior;
-};
+// tests/in_scatter_sweep.comp's push block, generated from its SPIR-V.
+using Push = glsl::in_scatter_sweep_comp::Params;
 
 // Relative fp32 error bound of the shader's result for one channel. Sources, each in
 // units of 2^-24:

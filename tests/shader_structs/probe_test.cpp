@@ -241,9 +241,15 @@ struct ToolRun {
     std::string output;  // stdout and stderr
 };
 
-ToolRun run_tool(const std::string& spv, const fs::path& out, const std::string& shader) {
-    const std::string command = std::string("'") + VKWATER_SHADER_STRUCTS_TOOL + "' '" + VKWATER_TEST_SHADER_DIR + "/" +
-                                spv + "' '" + out.string() + "' " + shader + " 2>&1";
+// `shared`: the --shared arguments (SPV, under the shader directory, and its shader), if any.
+ToolRun run_tool(const std::string& spv, const fs::path& out, const std::string& shader,
+                 const std::pair<std::string, std::string>& shared = {}) {
+    std::string command = std::string("'") + VKWATER_SHADER_STRUCTS_TOOL + "' '" + VKWATER_TEST_SHADER_DIR + "/" + spv +
+                          "' '" + out.string() + "' " + shader;
+    if (!shared.first.empty()) {
+        command += std::string(" --shared '") + VKWATER_TEST_SHADER_DIR + "/" + shared.first + "' " + shared.second;
+    }
+    command += " 2>&1";
     ToolRun run;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return run;
@@ -291,6 +297,46 @@ TEST(ShaderStructs, GeneratorRefusesALayoutGlmCannotMirror) {
               std::string::npos)
         << result.output;
     EXPECT_FALSE(fs::exists(out));
+}
+
+// A struct named like one of the shared shader's but laid out differently cannot be one C++ type:
+// the generator refuses it, naming the struct and the shared shader, and writes nothing. (The probe's
+// push block is `Push`, 16 bytes at most; the photon kernel's `Push` is 128.)
+TEST(ShaderStructs, GeneratorRefusesASharedNameWithAnotherLayout) {
+    const fs::path out = fs::path(testing::TempDir()) / "shader_structs_probe_shared.hpp";
+    fs::remove(out);
+    const ToolRun result =
+        run_tool("tests/shader_structs_probe.comp.spv", out, "tests/shader_structs_probe.comp",
+                 {"caustics/caustic_photons.comp.bilinear_shadow.spv", "caustics/caustic_photons.comp"});
+    EXPECT_EQ(result.status, 1) << result.output;
+    EXPECT_NE(result.output.find("struct 'Push' is laid out differently here than in shaders/caustics/"
+                                 "caustic_photons.comp, whose C++ type every shader shares"),
+              std::string::npos)
+        << result.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+// With a shared shader whose structs it also declares, identically, the header aliases them and
+// includes the shared header: the photon kernel against the camera-space splat kernel, which share
+// the photon source and the light space (their `Push` blocks differ, so the splats' kernel is the
+// subject and common/shared_blocks.comp, which has no push block, the shared shader).
+TEST(ShaderStructs, GeneratorAliasesTheSharedStructs) {
+    const fs::path out = fs::path(testing::TempDir()) / "shader_structs_splats_shared.hpp";
+    fs::remove(out);
+    const ToolRun result =
+        run_tool("caustics/caustic_camera_splats.comp.shadow.spv", out, "caustics/caustic_camera_splats.comp",
+                 {"common/shared_blocks.comp.spv", "common/shared_blocks.comp"});
+    ASSERT_EQ(result.status, 0) << result.output;
+    const std::string text = read_text(out);
+    EXPECT_NE(text.find("#include <shader_structs/common/shared_blocks.comp.hpp>"), std::string::npos) << text;
+    for (const char* name : {"CausticLightSpace", "CausticPhotonSource", "SunShadowSpace", "ShadowProjection"}) {
+        EXPECT_NE(text.find(std::string("using ") + name + " = ::vkw::glsl::shared_blocks_comp::" + name + ";"),
+                  std::string::npos)
+            << name;
+        EXPECT_EQ(text.find(std::string("struct ") + name + " {"), std::string::npos) << name;
+    }
+    EXPECT_NE(text.find("struct Push {"), std::string::npos);
+    fs::remove(out);
 }
 
 }  // namespace

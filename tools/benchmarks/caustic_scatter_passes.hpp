@@ -8,6 +8,8 @@
 #include "engine/framegraph/frame_graph.hpp"
 #include "passes/caustics/caustics_light_space.hpp"
 
+#include <shader_structs/caustics/bench/caustic_scatter_fixed.comp.hpp>
+
 #include <string>
 
 namespace vkwbench {
@@ -18,12 +20,10 @@ enum class ScatterKind {
     FloatCas32,        // float adds by an atomicCompSwap loop on uint32 bits, three floats per texel
 };
 
-// Mirrors the push constants of shaders/caustics/bench/caustic_scatter.glsl.
-struct ScatterPush {
-    uint32_t resolution;          // R photons per side
-    uint32_t width, height;       // the map's texels
-    uint32_t margin_x, margin_y;  // texels the fit added on each side for the waves' shift
-};
+// The push constants of shaders/caustics/bench/caustic_scatter.glsl, generated from one of the
+// kernels that include it (every kernel's is the same block): R photons per side, the map's
+// texels, and the texels the fit added on each side for the waves' shift.
+using ScatterPush = vkw::glsl::caustic_scatter_fixed_comp::Push;
 inline constexpr uint32_t kScatterGroupSide = 8;  // local_size of caustic_scatter.glsl
 
 // The kernels' constants for `resolution`^2 photons into the photon pass's map of `frame` (one
