@@ -1,9 +1,9 @@
 // add_caustic_blur_pass (caustics_blur.hpp).
 #include "passes/caustics/caustics_blur.hpp"
 
-#include "engine/framegraph/pass_context.hpp"
 #include "engine/scene/effects.hpp"
 #include "passes/caustics/caustics_map_frame.hpp"
+#include "passes/common/image_compute_pass.hpp"
 
 #include <shader_structs/caustics/caustic_blur.comp.hpp>
 
@@ -27,31 +27,18 @@ CausticMap add_caustic_blur_pass(fg::FrameGraph& graph, const CausticMap& map, c
 
     fg::ImageHandle image = map.irradiance;
     for (const bool first : {true, false}) {
-        struct Data {
-            fg::ImageHandle target;
-        };
         const BlurPush push{{int32_t(frame.width), int32_t(frame.height)},
                             {first ? 1 : 0, first ? 0 : 1},
                             float(radius),
                             float(flat_sum),
                             first ? 1u : 0u,
                             0.0f};
-        const char* name = first ? "caustic blur x" : "caustic blur y";
-        const auto& data = graph.add_pass<Data>(
-            name, fg::PassKind::Compute,
-            [&](fg::PassBuilder& builder, Data& d) {
-                builder.serves(Effect::CausticBlur);
-                builder.read_storage("source", image);
-                d.target = builder.write_storage("target", builder.create_image(std::string(name) + " target", info));
-            },
-            [push](const Data& d, fg::PassContext& context) {
-                const Pipeline& pipeline =
-                    context.pipeline("caustic blur", ComputePipelineDesc{"caustics/caustic_blur.comp"});
-                context.bind(pipeline);
-                context.push_constants(pipeline, push);
-                context.dispatch(pipeline, d.target);
-            });
-        image = data.target;
+        const std::string name = first ? "caustic blur x" : "caustic blur y";
+        image = add_image_compute_pass(graph, {name, name + " target", info}, push, [&](fg::PassBuilder& builder) {
+            builder.serves(Effect::CausticBlur);
+            builder.read_storage("source", image);
+            return "caustics/caustic_blur.comp";
+        });
     }
     return {image, map.frame};
 }

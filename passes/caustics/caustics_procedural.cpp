@@ -1,8 +1,8 @@
 // add_caustic_procedural_pass (caustics_procedural.hpp).
 #include "passes/caustics/caustics_procedural.hpp"
 
-#include "engine/framegraph/pass_context.hpp"
 #include "passes/caustics/caustics_map_frame.hpp"
+#include "passes/common/image_compute_pass.hpp"
 
 #include <shader_structs/caustics/caustic_procedural.comp.hpp>
 
@@ -33,24 +33,12 @@ CausticMap add_caustic_procedural_pass(fg::FrameGraph& graph, const CausticInput
     push.height = frame.height;
     const fg::BufferHandle frame_buffer = add_caustic_map_frame_pass(graph, inputs);
 
-    struct Data {
-        fg::ImageHandle irradiance;
-    };
-    const auto& data = graph.add_pass<Data>(
-        "caustic procedural", fg::PassKind::Compute,
-        [&](fg::PassBuilder& builder, Data& d) {
-            builder.read_storage("Surface", inputs.surface);
-            d.irradiance = builder.write_storage("irradiance",
-                                                 builder.create_image("caustic irradiance", caustic_map_image(frame)));
-        },
-        [push](const Data& d, fg::PassContext& context) {
-            const Pipeline& pipeline =
-                context.pipeline("caustic procedural", ComputePipelineDesc{"caustics/caustic_procedural.comp"});
-            context.bind(pipeline);
-            context.push_constants(pipeline, push);
-            context.dispatch(pipeline, d.irradiance);
-        });
-    return {data.irradiance, frame_buffer};
+    const ImageComputePass pass{"caustic procedural", "caustic irradiance", caustic_map_image(frame), "irradiance"};
+    const fg::ImageHandle irradiance = add_image_compute_pass(graph, pass, push, [&](fg::PassBuilder& builder) {
+        builder.read_storage("Surface", inputs.surface);
+        return "caustics/caustic_procedural.comp";
+    });
+    return {irradiance, frame_buffer};
 }
 
 }  // namespace vkw::passes

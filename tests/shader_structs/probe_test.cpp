@@ -242,10 +242,11 @@ struct ToolRun {
 };
 
 // `shared`: the --shared arguments (SPV, under the shader directory, and its shader), if any.
-ToolRun run_tool(const std::string& spv, const fs::path& out, const std::string& shader,
+// `spvs`: the shader's compiled variants, under the shader directory.
+ToolRun run_tool(const std::vector<std::string>& spvs, const fs::path& out, const std::string& shader,
                  const std::pair<std::string, std::string>& shared = {}) {
-    std::string command = std::string("'") + VKWATER_SHADER_STRUCTS_TOOL + "' '" + VKWATER_TEST_SHADER_DIR + "/" + spv +
-                          "' '" + out.string() + "' " + shader;
+    std::string command = std::string("'") + VKWATER_SHADER_STRUCTS_TOOL + "' '" + out.string() + "' " + shader;
+    for (const std::string& spv : spvs) command += std::string(" '") + VKWATER_TEST_SHADER_DIR + "/" + spv + "'";
     if (!shared.first.empty()) {
         command += std::string(" --shared '") + VKWATER_TEST_SHADER_DIR + "/" + shared.first + "' " + shared.second;
     }
@@ -270,7 +271,8 @@ TEST(ShaderStructs, GeneratorIsDeterministic) {
     for (int run = 0; run < 2; ++run) {
         const fs::path out = fs::path(testing::TempDir()) / ("shader_structs_probe_" + std::to_string(run) + ".hpp");
         fs::remove(out);
-        const ToolRun result = run_tool("tests/shader_structs_probe.comp.spv", out, "tests/shader_structs_probe.comp");
+        const ToolRun result =
+            run_tool({"tests/shader_structs_probe.comp.spv"}, out, "tests/shader_structs_probe.comp");
         ASSERT_EQ(result.status, 0) << result.output;
         EXPECT_EQ(read_text(out), expected) << "run " << run;
         fs::remove(out);
@@ -290,7 +292,8 @@ TEST(ShaderStructs, GeneratorIsDeterministic) {
 TEST(ShaderStructs, GeneratorRefusesALayoutGlmCannotMirror) {
     const fs::path out = fs::path(testing::TempDir()) / "shader_structs_refused.hpp";
     fs::remove(out);
-    const ToolRun result = run_tool("tests/shader_structs_refused.comp.spv", out, "tests/shader_structs_refused.comp");
+    const ToolRun result =
+        run_tool({"tests/shader_structs_refused.comp.spv"}, out, "tests/shader_structs_refused.comp");
     EXPECT_EQ(result.status, 1) << result.output;
     EXPECT_NE(result.output.find("shader 'tests/shader_structs_refused.comp', block 'Refused', member 'basis': mat3 "
                                  "with a column stride of 16 bytes"),
@@ -306,7 +309,7 @@ TEST(ShaderStructs, GeneratorRefusesASharedNameWithAnotherLayout) {
     const fs::path out = fs::path(testing::TempDir()) / "shader_structs_probe_shared.hpp";
     fs::remove(out);
     const ToolRun result =
-        run_tool("tests/shader_structs_probe.comp.spv", out, "tests/shader_structs_probe.comp",
+        run_tool({"tests/shader_structs_probe.comp.spv"}, out, "tests/shader_structs_probe.comp",
                  {"caustics/caustic_photons.comp.bilinear_shadow.spv", "caustics/caustic_photons.comp"});
     EXPECT_EQ(result.status, 1) << result.output;
     EXPECT_NE(result.output.find("struct 'Push' is laid out differently here than in shaders/caustics/"
@@ -324,7 +327,7 @@ TEST(ShaderStructs, GeneratorAliasesTheSharedStructs) {
     const fs::path out = fs::path(testing::TempDir()) / "shader_structs_splats_shared.hpp";
     fs::remove(out);
     const ToolRun result =
-        run_tool("caustics/caustic_camera_splats.comp.shadow.spv", out, "caustics/caustic_camera_splats.comp",
+        run_tool({"caustics/caustic_camera_splats.comp.shadow.spv"}, out, "caustics/caustic_camera_splats.comp",
                  {"common/shared_blocks.comp.spv", "common/shared_blocks.comp"});
     ASSERT_EQ(result.status, 0) << result.output;
     const std::string text = read_text(out);
@@ -336,6 +339,38 @@ TEST(ShaderStructs, GeneratorAliasesTheSharedStructs) {
         EXPECT_EQ(text.find(std::string("struct ") + name + " {"), std::string::npos) << name;
     }
     EXPECT_NE(text.find("struct Push {"), std::string::npos);
+    fs::remove(out);
+}
+
+// A shader's header holds the blocks of all the variants it is given: the photon kernel's plain
+// variant declares no sun shadow block, its shadow variant does, and the two together give both
+// the push block and the shadow's. A file that is no variant of the shader is refused.
+TEST(ShaderStructs, GeneratorTakesTheUnionOfTheVariants) {
+    const fs::path out = fs::path(testing::TempDir()) / "shader_structs_photons.hpp";
+    const std::string shader = "caustics/caustic_photons.comp";
+    const auto has = [](const std::string& text, const std::string& what) {
+        return text.find(what) != std::string::npos;
+    };
+    fs::remove(out);
+    ToolRun result = run_tool({"caustics/caustic_photons.comp.bilinear.spv"}, out, shader);
+    ASSERT_EQ(result.status, 0) << result.output;
+    std::string text = read_text(out);
+    EXPECT_TRUE(has(text, "struct Push {"));
+    EXPECT_FALSE(has(text, "SunShadowSpace"));
+
+    result =
+        run_tool({"caustics/caustic_photons.comp.bilinear.spv", "caustics/caustic_photons.comp.bilinear_shadow.spv"},
+                 out, shader);
+    ASSERT_EQ(result.status, 0) << result.output;
+    text = read_text(out);
+    EXPECT_TRUE(has(text, "struct Push {"));
+    EXPECT_TRUE(has(text, "struct SunShadowSpace {"));
+    EXPECT_TRUE(has(text, "// The union of the blocks of its variants: bilinear bilinear_shadow."));
+
+    result = run_tool({"godrays/godray_blur.comp.spv"}, out, shader);
+    EXPECT_EQ(result.status, 1) << result.output;
+    EXPECT_TRUE(has(result.output, "godray_blur.comp.spv is no compiled variant of caustics/caustic_photons.comp"))
+        << result.output;
     fs::remove(out);
 }
 
