@@ -19,6 +19,8 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <set>
 #include <span>
 #include <string>
@@ -27,6 +29,7 @@
 #include "engine/core/errors.hpp"
 #include "engine/core/message_text.hpp"
 #include "engine/image/checked_write.hpp"
+#include "engine/image/exr_header_scan.hpp"
 #include "engine/image/file_paths.hpp"
 
 namespace vkw {
@@ -227,6 +230,15 @@ ImageRGBA32F read_exr(const std::filesystem::path& path) {
     // Checking the magic number first gives "not an OpenEXR file" instead of a library message.
     if (!Imf::isOpenExrFile(path.c_str())) {
         throw UserError("cannot read " + quoted_path(path) + ": not an OpenEXR file");
+    }
+    // OpenEXR allocates what each header attribute declares before reading it: the sizes are
+    // checked against the file first (exr_header_scan.hpp).
+    {
+        std::ifstream in(path, std::ios::binary);
+        in.seekg(4);
+        if (const auto problem = exr_header_problem(in, std::filesystem::file_size(path))) {
+            throw UserError("cannot read " + quoted_path(path) + ": a corrupt OpenEXR header (" + *problem + ")");
+        }
     }
     // OpenEXR's own validator reads every part of the file with bounded memory and time; the
     // library's readers trust what a header declares, so a corrupt file is refused here first.

@@ -431,6 +431,11 @@ def exr_cases():
     for label, window in {"window-huge": (0, 0, 19999, 19999), "window-inverted": (10, 10, 0, 0),
                           "window-extreme": (-2**31, -2**31, 2**31 - 1, 2**31 - 1)}.items():
         add_exr(label, valid[:i] + struct.pack("<iiii", *window) + valid[i + 16:], "")
+    # A header attribute that declares far more bytes than the file holds: refused before OpenEXR
+    # allocates them (engine/image/exr_header_scan.hpp).
+    j = valid.find(b"screenWindowWidth\0float\0") + len(b"screenWindowWidth\0float\0")
+    add_exr("attribute-huge", valid[:j] + struct.pack("<i", 2000000000) + valid[j + 4:],
+            r"a corrupt OpenEXR header \(attribute 'screenWindowWidth' \(at byte \d+\) declares 2000000000 bytes")
     flipped = bytearray(valid)
     for k in range(len(flipped) // 2, len(flipped), 97):
         flipped[k] ^= 0x5A
