@@ -233,7 +233,7 @@ TEST(cli, PassesEstimatesTheFrameOnACpuDevice) {
         << defaults.output;
 }
 
-// Both renderers' EXR files say how they were made (README "What an EXR file records"):
+// Both renderers' EXR files say how they were made (docs/cli.md, "What an EXR file records"):
 // the software, the scene file and its hash, the camera, the overrides, the renderer, the pixel
 // filter, the device and the time.
 TEST(cli, ExrFilesRecordHowTheyWereMade) {

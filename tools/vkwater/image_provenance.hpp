@@ -1,5 +1,5 @@
 // What an image a command writes says about how it was made: the EXR header's string attributes
-// (README "What an EXR file records"). The pixels never depend on them; bit-identity and
+// (docs/cli.md, "What an EXR file records"). The pixels never depend on them; bit-identity and
 // every hash in the project are over pixel data.
 #pragma once
 
