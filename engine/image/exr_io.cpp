@@ -12,7 +12,7 @@
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStdIO.h>
 #include <OpenEXR/ImfStringAttribute.h>
-#include <OpenEXR/ImfTestFile.h>
+#include <OpenEXR/ImfVersion.h>
 
 #include <algorithm>
 #include <array>
@@ -227,15 +227,15 @@ ImageRGBA32F read_pixels(const std::filesystem::path& path, Imf::InputFile& file
 
 ImageRGBA32F read_exr(const std::filesystem::path& path) {
     require_readable_file_path(path);
-    // Checking the magic number first gives "not an OpenEXR file" instead of a library message.
-    if (!Imf::isOpenExrFile(path.c_str())) {
-        throw UserError("cannot read " + quoted_path(path) + ": not an OpenEXR file");
-    }
-    // OpenEXR allocates what each header attribute declares before reading it: the sizes are
-    // checked against the file first (exr_header_scan.hpp).
     {
         std::ifstream in(path, std::ios::binary);
-        in.seekg(4);
+        // Checking the magic number first gives "not an OpenEXR file" instead of a library message.
+        char magic[4] = {};
+        if (!in.read(magic, 4) || !Imf::isImfMagic(magic)) {
+            throw UserError("cannot read " + quoted_path(path) + ": not an OpenEXR file");
+        }
+        // OpenEXR allocates what each header attribute declares before reading it: the sizes are
+        // checked against the file first (exr_header_scan.hpp).
         if (const auto problem = exr_header_problem(in, std::filesystem::file_size(path))) {
             throw UserError("cannot read " + quoted_path(path) + ": a corrupt OpenEXR header (" + *problem + ")");
         }

@@ -546,10 +546,10 @@ struct Context {
     Context& operator=(const Context&) = delete;
 };
 
-// SPV parsed into a SPIRV-Cross compiler owned by `context`; `label` names it in errors.
-spvc_compiler parse_shader(Context& context, const std::string& spv, const std::string& label,
-                           std::vector<uint32_t>& words) {
-    words = read_words(spv);
+// SPV parsed into a SPIRV-Cross compiler owned by `context` (the parsed IR keeps its own copy of
+// the words); `label` names it in errors.
+spvc_compiler parse_shader(Context& context, const std::string& spv, const std::string& label) {
+    const std::vector<uint32_t> words = read_words(spv);
     spvc_parsed_ir ir = nullptr;
     spvc_compiler compiler = nullptr;
     if (spvc_context_parse_spirv(context.handle, words.data(), words.size(), &ir) != SPVC_SUCCESS ||
@@ -597,18 +597,17 @@ int main(int argc, char** argv) {
     const std::string out = positional[0], shader = positional[1];
     try {
         Context context;
-        std::vector<std::vector<uint32_t>> words(positional.size());
         std::optional<SharedStructs> shared;
         if (!shared_spv.empty()) {
             Generator shared_generator(shared_shader, namespace_of(shared_shader));
-            shared_generator.run(parse_shader(context, shared_spv, shared_shader, words[0]), "");
+            shared_generator.run(parse_shader(context, shared_spv, shared_shader), "");
             shared = SharedStructs{shared_shader, namespace_of(shared_shader), shared_generator.structs()};
         }
         Generator generator(shader, namespace_of(shader), shared ? &*shared : nullptr);
         for (size_t i = 2; i < positional.size(); ++i) {
             const std::string variant = variant_of(positional[i], shader);
             const std::string label = shader + (variant.empty() ? "" : " (variant " + variant + ")");
-            generator.run(parse_shader(context, positional[i], label, words[i]), variant);
+            generator.run(parse_shader(context, positional[i], label), variant);
         }
         write_if_changed(out, generator.header());
     } catch (const std::exception& e) {
