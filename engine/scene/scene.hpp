@@ -90,12 +90,18 @@ struct Water {
     // Surface grid cells per side, in [2, 4096]. The device's own limits (buffer sizes,
     // dispatch counts) are checked by the renderer, not here.
     uint32_t grid_resolution = 256;
-    // Cells per side of the mesh the water is drawn with, in [2, 4096]: each pixel then finds
-    // the exact surface from the mesh's point (docs/water_surface.md), so
-    // the mesh need not be as fine as the photon grid. nullopt: the smaller of
-    // kDefaultWaterMeshResolution and grid_resolution.
+    // The water is drawn from a mesh, and each pixel then finds the exact surface from the
+    // mesh's point (docs/water_surface.md), so the mesh need not be as fine as the photon grid.
+    // By default a uniform mesh over the square (mesh_resolution cells per side, in [2, 4096]);
+    // with mesh_cell_pixels (in [1, 64]) a grid that follows the screen instead, with cells
+    // about that many pixels wide wherever they are seen. A scene gives at most one.
     std::optional<uint32_t> mesh_resolution;
+    std::optional<uint32_t> mesh_cell_pixels;
+    // The uniform mesh's cells per side: mesh_resolution, or the smaller of
+    // kDefaultWaterMeshResolution and grid_resolution.
     uint32_t drawn_mesh_resolution() const;
+    // The screen mesh's cell width in pixels; 0 when the uniform mesh is drawn.
+    uint32_t screen_mesh_cell_pixels() const;
     double time = 0.0;            // seconds at which the waves are evaluated
     std::optional<double> depth;  // metres below level, > 0; nullopt: down to the floor
     WaveSettings waves;           // the file's water.seed is waves.seed

@@ -17,6 +17,13 @@ Water read_water(FieldReader& fields) {
     if (const auto mesh = fields.optional_integer("mesh_resolution", Range::closed(2.0, 4096.0, "cells per side"))) {
         water.mesh_resolution = static_cast<uint32_t>(*mesh);
     }
+    if (const auto cell = fields.optional_integer("mesh_cell_pixels", Range::closed(1.0, 64.0, "pixels"))) {
+        if (water.mesh_resolution) {
+            fields.fail("", "both mesh_resolution and mesh_cell_pixels are given",
+                        "at most one of mesh_resolution (a uniform mesh), mesh_cell_pixels (the screen's)");
+        }
+        water.mesh_cell_pixels = static_cast<uint32_t>(*cell);
+    }
     water.time = fields.number("time", Range::any("s"), defaults.time);
     water.depth = fields.optional_number("depth", Range::positive_length());
     const auto seed =

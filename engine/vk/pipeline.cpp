@@ -83,27 +83,27 @@ Pipeline::Pipeline(const Context& context, const GraphicsPipelineDesc& desc, con
     // Before the layout, as in the compute constructor: nothing is left to leak on a throw.
     create_layout(context, checked_or_derived_layout(name, desc.layout, reflected), name);
 
+    // Both stages get every constant: constant_id i means the same in each, and a stage that
+    // declares no constant i ignores its entry.
+    std::vector<VkSpecializationMapEntry> constant_entries;
+    for (uint32_t id = 0; id < desc.specialization_constants.size(); ++id) {
+        constant_entries.push_back({id, id * uint32_t(sizeof(uint32_t)), sizeof(uint32_t)});
+    }
+    VkSpecializationInfo specialization{};
+    specialization.mapEntryCount = static_cast<uint32_t>(constant_entries.size());
+    specialization.pMapEntries = constant_entries.data();
+    specialization.dataSize = desc.specialization_constants.size() * sizeof(uint32_t);
+    specialization.pData = desc.specialization_constants.data();
     std::vector<VkPipelineShaderStageCreateInfo> stages;
     VkPipelineShaderStageCreateInfo stage{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     stage.stage = VK_SHADER_STAGE_VERTEX_BIT;
     stage.module = vertex.handle();
     stage.pName = "main";
+    if (!constant_entries.empty()) stage.pSpecializationInfo = &specialization;
     stages.push_back(stage);
-    std::vector<VkSpecializationMapEntry> constant_entries;
-    VkSpecializationInfo specialization{};
     if (fragment) {
         stage.stage = VK_SHADER_STAGE_FRAGMENT_BIT;
         stage.module = fragment->handle();
-        if (!desc.fragment_constants.empty()) {
-            for (uint32_t id = 0; id < desc.fragment_constants.size(); ++id) {
-                constant_entries.push_back({id, id * uint32_t(sizeof(uint32_t)), sizeof(uint32_t)});
-            }
-            specialization.mapEntryCount = static_cast<uint32_t>(constant_entries.size());
-            specialization.pMapEntries = constant_entries.data();
-            specialization.dataSize = desc.fragment_constants.size() * sizeof(uint32_t);
-            specialization.pData = desc.fragment_constants.data();
-            stage.pSpecializationInfo = &specialization;
-        }
         stages.push_back(stage);
     }
 

@@ -26,10 +26,10 @@ struct PipelineLayoutDesc {
 struct GraphicsPipelineDesc {
     std::string vertex_shader;    // name under shaders/ without .spv
     std::string fragment_shader;  // empty: no fragment stage (depth/stencil-only passes)
-    // The fragment stage's specialization constants: value i for constant_id i. Code a
+    // The specialization constants of both stages: value i for constant_id i. Code a
     // constant turns off is compiled out (llvmpipe runs both sides of a branch that a push
     // constant decides, masked, so this is how a variant's unused paths cost nothing).
-    std::vector<uint32_t> fragment_constants;
+    std::vector<uint32_t> specialization_constants;
     PipelineLayoutDesc layout;
     std::vector<VkVertexInputBindingDescription> vertex_bindings;
     std::vector<VkVertexInputAttributeDescription> vertex_attributes;

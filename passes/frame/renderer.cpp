@@ -28,6 +28,7 @@
 #include "passes/sky/sky.hpp"
 #include "passes/water/camera_medium.hpp"
 #include "passes/water/scene_optics.hpp"
+#include "passes/water/water_screen_mesh.hpp"
 #include "passes/water/water_shading.hpp"
 #include "passes/water/water_surface.hpp"
 #include "passes/water/water_surface_spectrum.hpp"
@@ -181,7 +182,9 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
         const Water& water = *scene.water;
         passes::WaterSurfaceInputs inputs{water.level, water.half_extent, water.grid_resolution,
                                           water.time,  water.waves,       ocean};
-        water_buffers = passes::add_water_surface_passes(graph, inputs, water.drawn_mesh_resolution());
+        const passes::ScreenMesh screen = passes::screen_mesh(water.screen_mesh_cell_pixels(), scene.camera,
+                                                              double(width) / double(height), water.level, amplitude);
+        water_buffers = passes::add_water_surface_passes(graph, inputs, water.drawn_mesh_resolution(), screen);
         surface = water_buffers->grid;
         // Without it (culled: no ray can start in the water) the shading falls back to the
         // per-frame camera medium of the frame constants.

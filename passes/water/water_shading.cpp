@@ -74,7 +74,7 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
                                                                                      fg::PassContext& context) {
             const bool views = d.reflection_view || d.refraction_view;
             GraphicsPipelineDesc desc;
-            desc.vertex_shader = "water/water_surface.vert";
+            desc.vertex_shader = d.surface.vertex_shader();
             desc.fragment_shader = d.lighting.shader("water/water_surface.frag")
                                        .define("VKWATER_SCENE_VIEWS", views)
                                        .define("VKWATER_CAUSTIC_LAYER", d.layer.written())
@@ -91,8 +91,8 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
             // Constant 5, the camera's side: 0 the air, 1 the water, 2 per pixel (the mask); 6, the glitter.
             const uint32_t side = d.lighting.camera_medium ? 2u : shading.eye_in_water ? 1u : 0u;
             const uint32_t glitter = shading.glitter;
-            desc.fragment_constants.insert(desc.fragment_constants.end(),
-                                           {fresnel, depth_blend, reflection, refraction, side, glitter});
+            desc.specialization_constants.insert(desc.specialization_constants.end(),
+                                                 {fresnel, depth_blend, reflection, refraction, side, glitter});
             key += "/fresnel " + std::to_string(fresnel) + "/blend " + std::to_string(depth_blend) + "/lookups " +
                    std::to_string(reflection) + std::to_string(refraction) + "/side " + std::to_string(side) +
                    "/glitter " + std::to_string(glitter);
@@ -119,8 +119,7 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
             push.water_colour[0] = shading.water_colour.r;
             push.water_colour[1] = shading.water_colour.g;
             push.water_colour[2] = shading.water_colour.b;
-            context.push_constants(pipeline, push);
-            d.surface.draw(context);
+            d.surface.draw(context, pipeline, push);
         });
     graph.blackboard().put(keys::kHdrColor, data.hdr);
     graph.blackboard().put(keys::kSceneDepth, data.depth);

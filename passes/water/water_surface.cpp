@@ -42,15 +42,9 @@ void check_ocean(const WaterSurfaceInputs& inputs) {
     }
 }
 
-}  // namespace
-
-VkDeviceSize water_surface_bytes(uint32_t grid_resolution) {
-    const VkDeviceSize row = VkDeviceSize{grid_resolution} + 1;
-    return row * row * kWaterVertexBytes;
-}
-
-WaterSurfaceBuffers add_water_surface_passes(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs,
-                                             uint32_t mesh_resolution) {
+// The model's passes, and the uniform mesh where mesh_resolution differs from the grid's.
+WaterSurfaceBuffers add_model_passes(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs,
+                                     uint32_t mesh_resolution) {
     check_grid(inputs);
     WaterSurfaceInputs mesh = inputs;
     mesh.grid_resolution = mesh_resolution;
@@ -68,6 +62,21 @@ WaterSurfaceBuffers add_water_surface_passes(fg::FrameGraph& graph, const WaterS
         case WaveModel::FftOcean: check_ocean(inputs); return add_ocean_passes(graph, inputs, mesh_resolution);
     }
     throw InternalError("add_water_surface_pass: unknown wave model");
+}
+
+}  // namespace
+
+VkDeviceSize water_surface_bytes(uint32_t grid_resolution) {
+    const VkDeviceSize row = VkDeviceSize{grid_resolution} + 1;
+    return row * row * kWaterVertexBytes;
+}
+
+WaterSurfaceBuffers add_water_surface_passes(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs,
+                                             uint32_t mesh_resolution, const ScreenMesh& screen) {
+    WaterSurfaceBuffers out =
+        add_model_passes(graph, inputs, screen.cell_pixels > 0 ? inputs.grid_resolution : mesh_resolution);
+    out.screen = screen;
+    return out;
 }
 
 fg::BufferHandle add_water_surface_pass(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs) {

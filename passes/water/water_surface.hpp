@@ -53,16 +53,33 @@ struct WaterSurfaceModel {
     uint32_t ocean_n = 0;          // the ocean's nodes per side
     float nodes_per_metre = 0.0f;  // n / patch_size
     float level = 0.0f, half_extent = 0.0f;
-    float mesh_sag = 0.0f;  // m: a bound on the drawn mesh's distance from the surface
+    // 1/m: a bound on a flat cell's distance from the surface over the cell's diagonal squared,
+    // |d^2 P / du^2| / 8 (per unit of parameter squared).
+    float sag_per_diagonal_squared = 0.0f;
+    float mesh_sag = 0.0f;  // m: that bound for a cell of the uniform mesh
+    // m: the horizontal run of the per-pixel march that brackets the first crossing where the
+    // mesh is coarse: a quarter of the shortest wavelength (the ocean: its node spacing).
+    float march_step = 0.0f;
+};
+
+// The water drawn from a grid that follows the screen (shaders/water/water_surface_screen.vert)
+// instead of the uniform mesh: cells about `cell_pixels` wide wherever they are seen, reaching
+// `margin` (NDC) past each edge of the viewport, so that the waves' displacement cannot pull
+// the mesh's edge into view (water_screen_mesh.hpp computes it). cell_pixels = 0: the uniform mesh.
+struct ScreenMesh {
+    uint32_t cell_pixels = 0;
+    float margin = 0.0f;
+    float amplitude = 0.0f;  // m: a bound on |surface height - level|
 };
 
 // What the surface's passes leave for their readers.
 struct WaterSurfaceBuffers {
     fg::BufferHandle grid;  // the (R + 1)^2 vertices: the photons, the godrays and the stencil split
     // The (M + 1)^2 vertices of the mesh the water is drawn with (M = mesh_resolution); the grid
-    // itself when M = R.
+    // itself when M = R or the water is drawn from the screen's grid (`screen`).
     fg::BufferHandle mesh;
     uint32_t mesh_resolution = 0;
+    ScreenMesh screen;
     // The sum's wave table (a uniform buffer of kMaxGpuWaves waves), for the ocean an empty one:
     // the refinement's shader declares both models' bindings.
     fg::BufferHandle waves;
@@ -71,9 +88,10 @@ struct WaterSurfaceBuffers {
 };
 
 // Adds the passes: the grid at R = inputs.grid_resolution, and the drawn mesh at
-// `mesh_resolution` cells per side (1..16384) from the same waves or fields.
+// `mesh_resolution` cells per side (1..16384) from the same waves or fields; with
+// screen.cell_pixels > 0 no mesh (the screen's grid needs none, mesh_resolution is unused).
 WaterSurfaceBuffers add_water_surface_passes(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs,
-                                             uint32_t mesh_resolution);
+                                             uint32_t mesh_resolution, const ScreenMesh& screen = {});
 
 // Adds the passes and returns the vertex buffer (written by a compute pass; declare the
 // reader's use, e.g. read_storage with the vertex stage, on the returned handle).

@@ -94,11 +94,14 @@ fg::BufferHandle add_water_grid_pass(fg::FrameGraph& graph, const WaterGridKerne
 }
 
 // How far a mesh cell's flat triangles may lie from the surface they interpolate: h^2 / 8 times
-// the bound on |d^2 P / du^2| (per unit of parameter squared), h the cell's diagonal, for the
-// mesh of `mesh_resolution` cells over [-E, E]^2.
-inline float water_mesh_sag(double half_extent, uint32_t mesh_resolution, double second_derivative_bound) {
+// the bound on |d^2 P / du^2| (per unit of parameter squared), h the cell's diagonal. Sets the
+// model's bound per diagonal squared (any cell: the screen's grid) and the bound for a cell of the
+// uniform mesh of `mesh_resolution` cells over [-E, E]^2.
+inline void set_water_mesh_sag(WaterSurfaceModel& model, double half_extent, uint32_t mesh_resolution,
+                               double second_derivative_bound) {
     const double cell = 2.0 * half_extent / mesh_resolution;
-    return static_cast<float>(2.0 * cell * cell / 8.0 * second_derivative_bound);
+    model.sag_per_diagonal_squared = static_cast<float>(second_derivative_bound / 8.0);
+    model.mesh_sag = static_cast<float>(2.0 * cell * cell / 8.0 * second_derivative_bound);
 }
 
 // The grid kernel's pass at R = push.grid.resolution into out.grid and, where mesh_resolution

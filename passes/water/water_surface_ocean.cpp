@@ -69,12 +69,13 @@ WaterSurfaceBuffers add_ocean_passes(fg::FrameGraph& graph, const WaterSurfaceIn
     out.model.ocean = true;
     out.model.ocean_n = push.n;
     out.model.nodes_per_metre = push.nodes_per_metre;
+    out.model.march_step = 1.0f / push.nodes_per_metre;
     // As the sum's (water_surface_sum.cpp), with 4 times the spectrum's RMS second derivative: a
     // random surface has no useful bound that holds everywhere (the one that does is 100 times the
     // mesh's real sag on the built-in ocean), and where a crest exceeds this the pixel keeps the
     // mesh's point or Newton's crossing, both within the real sag.
-    out.model.mesh_sag = water_mesh_sag(inputs.half_extent, mesh_resolution,
-                                        4.0 * (1.0 + inputs.waves.ocean.choppiness) * inputs.ocean->curvature_rms());
+    set_water_mesh_sag(out.model, inputs.half_extent, mesh_resolution,
+                       4.0 * (1.0 + inputs.waves.ocean.choppiness) * inputs.ocean->curvature_rms());
     return out;
 }
 

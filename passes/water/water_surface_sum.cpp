@@ -9,6 +9,7 @@
 
 #include <shader_structs/water/wave_sum.comp.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -71,12 +72,14 @@ WaterSurfaceBuffers add_wave_sum_passes(fg::FrameGraph& graph, const WaterSurfac
                                    "water mesh (wave sum)", out.waves, push, mesh_resolution, out);
     out.model.wave_count = push.wave_count;
     // sum (A k + s) k bounds |d^2 P / du^2| of the waves.
-    double curvature = 0.0;
+    double curvature = 0.0, shortest = 0.0;
     for (const WaveComponent& w : waves) {
+        shortest = shortest > 0.0 ? std::min(shortest, w.wavelength) : w.wavelength;
         const double k = 2.0 * std::numbers::pi / w.wavelength;
         curvature += (w.amplitude * k + w.steepness) * k;
     }
-    out.model.mesh_sag = water_mesh_sag(inputs.half_extent, mesh_resolution, curvature);
+    set_water_mesh_sag(out.model, inputs.half_extent, mesh_resolution, curvature);
+    out.model.march_step = static_cast<float>(shortest / 4.0);
     return out;
 }
 

@@ -9,11 +9,15 @@
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec2 in_parameter;
+layout(location = 3) in float in_mesh_sag;  // m: the drawn cell's distance from the surface, at most
 layout(location = 0) out vec4 out_point;
 
 void main() {
     vec3 p, normal;
+    bool outside;
     const bool refined = water_surface_of_pixel(frame.camera_position.xyz, camera_ray_direction(gl_FragCoord.xy),
-                                                in_position, in_normal, in_parameter, p, normal);
+                                                in_position, in_normal, in_parameter, in_mesh_sag, p, normal,
+                                                outside);
+    if (outside) discard;
     out_point = vec4(p, refined ? 1.0 : 0.5);
 }

@@ -66,22 +66,85 @@ bool refine_water_hit(vec3 eye, vec3 d, float t_min, float t_max, inout float t,
     return true;
 }
 
+// The march's longest run: beyond it the steps grow (a ray that skims the surface for many
+// wavelengths, near the horizon).
+const uint REFINEMENT_MAX_MARCH_STEPS = 64u;
+
+// Halvings of the march's bracket before Newton takes over: a step of a quarter wavelength
+// becomes 1/64 of one, close enough for Newton at grazing angles, where the Jacobian is nearly
+// singular and a step's worth of start can send it to another crossing.
+const uint REFINEMENT_BISECTIONS = 4u;
+
+// Whether eye + s d lies above the surface: its height over P(x) at x = (eye + s d).xz less the
+// horizontal displacement `shift` (exact for heightfields, close for Gerstner waves and the choppy
+// ocean, whose displacement changes little over a step), which it updates to the one at x.
+bool ray_point_above(vec3 eye, vec3 d, float s, inout vec2 shift, out vec2 x) {
+    const vec3 q = eye + s * d;
+    x = q.xz - shift;
+    vec3 p, dP_du, dP_dv;
+    water_surface_at(x, p, dP_du, dP_dv);
+    shift = p.xz - x;
+    return q.y > p.y;
+}
+
+// The first crossing of the ray with the surface in [t_lo, t_hi], bracketed by a march of
+// `steps` equal steps and then halved REFINEMENT_BISECTIONS times. True with the bracket's ends:
+// t_front before the crossing (and its parameter x_front), t_after past it.
+bool bracket_first_crossing(vec3 eye, vec3 d, float t_lo, float t_hi, uint steps, out float t_front,
+                            out vec2 x_front, out float t_after) {
+    const float dt = (t_hi - t_lo) / float(steps);
+    vec2 shift = vec2(0.0), x;
+    ray_point_above(eye, d, t_lo, shift, x);  // the displacement at the start, for the first step
+    const bool start_above = ray_point_above(eye, d, t_lo, shift, x);
+    t_front = t_lo;
+    x_front = x;
+    t_after = t_hi;
+    bool found = false;
+    for (uint i = 1u; i <= steps && !found; ++i) {
+        const float s = t_lo + float(i) * dt;
+        if (ray_point_above(eye, d, s, shift, x) != start_above) {
+            t_after = s;
+            found = true;
+        } else {
+            t_front = s;
+            x_front = x;
+        }
+    }
+    if (!found) return false;
+    for (uint i = 0u; i < REFINEMENT_BISECTIONS; ++i) {
+        const float middle = 0.5 * (t_front + t_after);
+        if (ray_point_above(eye, d, middle, shift, x) == start_above) {
+            t_front = middle;
+            x_front = x;
+        } else {
+            t_after = middle;
+        }
+    }
+    return true;
+}
+
 // The surface point a pixel of the drawn mesh shows: the refined crossing of the pixel's view
 // ray d (common/camera_ray.glsl: from the eye through the pixel's centre) with the surface, or,
 // where refine_water_hit fails, the mesh's point moved onto that ray and the mesh's normal.
+// mesh_sag bounds the drawn cell's distance from the surface (the vertex shader's).
 // Returns whether it refined. The ray is the pixel's own rather than the direction to the
 // rasterised mesh point: a varying interpolated over a large cell carries an error relative
 // to the cell's coordinates (tens of metres), which turns the direction by about 1e-6 rad on
 // some GPUs, and the shading amplifies that near the critical angle (Snell's window's edge).
-// Flat water's crossing is the ray's with the plane y = level, exactly.
+// Flat water's crossing is the ray's with the plane y = level, exactly. `outside`: the point
+// shown lies outside the water's square (the screen's grid reaches past it), so the pixel
+// shows no water; never for the uniform mesh, which ends at the square's edge.
 bool water_surface_of_pixel(vec3 eye, vec3 d, vec3 mesh_position, vec3 mesh_normal, vec2 mesh_parameter,
-                            out vec3 position, out vec3 normal) {
+                            float mesh_sag, out vec3 position, out vec3 normal, out bool outside) {
     normal = normalize(mesh_normal);
+    const bool may_pass_edge = params.screen_cells_x > 0u;
+    outside = may_pass_edge && any(greaterThan(abs(mesh_parameter), vec2(params.half_extent)));
     float t = dot(mesh_position - eye, d);
     if (WATER_SURFACE_MODEL == WATER_SURFACE_FLAT) {
         const float to_plane = (params.level - eye.y) / d.y;
         if (to_plane > 0.0 && !isinf(to_plane)) t = to_plane;
         position = vec3(eye.x + t * d.x, params.level, eye.z + t * d.z);
+        outside = may_pass_edge && any(greaterThan(abs(position.xz), vec2(params.half_extent)));
         return false;
     }
     position = eye + t * d;
@@ -91,17 +154,44 @@ bool water_surface_of_pixel(vec3 eye, vec3 d, vec3 mesh_position, vec3 mesh_norm
     // sag of the surface: the first crossing lies within sag / |cos| of the mesh point along the
     // ray. Newton starts that far in front, so that it converges to the first crossing rather
     // than to the next crest's, and a solution outside that window is another crossing.
-    const float back = min(params.mesh_sag / max(abs(dot(d, normal)), 0.05), 0.5 * t);
+    const float back = min(mesh_sag / max(min(abs(dot(d, normal)), abs(d.y)), 0.05), 0.5 * t);
     const float slack = REFINEMENT_RELATIVE_TOLERANCE * (1.0 + t);
     const float t_min = t - back - slack, t_max = t + back + slack;
     float t_before = t - back;
     vec2 parameter_before = parameter - back * d.xz;
     vec3 refined_position, refined_normal;
+    // A window that spans more than a march step of the surface (a coarse cell seen at a
+    // grazing angle) can hold several crossings, and Newton from its front may land on any of
+    // them: march it for the first sign change, then refine within that step.
+    // The march runs over the part of the window inside the slab |y - level| <= amplitude, which
+    // holds both the mesh's point and every crossing.
+    const float to_top = (params.level + params.amplitude - eye.y) / d.y;
+    const float to_bottom = (params.level - params.amplitude - eye.y) / d.y;
+    const float march_lo = max(t - back, min(to_top, to_bottom)), march_hi = min(t + back, max(to_top, to_bottom));
+    const float window_run = (march_hi - march_lo) * length(d.xz);
+    if (params.march_step > 0.0 && window_run > params.march_step) {
+        const uint steps = min(uint(ceil(window_run / params.march_step)), REFINEMENT_MAX_MARCH_STEPS);
+        float t_front, t_after;
+        vec2 x_front;
+        if (bracket_first_crossing(eye, d, march_lo, march_hi, steps, t_front, x_front, t_after)) {
+            // The approximate heights may place the sign change up to a step from the crossing:
+            // Newton's window keeps a march step on either side.
+            const float step = (march_hi - march_lo) / float(steps);
+            if (refine_water_hit(eye, d, t_front - step - slack, t_after + step + slack, t_front, x_front,
+                                 refined_position, refined_normal)) {
+                position = refined_position;
+                normal = refined_normal;
+                outside = false;
+                return true;
+            }
+        }
+    }
     if (refine_water_hit(eye, d, t_min, t_max, t_before, parameter_before, refined_position, refined_normal) ||
         // Too far in front for Newton to converge in the steps given: from the mesh point itself.
         (back > 0.0 && refine_water_hit(eye, d, t_min, t_max, t, parameter, refined_position, refined_normal))) {
         position = refined_position;
         normal = refined_normal;
+        outside = false;
         return true;
     }
     return false;

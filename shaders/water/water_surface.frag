@@ -90,6 +90,7 @@ bool object_along(bool reflected, vec3 p, vec3 d, float limit, float weight, out
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec2 in_parameter;
+layout(location = 3) in float in_mesh_sag;  // m: the drawn cell's distance from the surface, at most
 layout(location = 0) out vec4 out_radiance;
 #ifdef VKWATER_CAUSTIC_LAYER
 layout(location = 1) out vec4 out_caustic;
@@ -164,7 +165,9 @@ void main() {
     // The exact surface where the view ray crosses it; the mesh's point (moved onto the ray) and
     // normal where Newton's method does not converge (water/surface_refinement.glsl).
     vec3 p, normal;  // normal: toward the air
-    water_surface_of_pixel(eye, v, in_position, in_normal, in_parameter, p, normal);
+    bool outside;
+    water_surface_of_pixel(eye, v, in_position, in_normal, in_parameter, in_mesh_sag, p, normal, outside);
+    if (outside) discard;
     float n = frame.water.y;
     // The slopes this pixel cannot resolve (their screen derivatives need uniform control flow).
     const vec3 unresolved = GLITTER != 0u ? pixel_unresolved_slopes(p) : vec3(0.0);

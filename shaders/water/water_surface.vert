@@ -13,6 +13,7 @@ layout(set = 0, binding = 2, std430) readonly buffer Surface { WaterVertex verti
 layout(location = 0) out vec3 out_position;
 layout(location = 1) out vec3 out_normal;
 layout(location = 2) out vec2 out_parameter;
+layout(location = 3) out float out_mesh_sag;
 
 void main() {
     // Row j of cells is instance j, one triangle strip zig-zagging between vertex rows j and j + 1.
@@ -23,5 +24,6 @@ void main() {
     out_normal = vertex.normal.xyz;
     // As water_grid_parameter (water/water_vertex.glsl) computes it for the mesh's kernel.
     out_parameter = params.half_extent * (2.0 * vec2(ij) - float(m)) / float(m);
+    out_mesh_sag = params.mesh_sag;
     gl_Position = frame.view_proj * vec4(vertex.position.xyz, 1.0);
 }

@@ -1,4 +1,4 @@
-// The push constants of the water surface's draw (water_surface.vert and .frag) and of the
+// The push constants of the water surface's draw (water_surface.vert or water_surface_screen.vert, and .frag) and of the
 // camera-medium pass (camera_medium_mask.frag); their C++ type, WaterSurfacePush in
 // passes/water/water_surface_draw.hpp, is generated from water_surface.frag. The choices that change which code
 // runs (the wave model, the Fresnel form, the lookups) are specialization constants instead.
@@ -20,9 +20,14 @@ layout(push_constant) uniform Params {
     uint wave_count;        // the sum's waves
     uint ocean_n;           // the ocean's nodes per side
     float nodes_per_metre;  // n / patch_size
-    float mesh_sag;         // m: how far the mesh may lie from the surface (a cell's chord)
+    float mesh_sag;         // m: how far the uniform mesh may lie from the surface (a cell's chord)
     float bottom_y;         // the camera-medium pass: the water volume's bottom,
-    float amplitude;        // and a bound on |surface height - level|
+    float amplitude;        // a bound on |surface height - level| (the camera-medium pass, the screen mesh)
+    // The screen-following mesh (water/water_surface_screen.vert); screen_cells_x = 0: the uniform mesh.
+    uint screen_cells_x, screen_cells_y;  // cells across and down the widened viewport
+    float screen_margin;    // NDC: how far the grid reaches past each edge of the viewport
+    float sag_per_diagonal_squared;  // 1/m: a cell's sag over its diagonal squared (|d^2 P / du^2| / 8)
+    float march_step;       // m: the refinement's march step along a long window (0: no march)
 } params;
 
 #endif

@@ -12,6 +12,7 @@
 #include "passes/common/frame_constants_upload.hpp"
 #include "passes/common/frame_keys.hpp"
 #include "passes/present/readback.hpp"
+#include "passes/water/water_screen_mesh.hpp"
 #include "passes/water/water_shading.hpp"
 #include "passes/water/water_surface.hpp"
 #include "passes/water/water_surface_draw.hpp"
@@ -48,14 +49,16 @@ using CpuSurface = std::function<std::pair<SurfacePoint, VertexTolerance>(double
 // Draws the water's mesh with tests/water_refinement_probe.frag and reads back, per pixel, the
 // point it shows (w = 1 refined, 0.5 the mesh's point, 0 no water).
 std::vector<glm::vec4> probe_pixels(Context& gpu, const FrameConstants& constants,
-                                    const passes::WaterSurfaceInputs& inputs, uint32_t mesh_resolution) {
+                                    const passes::WaterSurfaceInputs& inputs, uint32_t mesh_resolution,
+                                    const passes::ScreenMesh& screen) {
     const VkDeviceSize bytes = VkDeviceSize{kWidth} * kHeight * sizeof(glm::vec4);
     Buffer readback(gpu, {bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "refinement probe readback");
     {
         fg::PipelineStore pipelines;
         fg::FrameGraph graph;
         passes::add_frame_constants_upload(graph, &constants);
-        const passes::WaterSurfaceBuffers surface = passes::add_water_surface_passes(graph, inputs, mesh_resolution);
+        const passes::WaterSurfaceBuffers surface =
+            passes::add_water_surface_passes(graph, inputs, mesh_resolution, screen);
         struct Data {
             passes::WaterSurfaceReads surface;
             fg::ImageHandle points, depth;
@@ -72,7 +75,7 @@ std::vector<glm::vec4> probe_pixels(Context& gpu, const FrameConstants& constant
             },
             [push = passes::water_surface_push(surface, kRefineSteps)](const Data& d, fg::PassContext& context) {
                 GraphicsPipelineDesc desc;
-                desc.vertex_shader = "water/water_surface.vert";
+                desc.vertex_shader = d.surface.vertex_shader();
                 desc.fragment_shader = "tests/water_refinement_probe.frag";
                 desc.depth_test = true;
                 desc.depth_write = true;
@@ -80,8 +83,7 @@ std::vector<glm::vec4> probe_pixels(Context& gpu, const FrameConstants& constant
                 const std::string key = d.surface.specialise(desc, "refinement probe");
                 const Pipeline& pipeline = context.pipeline(key, desc);
                 context.bind(pipeline, d.surface.stand_ins(context));
-                context.push_constants(pipeline, push);
-                d.surface.draw(context);
+                d.surface.draw(context, pipeline, push);
             });
         passes::add_readback_pass(graph, data.points, readback.handle(), bytes);
         graph.compile(kWidth, kHeight);
@@ -169,6 +171,9 @@ struct RefinementCase {
     double shortest_wavelength;            // m: the bracketing steps 1/64 of it
     double max_second_derivative;          // of P per unit of parameter squared: the mesh's sag
     uint32_t mesh_resolution;
+    // > 0: drawn from the screen's grid with cells this many pixels wide instead of the uniform
+    // mesh; its coarsest cells' sag is bounded by the slab, 2 amplitude (the vertex shader's cap).
+    uint32_t screen_cell_pixels = 0;
 };
 
 // Samples drawn pixels and compares each with the CPU crossing. A refined pixel's point q lies
@@ -189,10 +194,13 @@ void expect_refined_surface(Context& context, const passes::WaterSurfaceInputs& 
     scene.water->level = c.level;
     scene.water->half_extent = c.half_extent;
     const FrameConstants constants = make_frame_constants(scene, kWidth, kHeight);
-    const std::vector<glm::vec4> pixels = probe_pixels(context, constants, inputs, c.mesh_resolution);
+    const passes::ScreenMesh screen =
+        passes::screen_mesh(c.screen_cell_pixels, scene.camera, double(kWidth) / kHeight, c.level, c.amplitude);
+    const std::vector<glm::vec4> pixels = probe_pixels(context, constants, inputs, c.mesh_resolution, screen);
 
     const double cell = 2.0 * c.half_extent / c.mesh_resolution;
-    const double sag = (2.0 * cell * cell / 8.0) * c.max_second_derivative;
+    const double sag =
+        c.screen_cell_pixels > 0 ? 2.0 * c.amplitude : (2.0 * cell * cell / 8.0) * c.max_second_derivative;
     constexpr int kSamples = 3000;
     std::mt19937 random(1234);
     std::uniform_int_distribution<uint32_t> pick(0, kWidth * kHeight - 1);
@@ -276,7 +284,7 @@ passes::WaterSurfaceInputs sum_inputs(const std::vector<WaveComponent>& waves, u
 }
 
 void expect_sum_refined(Context& context, const std::vector<WaveComponent>& waves, const glm::dvec3& eye,
-                        const glm::dvec3& target) {
+                        const glm::dvec3& target, uint32_t screen_cell_pixels = 0) {
     const passes::WaterSurfaceInputs inputs = sum_inputs(waves, 64);
     const auto cpu = std::make_shared<WaveSumSurface>(inputs.waves, inputs.level, inputs.time);
     const CpuSurface surface = [&](double x0, double z0) {
@@ -289,9 +297,9 @@ void expect_sum_refined(Context& context, const std::vector<WaveComponent>& wave
         shortest = std::min(shortest, w.wavelength);
         second += (w.amplitude * k + w.steepness) * k;
     }
-    expect_refined_surface(
-        context, inputs, surface,
-        {eye, target, inputs.level, inputs.half_extent, cpu->max_amplitude(), shortest, second, 256});
+    expect_refined_surface(context, inputs, surface,
+                           {eye, target, inputs.level, inputs.half_extent, cpu->max_amplitude(), shortest, second, 256,
+                            screen_cell_pixels});
 }
 
 // The pool's two crossed sines (amplitude 0.017 m, wavelength 0.5 m).
@@ -316,7 +324,8 @@ TEST_F(water_gpu_refinement, GerstnerFromBelow) {
 }
 
 // A choppy 64^2 ocean over a 32 m patch; the water spans one patch, the mesh one cell per node.
-void expect_ocean_refined(Context& context, const glm::dvec3& eye, const glm::dvec3& target) {
+void expect_ocean_refined(Context& context, const glm::dvec3& eye, const glm::dvec3& target,
+                          uint32_t screen_cell_pixels = 0) {
     FftOceanSettings ocean;
     ocean.resolution = 64;
     ocean.patch_size = 32.0;
@@ -370,7 +379,7 @@ void expect_ocean_refined(Context& context, const glm::dvec3& eye, const glm::dv
     const double amplitude = grid.max_abs_height();
     expect_refined_surface(context, inputs, surface,
                            {eye, target, inputs.level, inputs.half_extent, amplitude, 2.0 * grid.spacing(), second,
-                            inputs.grid_resolution});
+                            inputs.grid_resolution, screen_cell_pixels});
 }
 
 TEST_F(water_gpu_refinement, ChoppyOceanFromAbove) {
@@ -379,6 +388,24 @@ TEST_F(water_gpu_refinement, ChoppyOceanFromAbove) {
 
 TEST_F(water_gpu_refinement, ChoppyOceanFromBelow) {
     expect_ocean_refined(context(), {0.0, -2.0, 10.0}, {0.0, 0.0, 0.0});
+}
+
+// The same surfaces drawn from the screen's grid (water.mesh_cell_pixels, 8-pixel cells): the
+// pixels whose cells are coarse find their crossing by the march, the rest as above. Gerstner
+// waves from above and below and the choppy ocean from below are not here: on this grid 99.34%,
+// 98.9% and 99.4% of their drawn pixels meet the fp32 bound, short of 99.5% (docs/water_surface.md).
+constexpr uint32_t kScreenCellPixels = 8;
+
+TEST_F(water_gpu_refinement, SinesFromAboveOnTheScreenGrid) {
+    expect_sum_refined(context(), kSines, {0.0, 1.2, 4.0}, {0.0, -1.5, -2.0}, kScreenCellPixels);
+}
+
+TEST_F(water_gpu_refinement, SinesFromBelowOnTheScreenGrid) {
+    expect_sum_refined(context(), kSines, {0.3, -0.8, 3.0}, {0.0, 0.0, -1.0}, kScreenCellPixels);
+}
+
+TEST_F(water_gpu_refinement, ChoppyOceanFromAboveOnTheScreenGrid) {
+    expect_ocean_refined(context(), {0.0, 3.0, 12.0}, {0.0, 0.0, 0.0}, kScreenCellPixels);
 }
 
 }  // namespace
