@@ -60,6 +60,9 @@ struct WaterSurfaceModel {
     // m: the horizontal run of the per-pixel march that brackets the first crossing where the
     // mesh is coarse: a quarter of the shortest wavelength (the ocean: its node spacing).
     float march_step = 0.0f;
+    // A bound on the height's slope over world (x, z), for the march's steps; 0: none (the ocean,
+    // or waves steep enough to fold).
+    float slope_bound = 0.0f;
 };
 
 // The water drawn from a grid that follows the screen (shaders/water/water_surface_screen.vert)

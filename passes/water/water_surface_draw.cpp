@@ -17,6 +17,7 @@ WaterSurfacePush water_surface_push(const WaterSurfaceBuffers& surface, uint32_t
     push.mesh_sag = surface.model.mesh_sag;
     push.sag_per_diagonal_squared = surface.model.sag_per_diagonal_squared;
     push.march_step = surface.model.march_step;
+    push.slope_bound = surface.model.slope_bound;
     push.amplitude = surface.screen.amplitude;
     push.screen_margin = surface.screen.margin;
     return push;

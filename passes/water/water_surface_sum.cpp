@@ -72,14 +72,19 @@ WaterSurfaceBuffers add_wave_sum_passes(fg::FrameGraph& graph, const WaterSurfac
                                    "water mesh (wave sum)", out.waves, push, mesh_resolution, out);
     out.model.wave_count = push.wave_count;
     // sum (A k + s) k bounds |d^2 P / du^2| of the waves.
-    double curvature = 0.0, shortest = 0.0;
+    double curvature = 0.0, shortest = 0.0, slope = 0.0, steepness = 0.0;
     for (const WaveComponent& w : waves) {
         shortest = shortest > 0.0 ? std::min(shortest, w.wavelength) : w.wavelength;
         const double k = 2.0 * std::numbers::pi / w.wavelength;
         curvature += (w.amplitude * k + w.steepness) * k;
+        slope += w.amplitude * k;
+        steepness += w.steepness;
     }
     set_water_mesh_sag(out.model, inputs.half_extent, mesh_resolution, curvature);
-    out.model.march_step = static_cast<float>(shortest / 4.0);
+    out.model.march_step = static_cast<float>(shortest / 8.0);
+    // |grad h| <= sum A k over the parameter; the horizontal map's Jacobian is at least
+    // 1 - sum steepness, which stretches it over world (x, z) by at most its inverse.
+    if (steepness < 0.95) out.model.slope_bound = static_cast<float>(slope / (1.0 - steepness));
     return out;
 }
 

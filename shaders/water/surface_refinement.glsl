@@ -66,60 +66,119 @@ bool refine_water_hit(vec3 eye, vec3 d, float t_min, float t_max, inout float t,
     return true;
 }
 
+// Windows shorter than this many march steps (half the shortest wavelength) hold at most one
+// crest's crossings, where Newton from the window's front finds the first: the march runs first
+// only over longer ones (and after Newton has failed over any).
+const float REFINEMENT_MARCH_WINDOW = 4.0;
+
 // The march's longest run: beyond it the steps grow (a ray that skims the surface for many
 // wavelengths, near the horizon).
 const uint REFINEMENT_MAX_MARCH_STEPS = 64u;
 
-// Halvings of the march's bracket before Newton takes over: a step of a quarter wavelength
-// becomes 1/64 of one, close enough for Newton at grazing angles, where the Jacobian is nearly
+// Halvings of the march's bracket before Newton takes over: a step of an eighth of a wavelength
+// becomes 1/128 of one, close enough for Newton at grazing angles, where the Jacobian is nearly
 // singular and a step's worth of start can send it to another crossing.
 const uint REFINEMENT_BISECTIONS = 4u;
+// Where Newton still fails (at a Gerstner cusp, whose Jacobian is singular) the bracket is
+// halved this many times more: 2^-16 of the step, below the acceptance tolerance for the
+// steps here (a step of 0.1 m becomes 1.5 um).
+const uint REFINEMENT_FINAL_BISECTIONS = 12u;
+
+// A stretch of the view ray that holds its first crossing with the surface: t_front before it
+// (the ray on its starting side, over the parameter x_front), t_after past it.
+struct RayBracket {
+    float t_front, t_after;
+    vec2 x_front;
+    vec2 shift;  // the surface's horizontal displacement at the last point evaluated
+    bool start_above;
+};
 
 // Whether eye + s d lies above the surface: its height over P(x) at x = (eye + s d).xz less the
 // horizontal displacement `shift` (exact for heightfields, close for Gerstner waves and the choppy
 // ocean, whose displacement changes little over a step), which it updates to the one at x.
-bool ray_point_above(vec3 eye, vec3 d, float s, inout vec2 shift, out vec2 x) {
+bool ray_point_above(vec3 eye, vec3 d, float s, inout vec2 shift, out vec2 x, out float height) {
     const vec3 q = eye + s * d;
     x = q.xz - shift;
     vec3 p, dP_du, dP_dv;
     water_surface_at(x, p, dP_du, dP_dv);
     shift = p.xz - x;
-    return q.y > p.y;
+    height = q.y - p.y;
+    return height > 0.0;
 }
 
-// The first crossing of the ray with the surface in [t_lo, t_hi], bracketed by a march of
-// `steps` equal steps and then halved REFINEMENT_BISECTIONS times. True with the bracket's ends:
-// t_front before the crossing (and its parameter x_front), t_after past it.
-bool bracket_first_crossing(vec3 eye, vec3 d, float t_lo, float t_hi, uint steps, out float t_front,
-                            out vec2 x_front, out float t_after) {
-    const float dt = (t_hi - t_lo) / float(steps);
-    vec2 shift = vec2(0.0), x;
-    ray_point_above(eye, d, t_lo, shift, x);  // the displacement at the start, for the first step
-    const bool start_above = ray_point_above(eye, d, t_lo, shift, x);
-    t_front = t_lo;
-    x_front = x;
-    t_after = t_hi;
-    bool found = false;
-    for (uint i = 1u; i <= steps && !found; ++i) {
-        const float s = t_lo + float(i) * dt;
-        if (ray_point_above(eye, d, s, shift, x) != start_above) {
-            t_after = s;
-            found = true;
+// Marches [t_lo, t_hi] for the first change of side. True with the step that holds it. Where
+// the surface's slope has a bound (params.slope_bound > 0), the ray's height h over the surface
+// changes by at most |d.y| + slope_bound |d.xz| per unit of t, so a step of h over that cannot
+// pass a crossing: the steps shrink only where the ray skims the surface, down to half a march
+// step. Without a bound, `steps` equal steps.
+bool march_to_first_crossing(vec3 eye, vec3 d, float t_lo, float t_hi, uint steps, out RayBracket bracket) {
+    const float fixed_step = (t_hi - t_lo) / float(steps);
+    // Half a march step at the least (a sixteenth of the shortest wavelength): a crest thinner
+    // than that along the ray may be passed, as a crossing that shallow changes the pixel little.
+    const float least_step =
+        max((t_hi - t_lo) / float(REFINEMENT_MAX_MARCH_STEPS), 0.5 * params.march_step / max(length(d.xz), 1e-3));
+    const float height_rate = abs(d.y) + params.slope_bound * length(d.xz);
+    vec2 x;
+    float height;
+    bracket.shift = vec2(0.0);
+    ray_point_above(eye, d, t_lo, bracket.shift, x, height);  // the displacement at the start, for the first step
+    bracket.start_above = ray_point_above(eye, d, t_lo, bracket.shift, x, height);
+    bracket.t_front = t_lo;
+    bracket.x_front = x;
+    bracket.t_after = t_hi;
+    float s = t_lo;
+    for (uint i = 0u; i < REFINEMENT_MAX_MARCH_STEPS && s < t_hi; ++i) {
+        const float step = params.slope_bound > 0.0 ? max(abs(height) / height_rate, least_step) : fixed_step;
+        s = min(s + step, t_hi);
+        if (ray_point_above(eye, d, s, bracket.shift, x, height) != bracket.start_above) {
+            bracket.t_after = s;
+            return true;
+        }
+        bracket.t_front = s;
+        bracket.x_front = x;
+    }
+    return false;
+}
+
+void halve_bracket(vec3 eye, vec3 d, uint halvings, inout RayBracket bracket) {
+    for (uint i = 0u; i < halvings; ++i) {
+        const float middle = 0.5 * (bracket.t_front + bracket.t_after);
+        vec2 x;
+        float height;
+        if (ray_point_above(eye, d, middle, bracket.shift, x, height) == bracket.start_above) {
+            bracket.t_front = middle;
+            bracket.x_front = x;
         } else {
-            t_front = s;
-            x_front = x;
+            bracket.t_after = middle;
         }
     }
-    if (!found) return false;
-    for (uint i = 0u; i < REFINEMENT_BISECTIONS; ++i) {
-        const float middle = 0.5 * (t_front + t_after);
-        if (ray_point_above(eye, d, middle, shift, x) == start_above) {
-            t_front = middle;
-            x_front = x;
-        } else {
-            t_after = middle;
-        }
+}
+
+// The first crossing in [t_lo, t_hi] by the march: bracketed, halved, then Newton within a march
+// step of the bracket; where Newton fails, the bracket halved down to the tolerance `slack`.
+bool refine_by_march(vec3 eye, vec3 d, float t_lo, float t_hi, uint steps, float slack, out vec3 position,
+                     out vec3 normal) {
+    RayBracket bracket;
+    if (!march_to_first_crossing(eye, d, t_lo, t_hi, steps, bracket)) return false;
+    halve_bracket(eye, d, REFINEMENT_BISECTIONS, bracket);
+    // The approximate heights may place the change of side up to a step from the crossing:
+    // Newton's window keeps a march step on either side.
+    const float step = max((t_hi - t_lo) / float(steps), bracket.t_after - bracket.t_front);
+    float t = bracket.t_front;
+    vec2 x = bracket.x_front;
+    if (refine_water_hit(eye, d, bracket.t_front - step - slack, bracket.t_after + step + slack, t, x, position,
+                         normal)) {
+        return true;
     }
+    halve_bracket(eye, d, REFINEMENT_FINAL_BISECTIONS, bracket);
+    vec3 p, dP_du, dP_dv;
+    water_surface_at(bracket.x_front, p, dP_du, dP_dv);
+    if (!all(lessThanEqual(abs(bracket.x_front), vec2(params.half_extent))) ||
+        !(distance(eye + bracket.t_front * d, p) <= slack)) {
+        return false;
+    }
+    position = p;
+    normal = water_normal(dP_du, dP_dv);
     return true;
 }
 
@@ -162,33 +221,23 @@ bool water_surface_of_pixel(vec3 eye, vec3 d, vec3 mesh_position, vec3 mesh_norm
     vec3 refined_position, refined_normal;
     // A window that spans more than a march step of the surface (a coarse cell seen at a
     // grazing angle) can hold several crossings, and Newton from its front may land on any of
-    // them: march it for the first sign change, then refine within that step.
-    // The march runs over the part of the window inside the slab |y - level| <= amplitude, which
-    // holds both the mesh's point and every crossing.
+    // them: march it for the first change of side, then refine within that step. The march
+    // runs over the part of the window inside the slab |y - level| <= amplitude, which holds
+    // both the mesh's point and every crossing.
     const float to_top = (params.level + params.amplitude - eye.y) / d.y;
     const float to_bottom = (params.level - params.amplitude - eye.y) / d.y;
     const float march_lo = max(t - back, min(to_top, to_bottom)), march_hi = min(t + back, max(to_top, to_bottom));
     const float window_run = (march_hi - march_lo) * length(d.xz);
-    if (params.march_step > 0.0 && window_run > params.march_step) {
-        const uint steps = min(uint(ceil(window_run / params.march_step)), REFINEMENT_MAX_MARCH_STEPS);
-        float t_front, t_after;
-        vec2 x_front;
-        if (bracket_first_crossing(eye, d, march_lo, march_hi, steps, t_front, x_front, t_after)) {
-            // The approximate heights may place the sign change up to a step from the crossing:
-            // Newton's window keeps a march step on either side.
-            const float step = (march_hi - march_lo) / float(steps);
-            if (refine_water_hit(eye, d, t_front - step - slack, t_after + step + slack, t_front, x_front,
-                                 refined_position, refined_normal)) {
-                position = refined_position;
-                normal = refined_normal;
-                outside = false;
-                return true;
-            }
-        }
-    }
-    if (refine_water_hit(eye, d, t_min, t_max, t_before, parameter_before, refined_position, refined_normal) ||
+    const bool can_march = params.march_step > 0.0 && march_hi > march_lo;
+    const uint steps = can_march ? clamp(uint(ceil(window_run / params.march_step)), 2u, REFINEMENT_MAX_MARCH_STEPS) : 0u;
+    const bool march_first = can_march && window_run > REFINEMENT_MARCH_WINDOW * params.march_step;
+    if ((march_first && refine_by_march(eye, d, march_lo, march_hi, steps, slack, refined_position, refined_normal)) ||
+        refine_water_hit(eye, d, t_min, t_max, t_before, parameter_before, refined_position, refined_normal) ||
         // Too far in front for Newton to converge in the steps given: from the mesh point itself.
-        (back > 0.0 && refine_water_hit(eye, d, t_min, t_max, t, parameter, refined_position, refined_normal))) {
+        (back > 0.0 && refine_water_hit(eye, d, t_min, t_max, t, parameter, refined_position, refined_normal)) ||
+        // A short window where Newton failed from both ends: the march, which brackets.
+        (can_march && !march_first &&
+         refine_by_march(eye, d, march_lo, march_hi, steps, slack, refined_position, refined_normal))) {
         position = refined_position;
         normal = refined_normal;
         outside = false;

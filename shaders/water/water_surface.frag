@@ -168,6 +168,14 @@ void main() {
     bool outside;
     water_surface_of_pixel(eye, v, in_position, in_normal, in_parameter, in_mesh_sag, p, normal, outside);
     if (outside) discard;
+#ifdef VKWATER_SCENE_VIEWS
+    // With receiver meshes, the depth of the point shown, not of the mesh under it: a receiver
+    // that breaks the surface (lake's post and rock) meets the water where the surface is, not
+    // where a coarse cell's chord is. Without them nothing reads the difference (the floor lies
+    // below the slab), and llvmpipe's late depth test would cost the pass.
+    const vec4 clip = frame.view_proj * vec4(p, 1.0);
+    gl_FragDepth = clip.z / clip.w;
+#endif
     float n = frame.water.y;
     // The slopes this pixel cannot resolve (their screen derivatives need uniform control flow).
     const vec3 unresolved = GLITTER != 0u ? pixel_unresolved_slopes(p) : vec3(0.0);

@@ -28,6 +28,7 @@ layout(push_constant) uniform Params {
     float screen_margin;    // NDC: how far the grid reaches past each edge of the viewport
     float sag_per_diagonal_squared;  // 1/m: a cell's sag over its diagonal squared (|d^2 P / du^2| / 8)
     float march_step;       // m: the refinement's march step along a long window (0: no march)
+    float slope_bound;      // a bound on the surface's slope over world x, z (0: none known)
 } params;
 
 #endif
