@@ -20,9 +20,7 @@ uint32_t Water::drawn_mesh_resolution() const {
     return mesh_resolution.value_or(std::min(kDefaultWaterMeshResolution, grid_resolution));
 }
 
-uint32_t Water::screen_mesh_cell_pixels() const {
-    return mesh_resolution ? 0 : mesh_cell_pixels.value_or(kDefaultWaterMeshCellPixels);
-}
+uint32_t Water::screen_mesh_cell_pixels() const { return mesh_resolution ? 0 : mesh_cell_pixels.value_or(0); }
 
 glm::dvec3 direction_toward_sun(double elevation_deg, double azimuth_deg) {
     double sin_el = 0.0, cos_el = 0.0, sin_az = 0.0, cos_az = 0.0;

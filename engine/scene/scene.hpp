@@ -80,7 +80,6 @@ struct FloorPlane {
 };
 
 inline constexpr uint32_t kDefaultWaterMeshResolution = 256;
-inline constexpr uint32_t kDefaultWaterMeshCellPixels = 8;
 
 // The water body: a surface around y = level over the square |x|, |z| <= half_extent, and the
 // water volume below it down to level - depth (or to the floor when depth is not given).
@@ -93,9 +92,9 @@ struct Water {
     uint32_t grid_resolution = 256;
     // The water is drawn from a mesh, and each pixel then finds the exact surface from the
     // mesh's point (docs/water_surface.md), so the mesh need not be as fine as the photon grid.
-    // By default a grid that follows the screen, with cells about mesh_cell_pixels wide wherever
-    // they are seen (in [1, 64]; nullopt: kDefaultWaterMeshCellPixels); a mesh_resolution (cells
-    // per side, in [2, 4096]) draws a uniform mesh over the square instead. A scene gives at most one.
+    // By default a uniform mesh over the square (mesh_resolution cells per side, in [2, 4096]);
+    // with mesh_cell_pixels (in [1, 64]) a grid that follows the screen instead, with cells about
+    // that many pixels wide wherever they are seen. A scene gives at most one.
     std::optional<uint32_t> mesh_resolution;
     std::optional<uint32_t> mesh_cell_pixels;
     // The uniform mesh's cells per side: mesh_resolution, or the smaller of

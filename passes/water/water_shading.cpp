@@ -83,12 +83,12 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
             desc.depth_test = true;
             desc.depth_write = true;
             desc.topology = passes::WaterSurfaceReads::kTopology;
-            // water_surface.frag's constants 1-4: the Fresnel form, the depth colour, the lookups.
+            // water_surface.frag's constants 2-5: the Fresnel form, the depth colour, the lookups.
             std::string key = d.surface.specialise(desc, desc.fragment_shader);
             const uint32_t reflection = lookup_code(d.reflection_view, lookups.reflection_method);
             const uint32_t refraction = lookup_code(d.refraction_view, lookups.refraction_method);
             const uint32_t fresnel = static_cast<uint32_t>(shading.fresnel), depth_blend = shading.depth_blend;
-            // Constant 5, the camera's side: 0 the air, 1 the water, 2 per pixel (the mask); 6, the glitter.
+            // Constant 6, the camera's side: 0 the air, 1 the water, 2 per pixel (the mask); 7, the glitter.
             const uint32_t side = d.lighting.camera_medium ? 2u : shading.eye_in_water ? 1u : 0u;
             const uint32_t glitter = shading.glitter;
             desc.specialization_constants.insert(desc.specialization_constants.end(),

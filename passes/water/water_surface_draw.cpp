@@ -45,9 +45,10 @@ const char* WaterSurfaceReads::vertex_shader() const {
 }
 
 std::string WaterSurfaceReads::specialise(GraphicsPipelineDesc& desc, const std::string& key) const {
-    desc.specialization_constants = {surface_model};
+    const bool screen_grid = screen.cell_pixels > 0;
+    desc.specialization_constants = {surface_model, screen_grid ? 1u : 0u};
     static constexpr const char* kModelNames[] = {"/flat", "/sum", "/ocean"};
-    return key + kModelNames[surface_model];
+    return key + kModelNames[surface_model] + (screen_grid ? "/screen grid" : "");
 }
 
 std::vector<fg::DescriptorBinding> WaterSurfaceReads::stand_ins(const fg::PassContext& context) const {

@@ -48,8 +48,8 @@ struct WaterSurfaceReads {
     static constexpr VkPrimitiveTopology kTopology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
     // The vertex shader that draws the mesh.
     const char* vertex_shader() const;
-    // Sets constant 0 (the caller may append more) and returns `key` with the model's name
-    // appended (one pipeline per model).
+    // Sets constants 0 and 1, the model and whether the screen's grid is drawn (the caller may
+    // append more), and returns `key` with both appended (one pipeline each).
     std::string specialise(GraphicsPipelineDesc& desc, const std::string& key) const;
     // Pushes `push` with the screen grid's cells for this image, then draws the mesh's triangles
     // (one strip per row of cells, an instance each), the pipeline (specialised) and its bindings

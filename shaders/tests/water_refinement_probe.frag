@@ -18,6 +18,6 @@ void main() {
     const bool refined = water_surface_of_pixel(frame.camera_position.xyz, camera_ray_direction(gl_FragCoord.xy),
                                                 in_position, in_normal, in_parameter, in_mesh_sag, p, normal,
                                                 outside);
-    if (outside) discard;
+    if (WATER_SCREEN_GRID != 0u && outside) discard;
     out_point = vec4(p, refined ? 1.0 : 0.5);
 }

@@ -22,6 +22,11 @@ const uint WATER_SURFACE_FLAT = 0u;  // the mesh is the surface: nothing to refi
 const uint WATER_SURFACE_SUM = 1u;   // sines and Gerstner waves
 const uint WATER_SURFACE_OCEAN = 2u;
 layout(constant_id = 0) const uint WATER_SURFACE_MODEL = WATER_SURFACE_SUM;
+// 1: the water is drawn from the screen's grid (water/water_surface_screen.vert), whose cells can
+// be coarse: the march for the first crossing and the square's edge per pixel are compiled in.
+// 0: the uniform mesh, whose cells are fine enough for Newton alone, compiled without them
+// (llvmpipe would run them masked for every pixel: docs/lavapipe.md).
+layout(constant_id = 1) const uint WATER_SCREEN_GRID = 0u;
 
 // A converged crossing misses the surface by at most this times (1 + t) metres: about ten fp32
 // ulps of the positions involved (P and eye + t d are sums of terms of magnitude t and |eye|).
@@ -196,7 +201,7 @@ bool refine_by_march(vec3 eye, vec3 d, float t_lo, float t_hi, uint steps, float
 bool water_surface_of_pixel(vec3 eye, vec3 d, vec3 mesh_position, vec3 mesh_normal, vec2 mesh_parameter,
                             float mesh_sag, out vec3 position, out vec3 normal, out bool outside) {
     normal = normalize(mesh_normal);
-    const bool may_pass_edge = params.screen_cells_x > 0u;
+    const bool may_pass_edge = WATER_SCREEN_GRID != 0u;
     outside = may_pass_edge && any(greaterThan(abs(mesh_parameter), vec2(params.half_extent)));
     float t = dot(mesh_position - eye, d);
     if (WATER_SURFACE_MODEL == WATER_SURFACE_FLAT) {
@@ -213,22 +218,24 @@ bool water_surface_of_pixel(vec3 eye, vec3 d, vec3 mesh_position, vec3 mesh_norm
     // sag of the surface: the first crossing lies within sag / |cos| of the mesh point along the
     // ray. Newton starts that far in front, so that it converges to the first crossing rather
     // than to the next crest's, and a solution outside that window is another crossing.
-    const float back = min(mesh_sag / max(min(abs(dot(d, normal)), abs(d.y)), 0.05), 0.5 * t);
+    // (On the screen's grid the level's cosine too: a coarse cell's normal can lean toward the ray.)
+    const float cosine = WATER_SCREEN_GRID != 0u ? min(abs(dot(d, normal)), abs(d.y)) : abs(dot(d, normal));
+    const float back = min(mesh_sag / max(cosine, 0.05), 0.5 * t);
     const float slack = REFINEMENT_RELATIVE_TOLERANCE * (1.0 + t);
     const float t_min = t - back - slack, t_max = t + back + slack;
     float t_before = t - back;
     vec2 parameter_before = parameter - back * d.xz;
     vec3 refined_position, refined_normal;
-    // A window that spans more than a march step of the surface (a coarse cell seen at a
-    // grazing angle) can hold several crossings, and Newton from its front may land on any of
-    // them: march it for the first change of side, then refine within that step. The march
-    // runs over the part of the window inside the slab |y - level| <= amplitude, which holds
-    // both the mesh's point and every crossing.
+    // On the screen's grid, a window longer than half the shortest wavelength (a coarse cell
+    // seen at a grazing angle) can hold several crossings, and Newton from its front may land on
+    // any of them: march it for the first change of side, then refine within that step. The
+    // march runs over the part of the window inside the slab |y - level| <= amplitude, which
+    // holds both the mesh's point and every crossing.
     const float to_top = (params.level + params.amplitude - eye.y) / d.y;
     const float to_bottom = (params.level - params.amplitude - eye.y) / d.y;
     const float march_lo = max(t - back, min(to_top, to_bottom)), march_hi = min(t + back, max(to_top, to_bottom));
     const float window_run = (march_hi - march_lo) * length(d.xz);
-    const bool can_march = params.march_step > 0.0 && march_hi > march_lo;
+    const bool can_march = WATER_SCREEN_GRID != 0u && params.march_step > 0.0 && march_hi > march_lo;
     const uint steps = can_march ? clamp(uint(ceil(window_run / params.march_step)), 2u, REFINEMENT_MAX_MARCH_STEPS) : 0u;
     const bool march_first = can_march && window_run > REFINEMENT_MARCH_WINDOW * params.march_step;
     if ((march_first && refine_by_march(eye, d, march_lo, march_hi, steps, slack, refined_position, refined_normal)) ||

@@ -29,18 +29,18 @@ layout(set = 0, binding = 1, std430) readonly buffer Optics { SceneOptics optics
 const uint SURFACE_FRESNEL_EXACT = 0u;
 const uint SURFACE_FRESNEL_SCHLICK = 1u;
 const uint SURFACE_FRESNEL_POWER = 2u;
-// Specialization constants (passes/water/water_shading.cpp); constant 0 is the wave model's
-// (water/surface_refinement.glsl). As constants, the paths a scene does not take are compiled
+// Specialization constants (passes/water/water_shading.cpp); constants 0 and 1 are the wave
+// model's and the mesh's (water/surface_refinement.glsl). As constants, the paths a scene does not take are compiled
 // out instead of run masked.
-layout(constant_id = 1) const uint FRESNEL_MODEL = SURFACE_FRESNEL_EXACT;  // effects.water.fresnel
-layout(constant_id = 2) const uint DEPTH_BLEND = 0u;        // 1: Optical Phenomena c. 2008's depth colour
-layout(constant_id = 3) const uint REFLECTION_METHOD = 0u;  // SCENE_LOOKUP_*: 0 off, 1 projective, 2 screen-space
-layout(constant_id = 4) const uint REFRACTION_METHOD = 0u;
+layout(constant_id = 2) const uint FRESNEL_MODEL = SURFACE_FRESNEL_EXACT;  // effects.water.fresnel
+layout(constant_id = 3) const uint DEPTH_BLEND = 0u;        // 1: Optical Phenomena c. 2008's depth colour
+layout(constant_id = 4) const uint REFLECTION_METHOD = 0u;  // SCENE_LOOKUP_*: 0 off, 1 projective, 2 screen-space
+layout(constant_id = 5) const uint REFRACTION_METHOD = 0u;
 // The camera's side of the surface when every pixel shares it (0 the air, 1 the water), or 2:
 // per pixel, camera_in_water() (the stencil split's mask, or the frame constants).
-layout(constant_id = 5) const uint CAMERA_SIDE = 2u;
+layout(constant_id = 6) const uint CAMERA_SIDE = 2u;
 bool eye_in_water() { return CAMERA_SIDE == 2u ? camera_in_water() : CAMERA_SIDE == 1u; }
-layout(constant_id = 6) const uint GLITTER = 0u;  // effects.water.glitter: 1 the sun's glitter lobe
+layout(constant_id = 7) const uint GLITTER = 0u;  // effects.water.glitter: 1 the sun's glitter lobe
 
 // The surface's Fresnel split as the scene chooses it (effects.water.fresnel): the exact equations
 // (the model, docs/model.md section 2); Schlick's approximation; or Optical Phenomena c. 2008's power term
@@ -167,15 +167,7 @@ void main() {
     vec3 p, normal;  // normal: toward the air
     bool outside;
     water_surface_of_pixel(eye, v, in_position, in_normal, in_parameter, in_mesh_sag, p, normal, outside);
-    if (outside) discard;
-#ifdef VKWATER_SCENE_VIEWS
-    // With receiver meshes, the depth of the point shown, not of the mesh under it: a receiver
-    // that breaks the surface (lake's post and rock) meets the water where the surface is, not
-    // where a coarse cell's chord is. Without them nothing reads the difference (the floor lies
-    // below the slab), and llvmpipe's late depth test would cost the pass.
-    const vec4 clip = frame.view_proj * vec4(p, 1.0);
-    gl_FragDepth = clip.z / clip.w;
-#endif
+    if (WATER_SCREEN_GRID != 0u && outside) discard;
     float n = frame.water.y;
     // The slopes this pixel cannot resolve (their screen derivatives need uniform control flow).
     const vec3 unresolved = GLITTER != 0u ? pixel_unresolved_slopes(p) : vec3(0.0);

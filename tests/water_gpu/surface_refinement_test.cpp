@@ -406,7 +406,7 @@ TEST_F(water_gpu_refinement, ChoppyOceanFromBelow) {
     expect_ocean_refined(context(), {0.0, -2.0, 10.0}, {0.0, 0.0, 0.0});
 }
 
-// The same surfaces drawn from the screen's grid (the renderer's default, 8-pixel cells): the
+// The same surfaces drawn from the screen's grid (water.mesh_cell_pixels, 8-pixel cells): the
 // pixels whose cells are coarse find their crossing by the march, the rest as above.
 constexpr uint32_t kScreenCellPixels = 8;
 
