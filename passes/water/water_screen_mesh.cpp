@@ -11,7 +11,8 @@ ScreenMesh screen_mesh(uint32_t cell_pixels, const Camera& camera, double aspect
     ScreenMesh mesh;
     mesh.cell_pixels = cell_pixels;
     mesh.amplitude = static_cast<float>(amplitude);
-    if (!(amplitude > 0.0)) return mesh;  // flat water: every vertex is its own surface point
+    // The uniform mesh needs no margin; flat water neither (every vertex is its own surface point).
+    if (cell_pixels == 0 || !(amplitude > 0.0)) return mesh;
     const double tan_y = std::tan(camera.fov_y_deg * std::numbers::pi / 360.0), tan_x = tan_y * aspect;
     const double scale = 1.0 / std::min(tan_x, tan_y);  // NDC per unit of x / z or y / z, the larger
     const double widest = 1.0 + kMaxScreenMeshMargin;   // the widened grid's edge, NDC

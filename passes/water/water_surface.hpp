@@ -58,7 +58,7 @@ struct WaterSurfaceModel {
     float sag_per_diagonal_squared = 0.0f;
     float mesh_sag = 0.0f;  // m: that bound for a cell of the uniform mesh
     // m: the horizontal run of the per-pixel march that brackets the first crossing where the
-    // mesh is coarse: a quarter of the shortest wavelength (the ocean: its node spacing).
+    // screen's grid is coarse: an eighth of the shortest wavelength (the ocean: its node spacing).
     float march_step = 0.0f;
     // A bound on the height's slope over world (x, z), for the march's steps; 0: none (the ocean,
     // or waves steep enough to fold).

@@ -30,8 +30,8 @@ const uint SURFACE_FRESNEL_EXACT = 0u;
 const uint SURFACE_FRESNEL_SCHLICK = 1u;
 const uint SURFACE_FRESNEL_POWER = 2u;
 // Specialization constants (passes/water/water_shading.cpp); constants 0 and 1 are the wave
-// model's and the mesh's (water/surface_refinement.glsl). As constants, the paths a scene does not take are compiled
-// out instead of run masked.
+// model's and the mesh's (water/surface_refinement.glsl). As constants, the paths a scene does
+// not take are compiled out instead of run masked.
 layout(constant_id = 2) const uint FRESNEL_MODEL = SURFACE_FRESNEL_EXACT;  // effects.water.fresnel
 layout(constant_id = 3) const uint DEPTH_BLEND = 0u;        // 1: Optical Phenomena c. 2008's depth colour
 layout(constant_id = 4) const uint REFLECTION_METHOD = 0u;  // SCENE_LOOKUP_*: 0 off, 1 projective, 2 screen-space

@@ -1,7 +1,8 @@
-// The push constants of the water surface's draw (water_surface.vert or water_surface_screen.vert, and .frag) and of the
-// camera-medium pass (camera_medium_mask.frag); their C++ type, WaterSurfacePush in
-// passes/water/water_surface_draw.hpp, is generated from water_surface.frag. The choices that change which code
-// runs (the wave model, the Fresnel form, the lookups) are specialization constants instead.
+// The push constants of the water surface's draw (water_surface.vert or
+// water_surface_screen.vert, and .frag) and of the camera-medium pass (camera_medium_mask.frag);
+// their C++ type, WaterSurfacePush in passes/water/water_surface_draw.hpp, is generated from
+// water_surface.frag. The choices that change which code runs (the wave model, the Fresnel form,
+// the lookups, the screen's grid) are specialization constants instead.
 #ifndef VKWATER_WATER_SURFACE_PARAMS_GLSL
 #define VKWATER_WATER_SURFACE_PARAMS_GLSL
 
@@ -23,7 +24,8 @@ layout(push_constant) uniform Params {
     float mesh_sag;         // m: how far the uniform mesh may lie from the surface (a cell's chord)
     float bottom_y;         // the camera-medium pass: the water volume's bottom,
     float amplitude;        // a bound on |surface height - level| (the camera-medium pass, the screen mesh)
-    // The screen-following mesh (water/water_surface_screen.vert); screen_cells_x = 0: the uniform mesh.
+    // The screen's grid (water/water_surface_screen.vert and, in the fragment stage, the code
+    // that constant WATER_SCREEN_GRID compiles in); unused by the uniform mesh.
     uint screen_cells_x, screen_cells_y;  // cells across and down the widened viewport
     float screen_margin;    // NDC: how far the grid reaches past each edge of the viewport
     float sag_per_diagonal_squared;  // 1/m: a cell's sag over its diagonal squared (|d^2 P / du^2| / 8)

@@ -80,7 +80,7 @@ void apply_quality(const Quality& quality, const Quality& top, Scene& scene) {
     if (scene.water && quality.photon_grid > 0) {
         scene.water->grid_resolution = quality.photon_grid;
         // As quality_arguments says it: below the top, the uniform mesh the cost and error models
-        // were fitted with; at the top, the scene's own mesh (by default the screen's grid).
+        // were fitted with; at the top, the scene's own mesh (the screen's grid where it asks).
         if (quality.mesh_resolution != top.mesh_resolution || quality.photon_grid != top.photon_grid) {
             scene.water->mesh_resolution = quality.mesh_resolution;
             scene.water->mesh_cell_pixels.reset();
