@@ -38,6 +38,28 @@ TEST(FrameStats, WarmUpAndWaitingFramesAreNotCounted) {
         << summary;
 }
 
+TEST(FrameStats, MediansSeeTheLastValuesAndTheMeanSeesAll) {
+    // A viewer left running keeps kSummaryValues intervals, not one per frame: after twice that
+    // many intervals of 10 ms and then kSummaryValues of 30 ms, the median is 30 ms (the last
+    // values only) and the mean over all of them (10 + 10 + 30) / 3 = 16.67 ms.
+    FrameStats stats;
+    constexpr size_t n = FrameStats::kSummaryValues;
+    for (uint32_t i = 0; i < FrameStats::kWarmupFrames; ++i) stats.add_frame(1000.0, true);
+    for (size_t i = 0; i < 2 * n; ++i) stats.add_frame(10.0, true);
+    for (size_t i = 0; i < n; ++i) stats.add_frame(30.0, true);
+    const std::string summary = stats.summary(3 * n + FrameStats::kWarmupFrames + 1);
+    EXPECT_NE(summary.find("frame time over 30000 intervals: median (of the last 10000) 30.00 ms (33.33 fps), "
+                           "mean 16.67 ms (60.00 fps)"),
+              std::string::npos)
+        << summary;
+}
+
+TEST(RecentValues, KeepsTheLastCapacityValuesInOrder) {
+    RecentValues values(3);
+    for (double v : {1.0, 2.0, 3.0, 4.0, 5.0}) values.add(v);
+    EXPECT_EQ(values.values(), (std::vector<double>{3.0, 4.0, 5.0}));
+}
+
 TEST(FrameStats, PassMediansCountTheFramesEachPassRanIn) {
     FrameStats stats;
     fg::FrameReport a;

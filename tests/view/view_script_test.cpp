@@ -32,9 +32,10 @@ TEST(ViewScript, ParsesEveryCommand) {
 11: mode fly
 12: reload-shaders
 12: wait-file /tmp/go
+12: heap
 )",
                                                 "s.txt");
-    ASSERT_EQ(script.commands.size(), 11u);
+    ASSERT_EQ(script.commands.size(), 12u);
     const auto& c = script.commands;
     // Sorted by frame; within frame 0 and frame 7, in the file's order.
     EXPECT_EQ(c[0].verb, ScriptVerb::Camera);
@@ -61,6 +62,7 @@ TEST(ViewScript, ParsesEveryCommand) {
     EXPECT_EQ(c[9].verb, ScriptVerb::ReloadShaders);
     EXPECT_EQ(c[10].verb, ScriptVerb::WaitFile);
     EXPECT_EQ(c[10].text, "/tmp/go");
+    EXPECT_EQ(c[11].verb, ScriptVerb::Heap);
     // The move at frame 0 over 30 frames arrives at frame 30: 31 frames are needed.
     EXPECT_EQ(script.frames_needed(), 31u);
 }
@@ -86,6 +88,7 @@ TEST(ViewScript, RefusesMalformedLinesNamingFileAndLine) {
         {"3: pause now", "pause takes 0 arguments, got 1"},
         {"3: time soon", "time: 'soon' is not a finite number"},
         {"3: wait-file", "wait-file takes 1 argument, got 0 (accepted: wait-file PATH)"},
+        {"3: heap now", "heap takes 0 arguments, got 1"},
         {"3: screenshot shot", "screenshot 'shot' does not end in .exr (accepted: screenshot PATH.exr"},
         {"3: screenshot shot.png", "screenshot 'shot.png' does not end in .exr"},
     };

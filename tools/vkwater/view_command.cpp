@@ -78,7 +78,7 @@ Run add_view_command(CLI::App& app) {
         ->capture_default_str();
     command->add_option("--script", args->script,
                         "Run the commands of this file by frame (FRAME: camera|move|resize|set|screenshot|pause|"
-                        "resume|time|mode|reload-shaders|wait-file ...; tools/vkwater/view/view_script.hpp)");
+                        "resume|time|mode|reload-shaders|wait-file|heap ...; tools/vkwater/view/view_script.hpp)");
     command
         ->add_option("--pass-timing-every", args->viewer.timing_every,
                      "Run the scene graph alone every N frames for per-pass times (fence-timed on CPU "

@@ -9,6 +9,9 @@
 // devices each pass is its own submission, fence-timed on the CPU clock (lavapipe's timestamps
 // leave out raster work); the report names the method. The present graph (tonemap and
 // overlay) is timed as one submission on the CPU clock.
+//
+// Medians are over the last kSummaryValues values of each series, so that a viewer left running
+// for days holds the same memory as one that ran a minute; the mean frame time is over all of them.
 #pragma once
 
 #include "engine/framegraph/executor.hpp"
@@ -21,10 +24,25 @@
 
 namespace vkw::window {
 
+// The last `capacity` values of a series: what a median over a bounded memory can see.
+class RecentValues {
+public:
+    explicit RecentValues(size_t capacity) : capacity_(capacity) {}
+    void add(double value);
+    std::vector<double> values() const { return {values_.begin(), values_.end()}; }
+    size_t size() const { return values_.size(); }
+    bool empty() const { return values_.empty(); }
+
+private:
+    size_t capacity_;
+    std::deque<double> values_;
+};
+
 class FrameStats {
 public:
     static constexpr uint32_t kWarmupFrames = 3;
     static constexpr size_t kRecentFrames = 30;
+    static constexpr size_t kSummaryValues = 10000;
 
     // The interval from one frame's start to the next one's; `counted`: the first of the two
     // neither waited on purpose nor is a warm-up frame.
@@ -43,17 +61,25 @@ public:
     std::string summary(uint64_t frames) const;
 
 private:
+    struct PassSeries {
+        std::string name;
+        uint64_t timing_frames = 0;  // the timing frames it ran in
+        RecentValues ms{kSummaryValues};
+    };
+
     uint64_t intervals_ = 0;
-    std::vector<double> counted_ms_;
-    std::deque<double> recent_ms_;
+    uint64_t counted_ = 0;
+    double counted_sum_ms_ = 0.0;
+    RecentValues counted_ms_{kSummaryValues};
+    RecentValues recent_ms_{kRecentFrames};
     uint64_t timing_frames_ = 0;
     fg::FrameReport last_report_;
     double last_present_ms_ = 0.0;
     uint64_t last_timing_frame_ = 0;
     std::string method_;
-    std::vector<std::pair<std::string, std::vector<double>>> pass_ms_;  // first-seen order
-    std::vector<double> present_ms_;
-    std::vector<double> total_ms_;
+    std::vector<PassSeries> pass_ms_;  // first-seen order
+    RecentValues present_ms_{kSummaryValues};
+    RecentValues total_ms_{kSummaryValues};
 };
 
 double median(std::vector<double> values);

@@ -15,7 +15,7 @@ namespace {
 
 constexpr std::string_view kForms =
     "FRAME: camera PX PY PZ TX TY TZ | move PX PY PZ TX TY TZ N | resize W H | set KEY=VALUE | "
-    "screenshot PATH.exr | pause | resume | time SECONDS | mode orbit|fly | reload-shaders | wait-file PATH";
+    "screenshot PATH.exr | pause | resume | time SECONDS | mode orbit|fly | reload-shaders | wait-file PATH | heap";
 
 struct VerbName {
     ScriptVerb verb;
@@ -31,7 +31,8 @@ constexpr VerbName kVerbs[] = {{ScriptVerb::Camera, "camera"},
                                {ScriptVerb::Time, "time"},
                                {ScriptVerb::Mode, "mode"},
                                {ScriptVerb::ReloadShaders, "reload-shaders"},
-                               {ScriptVerb::WaitFile, "wait-file"}};
+                               {ScriptVerb::WaitFile, "wait-file"},
+                               {ScriptVerb::Heap, "heap"}};
 
 std::string_view trimmed(std::string_view text) {
     const size_t first = text.find_first_not_of(" \t\r");
@@ -167,7 +168,8 @@ ScriptCommand parse_line(std::string_view line, const LineErrors& errors) {
             break;
         case ScriptVerb::Pause:
         case ScriptVerb::Resume:
-        case ScriptVerb::ReloadShaders: expect_arguments(errors, args, 0, verb->name); break;
+        case ScriptVerb::ReloadShaders:
+        case ScriptVerb::Heap: expect_arguments(errors, args, 0, verb->name); break;
     }
     return command;
 }

@@ -17,6 +17,8 @@
 //   reload-shaders                re-read the .spv files (as the F5 key does)
 //   wait-file PATH                hold the frame loop until PATH exists (at most 60 s): lets an
 //                                 outside step, e.g. a shader rebuild, happen between two frames
+//   heap                          print the bytes the process's C heap holds in use, all threads'
+//                                 arenas together: "heap: frame F, B bytes in use" (leak checks)
 //
 // Commands of one frame run in the file's order. Errors are UserErrors naming the file, the
 // line, and the accepted form.
@@ -45,7 +47,8 @@ enum class ScriptVerb : uint8_t {
     Time,
     Mode,
     ReloadShaders,
-    WaitFile
+    WaitFile,
+    Heap
 };
 const char* script_verb_name(ScriptVerb verb);
 

@@ -28,6 +28,7 @@
 #include "tools/vkwater/view/view_script.hpp"
 #include "tools/vkwater/view/window_input.hpp"
 
+#include <malloc.h>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -37,6 +38,15 @@
 
 namespace vkw::window {
 namespace {
+
+// The bytes malloc has handed out and not taken back: every thread's arena (the driver's worker
+// threads allocate in their own) and the chunks it mapped on its own. Unlike the resident set, this
+// is blind to freed memory the allocator keeps, so a leak shows at once instead of first filling
+// the holes that freed memory left.
+size_t heap_bytes_in_use() {
+    const struct mallinfo2 info = mallinfo2();
+    return info.uordblks + info.hblkhd;
+}
 
 using Clock = std::chrono::steady_clock;
 
@@ -386,6 +396,9 @@ void Viewer::run_command(const ScriptCommand& command) {
             }
             break;
         }
+        case ScriptVerb::Heap:
+            std::printf("heap: frame %llu, %zu bytes in use\n", (unsigned long long)frame_, heap_bytes_in_use());
+            break;
     }
 }
 
