@@ -11,17 +11,39 @@ namespace {
 
 constexpr std::uint32_t kLongNamesFlag = 1u << 10;
 constexpr std::uint32_t kMultiPartFlag = 1u << 12;
+constexpr std::size_t kMagicBytes = 4;
 
-// The name at the stream's position, up to its NUL; nullopt if longer than `max_length` or cut off.
-std::optional<std::string> read_name(std::istream& in, std::size_t max_length) {
-    std::string name;
-    for (char c; in.get(c);) {
-        if (c == '\0') return name;
-        if (name.size() == max_length) return std::nullopt;
-        name.push_back(c);
+// A cursor over the file's bytes.
+struct ByteReader {
+    std::span<const char> file;
+    std::size_t at = kMagicBytes;
+
+    std::size_t left() const { return file.size() - at; }
+
+    // The name at the cursor, up to its NUL; nullopt if longer than `max_length` or cut off.
+    std::optional<std::string> name(std::size_t max_length) {
+        std::string name;
+        while (at < file.size()) {
+            const char c = file[at++];
+            if (c == '\0') return name;
+            if (name.size() == max_length) return std::nullopt;
+            name.push_back(c);
+        }
+        return std::nullopt;
     }
-    return std::nullopt;
-}
+
+    // A little-endian 32-bit word at the cursor; nullopt if the file ends first.
+    std::optional<std::uint32_t> word() {
+        if (left() < 4) {
+            at = file.size();
+            return std::nullopt;
+        }
+        std::uint32_t value = 0;
+        for (int i = 0; i < 4; ++i) value |= std::uint32_t(static_cast<unsigned char>(file[at + i])) << (8 * i);
+        at += 4;
+        return value;
+    }
+};
 
 // `name` as a message shows it: printable ASCII as it is, anything else as '?'.
 std::string printable(std::string name) {
@@ -33,20 +55,18 @@ std::string printable(std::string name) {
 
 }  // namespace
 
-std::optional<std::string> exr_header_problem(std::istream& in, std::uint64_t file_bytes) {
-    unsigned char version_bytes[4];
-    if (!in.read(reinterpret_cast<char*>(version_bytes), 4)) return "the version field is cut off";
-    const std::uint32_t version =
-        version_bytes[0] | (version_bytes[1] << 8) | (version_bytes[2] << 16) | (std::uint32_t(version_bytes[3]) << 24);
-    const std::size_t max_name = (version & kLongNamesFlag) ? 255 : 31;
-    const bool multi_part = (version & kMultiPartFlag) != 0;
+std::optional<std::string> exr_header_problem(std::span<const char> file) {
+    ByteReader in{file};
+    if (file.size() < kMagicBytes) return "the version field is cut off";
+    const std::optional<std::uint32_t> version = in.word();
+    if (!version) return "the version field is cut off";
+    const std::size_t max_name = (*version & kLongNamesFlag) ? 255 : 31;
+    const bool multi_part = (*version & kMultiPartFlag) != 0;
     int attributes = 0;
     for (int part = 0;; ++part) {
         for (int in_part = 0;; ++in_part) {
-            const std::streamoff position = in.tellg();
-            if (position < 0) return "the header runs past the end of the file";
-            const auto at = static_cast<std::uint64_t>(position);
-            const std::optional<std::string> name = read_name(in, max_name);
+            const std::size_t at = in.at;
+            const std::optional<std::string> name = in.name(max_name);
             if (!name) {
                 return "the attribute name at byte " + std::to_string(at) + " is cut off or longer than " +
                        std::to_string(max_name) + " bytes";
@@ -59,24 +79,18 @@ std::optional<std::string> exr_header_problem(std::istream& in, std::uint64_t fi
             if (++attributes > kMaxExrAttributes) {
                 return "more than " + std::to_string(kMaxExrAttributes) + " header attributes";
             }
-            const std::optional<std::string> type = read_name(in, max_name);
-            unsigned char size_bytes[4];
-            if (!type || !in.read(reinterpret_cast<char*>(size_bytes), 4)) {
+            const std::optional<std::string> type = in.name(max_name);
+            const std::optional<std::uint32_t> size_word = type ? in.word() : std::nullopt;
+            if (!size_word) {
                 return "attribute '" + printable(*name) + "' (at byte " + std::to_string(at) +
                        ") is cut off before its size";
             }
-            const auto size = static_cast<std::int32_t>(size_bytes[0] | (size_bytes[1] << 8) | (size_bytes[2] << 16) |
-                                                        (std::uint32_t(size_bytes[3]) << 24));
-            const std::streamoff value_at = in.tellg();
-            if (value_at < 0 || static_cast<std::uint64_t>(value_at) > file_bytes) {
-                return "the header runs past the end of the file";
-            }
-            const std::uint64_t left = file_bytes - static_cast<std::uint64_t>(value_at);
-            if (size < 0 || static_cast<std::uint64_t>(size) > left) {
+            const auto size = static_cast<std::int32_t>(*size_word);
+            if (size < 0 || static_cast<std::uint64_t>(size) > in.left()) {
                 return "attribute '" + printable(*name) + "' (at byte " + std::to_string(at) + ") declares " +
-                       std::to_string(size) + " bytes, and " + std::to_string(left) + " are left in the file";
+                       std::to_string(size) + " bytes, and " + std::to_string(in.left()) + " are left in the file";
             }
-            in.seekg(size, std::ios::cur);
+            in.at += static_cast<std::size_t>(size);
         }
         if (!multi_part) return std::nullopt;
     }

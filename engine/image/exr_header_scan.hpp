@@ -6,18 +6,18 @@
 #pragma once
 
 #include <cstdint>
-#include <istream>
 #include <optional>
+#include <span>
 #include <string>
 
 namespace vkw {
 
-// What is wrong with the header(s) of the OpenEXR file in `in`, which holds `file_bytes` bytes
-// (after the magic number, already checked): an attribute name or type longer than the format
+// What is wrong with the header(s) of the OpenEXR file `file`, all of its bytes (the magic number,
+// already checked, included; the walk starts after it): an attribute name or type longer than the format
 // allows (31 bytes, or 255 with the long-names flag) or cut off by the end of the file, a declared
 // size that is negative or larger than what is left of the file, or more attributes than any file
 // needs (kMaxExrAttributes). nullopt when every header ends where the format says it does.
-std::optional<std::string> exr_header_problem(std::istream& in, std::uint64_t file_bytes);
+std::optional<std::string> exr_header_problem(std::span<const char> file);
 
 inline constexpr int kMaxExrAttributes = 100000;
 

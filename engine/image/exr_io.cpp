@@ -2,11 +2,13 @@
 // (RgbaOutputFile cannot carry the extra layers).
 #include "engine/image/exr_io.hpp"
 
+#include <Iex.h>
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfCheckFile.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
@@ -193,28 +195,45 @@ ImageRGBA32F read_pixels(const std::filesystem::path& path, Imf::InputFile& file
     ImageRGBA32F image;
     image.width = static_cast<int>(width);
     image.height = static_cast<int>(height);
-    image.rgba.resize(image.pixel_count() * 4);
 
     std::set<std::string> layer_names;
     channels.layers(layer_names);
     for (const std::string& name : layer_names) {
         // Layers without colour channels (e.g. "depth.Z") are not ours to interpret.
-        if (has_any_channel(channels, name + ".", kRgb)) {
-            image.layers.push_back({name, std::vector<float>(image.pixel_count() * 3)});
-        }
+        if (has_any_channel(channels, name + ".", kRgb)) image.layers.push_back({name, {}});
+    }
+    for (const char* name : kRgba) require_full_resolution(path, channels, name);
+    for (const ExtraLayer& layer : image.layers) {
+        for (const char* name : kRgb) require_full_resolution(path, channels, layer.name + "." + name);
     }
 
-    // Every slice is FLOAT: OpenEXR converts half and uint on the way in.
-    Imf::FrameBuffer frame_buffer;
-    for (const char* name : kRgba) require_full_resolution(path, channels, name);
-    // Fill value 1 makes a missing A read as opaque.
-    add_interleaved_slices(frame_buffer, "", kRgba, Imf::FLOAT, image.rgba.data(), window, 1.0);
-    for (ExtraLayer& layer : image.layers) {
-        for (const char* name : kRgb) require_full_resolution(path, channels, layer.name + "." + name);
-        add_interleaved_slices(frame_buffer, layer.name + ".", kRgb, Imf::FLOAT, layer.rgb.data(), window, 0.0);
+    // The pixels are read a strip of rows at a time into storage reserved for all of them, each
+    // strip's values made only when it is read: a header may declare up to kMaxReadSide^2 pixels
+    // over a few hundred bytes of data, and such a file, cut short, then fails at its first
+    // missing chunk instead of after its whole image (up to 4 GiB) has been zeroed. 256 rows is a
+    // whole number of every compression's chunk height (1, 16, 32 or 256 scanlines).
+    constexpr int kStripRows = 256;
+    const std::size_t row_pixels = static_cast<std::size_t>(width);
+    image.rgba.reserve(image.pixel_count() * 4);
+    for (ExtraLayer& layer : image.layers) layer.rgb.reserve(image.pixel_count() * 3);
+    for (int first = window.min.y; first <= window.max.y; first += kStripRows) {
+        const int last = std::min(window.max.y, first + kStripRows - 1);
+        const std::size_t strip_pixels = row_pixels * static_cast<std::size_t>(last - first + 1);
+        const Imath::Box2i strip(Imath::V2i(window.min.x, first), Imath::V2i(window.max.x, last));
+        // Every slice is FLOAT: OpenEXR converts half and uint on the way in.
+        Imf::FrameBuffer frame_buffer;
+        image.rgba.resize(image.rgba.size() + strip_pixels * 4);
+        // Fill value 1 makes a missing A read as opaque.
+        add_interleaved_slices(frame_buffer, "", kRgba, Imf::FLOAT,
+                               image.rgba.data() + image.rgba.size() - strip_pixels * 4, strip, 1.0);
+        for (ExtraLayer& layer : image.layers) {
+            layer.rgb.resize(layer.rgb.size() + strip_pixels * 3);
+            add_interleaved_slices(frame_buffer, layer.name + ".", kRgb, Imf::FLOAT,
+                                   layer.rgb.data() + layer.rgb.size() - strip_pixels * 3, strip, 0.0);
+        }
+        file.setFrameBuffer(frame_buffer);
+        file.readPixels(first, last);
     }
-    file.setFrameBuffer(frame_buffer);
-    file.readPixels(window.min.y, window.max.y);
     for (auto it = file.header().begin(); it != file.header().end(); ++it) {
         if (const auto* text = dynamic_cast<const Imf::StringAttribute*>(&it.attribute())) {
             image.attributes.push_back({it.name(), text->value()});
@@ -223,30 +242,77 @@ ImageRGBA32F read_pixels(const std::filesystem::path& path, Imf::InputFile& file
     return image;
 }
 
+// An OpenEXR input stream over a file's bytes in memory. It says it is memory-mapped, so the
+// reader takes the pixel data from the bytes where they lie instead of copying them out.
+class MemoryInput : public Imf::IStream {
+public:
+    MemoryInput(std::span<const char> bytes, const std::string& name) : Imf::IStream(name.c_str()), bytes_(bytes) {}
+
+    bool isMemoryMapped() const override { return true; }
+    char* readMemoryMapped(int n) override {
+        char* at = const_cast<char*>(bytes_.data()) + position_;  // OpenEXR's interface; it only reads
+        advance(n);
+        return at;
+    }
+    // As OpenEXR's file streams do: a read past the end throws, and the result says whether bytes are left.
+    bool read(char c[], int n) override {
+        const std::uint64_t from = position_;
+        advance(n);
+        std::copy_n(bytes_.data() + from, n, c);
+        return position_ < bytes_.size();
+    }
+    uint64_t tellg() override { return position_; }
+    void seekg(uint64_t position) override { position_ = position; }
+
+private:
+    void advance(int n) {
+        if (n < 0 || position_ > bytes_.size() || static_cast<std::uint64_t>(n) > bytes_.size() - position_) {
+            throw Iex::InputExc("unexpected end of file");
+        }
+        position_ += static_cast<std::uint64_t>(n);
+    }
+
+    std::span<const char> bytes_;
+    std::uint64_t position_ = 0;
+};
+
+// The whole file, as read_exr's checks and reader take it.
+std::vector<char> read_file_bytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::vector<char> bytes(std::filesystem::file_size(path));
+    if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()))) {
+        throw UserError("cannot read " + quoted_path(path) + ": the file could not be read to its end");
+    }
+    return bytes;
+}
+
 }  // namespace
 
 ImageRGBA32F read_exr(const std::filesystem::path& path) {
     require_readable_file_path(path);
-    {
-        std::ifstream in(path, std::ios::binary);
-        // Checking the magic number first gives "not an OpenEXR file" instead of a library message.
-        char magic[4] = {};
-        if (!in.read(magic, 4) || !Imf::isImfMagic(magic)) {
-            throw UserError("cannot read " + quoted_path(path) + ": not an OpenEXR file");
-        }
-        // OpenEXR allocates what each header attribute declares before reading it: the sizes are
-        // checked against the file first (exr_header_scan.hpp).
-        if (const auto problem = exr_header_problem(in, std::filesystem::file_size(path))) {
-            throw UserError("cannot read " + quoted_path(path) + ": a corrupt OpenEXR header (" + *problem + ")");
-        }
+    // The file is read once: the header walk, OpenEXR's checker and its reader all take these
+    // bytes (the checker alone opened the file four times, and the fuzzer spent its time there).
+    return read_exr_bytes(read_file_bytes(path), path);
+}
+
+ImageRGBA32F read_exr_bytes(std::span<const char> bytes, const std::filesystem::path& path) {
+    // Checking the magic number first gives "not an OpenEXR file" instead of a library message.
+    if (bytes.size() < 4 || !Imf::isImfMagic(bytes.data())) {
+        throw UserError("cannot read " + quoted_path(path) + ": not an OpenEXR file");
+    }
+    // OpenEXR allocates what each header attribute declares before reading it: the sizes are
+    // checked against the file first (exr_header_scan.hpp).
+    if (const auto problem = exr_header_problem(bytes)) {
+        throw UserError("cannot read " + quoted_path(path) + ": a corrupt OpenEXR header (" + *problem + ")");
     }
     // OpenEXR's own validator reads every part of the file with bounded memory and time; the
     // library's readers trust what a header declares, so a corrupt file is refused here first.
-    if (Imf::checkOpenEXRFile(path.c_str(), /*reduceMemory=*/true, /*reduceTime=*/true)) {
+    if (Imf::checkOpenEXRFile(bytes.data(), bytes.size(), /*reduceMemory=*/true, /*reduceTime=*/true)) {
         throw UserError("cannot read " + quoted_path(path) + ": a corrupt or truncated OpenEXR file");
     }
     try {
-        Imf::InputFile file(path.c_str());
+        MemoryInput stream(bytes, path.string());
+        Imf::InputFile file(stream);
         return read_pixels(path, file);
     } catch (const UserError&) {
         throw;

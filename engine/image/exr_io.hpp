@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <span>
 
 #include "engine/image/image.hpp"
 
@@ -32,5 +33,9 @@ ExrWriteReport write_exr(const std::filesystem::path& path, const ImageRGBA32F& 
 // Throws UserError (one line naming the path) for a missing, unreadable, corrupt or truncated file,
 // and for one that declares more than 16384 pixels a side (refused before any pixel is allocated).
 ImageRGBA32F read_exr(const std::filesystem::path& path);
+
+// The same for a file's bytes already in memory (read_exr reads the file into memory once and
+// calls this); `name` stands for the file in messages.
+ImageRGBA32F read_exr_bytes(std::span<const char> bytes, const std::filesystem::path& name);
 
 }  // namespace vkw

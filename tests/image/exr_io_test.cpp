@@ -150,6 +150,28 @@ TEST(image_exr_io, ExtraLayersRoundTripSortedByName) {
     expect_bit_identical(image.rgba, back.rgba);
 }
 
+// The pixels are read in strips of 256 rows: an image of 700 rows (two whole strips and a part)
+// with layers reads back bit for bit, and so does a foreign file whose data window starts at row 20.
+TEST(image_exr_io, ImagesTallerThanAStripReadBackExactly) {
+    ScratchDir dir;
+    const ImageRGBA32F image = make_test_image(5, 700, {"caustic", "in_scatter"});
+    write_exr(dir / "tall.exr", image);
+    const ImageRGBA32F back = read_exr(dir / "tall.exr");
+    ASSERT_EQ(back.height, 700);
+    ASSERT_EQ(back.layers.size(), 2u);
+    expect_bit_identical(image.rgba, back.rgba);
+    expect_bit_identical(image.layers[0].rgb, back.layers[0].rgb);
+    expect_bit_identical(image.layers[1].rgb, back.layers[1].rgb);
+
+    write_foreign_exr(dir / "tall_rgb.exr", 10, 20, 3, 600, {"R", "G", "B"});
+    const ImageRGBA32F foreign = read_exr(dir / "tall_rgb.exr");
+    // Pixel (1, 599) is pixel 599 * 3 + 1 = 1798: R = 17980 as a half (17984, halves 16 apart there).
+    EXPECT_EQ(foreign.pixel(1, 599)[0], static_cast<float>(half(17980.0f)));
+    EXPECT_EQ(foreign.pixel(1, 599)[3], 1.0f);
+    // Pixel (2, 256), the first row of the second strip: pixel 770, G = 7701 as a half.
+    EXPECT_EQ(foreign.pixel(2, 256)[1], static_cast<float>(half(7701.0f)));
+}
+
 // The header carries the standard chromaticities (the renderers' linear RGB is Rec. 709 with a D65
 // white) and every attribute of the image, which read back as written, sorted by name.
 TEST(image_exr_io, AttributesAndChromaticitiesRoundTrip) {
