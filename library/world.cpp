@@ -116,9 +116,12 @@ Result<std::unique_ptr<World>> World::create(const HostDevice& device, const Wor
                                      device.queue,     device.queue_family,    device.enabled_features,
                                      device.allocator, device.debug_utils};
         state->context = std::make_unique<vkw::Context>(borrowed);
+        // The frames in flight share their pipelines and the scene's static device data (the
+        // receiver meshes, the ocean's spectrum): one copy on the device, however many frames.
         const auto pipelines = std::make_shared<vkw::fg::PipelineStore>();
+        const auto uploads = std::make_shared<vkw::SceneUploads>(*state->context);
         for (uint32_t i = 0; i < options.frames_in_flight; ++i) {
-            state->renderers.push_back(std::make_unique<vkw::Renderer>(*state->context, pipelines));
+            state->renderers.push_back(std::make_unique<vkw::Renderer>(*state->context, pipelines, uploads));
         }
     });
     if (!status) return status;

@@ -330,28 +330,19 @@ struct Renderer::CompiledFrame {
 };
 
 const passes::OceanSpectrumBuffer* Renderer::ocean_spectrum(const Scene& scene) {
-    if (!scene.water || scene.water->waves.model != WaveModel::FftOcean) return nullptr;
-    // The spectrum the CPU bounds use too: a new one (new settings or seed) is a new pointer.
-    std::shared_ptr<const FftOceanSpectrum> spectrum =
-        shared_ocean_spectrum(scene.water->waves.ocean, scene.water->waves.seed);
-    if (!ocean_ || spectrum != ocean_source_) {
+    std::shared_ptr<const passes::OceanSpectrumBuffer> ocean = uploads_->ocean_spectrum(scene);
+    if (ocean != ocean_) {
         forget_compiled_frames();  // they imported the old buffer
-        ocean_ = std::make_unique<passes::OceanSpectrumBuffer>(context_, spectrum);
-        ocean_source_ = std::move(spectrum);
+        ocean_ = std::move(ocean);
     }
     return ocean_.get();
 }
 
 const passes::ReceiverMeshes* Renderer::receiver_meshes(const Scene& scene) {
-    if (scene.receivers.empty()) return nullptr;
-    // Receivers are static: the meshes are uploaded once per scene object and count.
-    if (!receivers_ || receivers_source_ != &scene || receivers_load_id_ != scene.load_id ||
-        receivers_count_ != scene.receivers.size()) {
+    std::shared_ptr<const passes::ReceiverMeshes> receivers = uploads_->receiver_meshes(scene);
+    if (receivers != receivers_) {
         forget_compiled_frames();  // they imported the old buffers
-        receivers_ = std::make_unique<passes::ReceiverMeshes>(context_, scene.receivers);
-        receivers_source_ = &scene;
-        receivers_load_id_ = scene.load_id;
-        receivers_count_ = scene.receivers.size();
+        receivers_ = std::move(receivers);
     }
     return receivers_.get();
 }
@@ -401,9 +392,11 @@ void Renderer::forget_compiled_frames() {
     for (std::unique_ptr<CompiledFrame>& frame : compiled_) frame.reset();
 }
 
-Renderer::Renderer(Context& context, std::shared_ptr<fg::PipelineStore> pipelines)
+Renderer::Renderer(Context& context, std::shared_ptr<fg::PipelineStore> pipelines,
+                   std::shared_ptr<SceneUploads> uploads)
     : context_(context),
       pipelines_(pipelines ? std::move(pipelines) : std::make_shared<fg::PipelineStore>()),
+      uploads_(uploads ? std::move(uploads) : std::make_shared<SceneUploads>(context)),
       constants_(std::make_unique<FrameConstants>()) {}
 
 Renderer::~Renderer() = default;

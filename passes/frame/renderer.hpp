@@ -13,6 +13,7 @@
 #include "passes/caustics/caustic_map_carry.hpp"
 #include "passes/caustics/caustics_read_region.hpp"
 #include "passes/common/frame_constants.hpp"
+#include "passes/frame/scene_uploads.hpp"
 
 #include <array>
 #include <cstdint>
@@ -110,8 +111,10 @@ class Renderer {
 public:
     // `pipelines`: a store shared with other renderers on the same device (the embedding library's
     // frames in flight, one renderer each); pipelines never change once made, so sharing is safe.
+    // `uploads`: the scene's static device data, shared the same way (scene_uploads.hpp).
     // None: the renderer's own.
-    explicit Renderer(Context& context, std::shared_ptr<fg::PipelineStore> pipelines = nullptr);
+    explicit Renderer(Context& context, std::shared_ptr<fg::PipelineStore> pipelines = nullptr,
+                      std::shared_ptr<SceneUploads> uploads = nullptr);
     ~Renderer();
     RenderResult render(const Scene& scene, const RenderOptions& options);
 
@@ -145,18 +148,16 @@ private:
     fg::ImportedImage kept_caustic_map(const fg::ImageInfo& info, CausticMapCarry mode);
     Context& context_;
     std::shared_ptr<fg::PipelineStore> pipelines_;
+    std::shared_ptr<SceneUploads> uploads_;
     std::unique_ptr<FrameConstants> constants_;  // stable address, read when the frame records
     std::unique_ptr<Readback> readback_;         // declared before compiled_: destroyed after them
     // Per RenderOptions::caustic_map_carry: the frame's declaration and the objects that run it.
     std::array<std::unique_ptr<CompiledFrame>, 3> compiled_;
-    std::unique_ptr<passes::OceanSpectrumBuffer> ocean_;    // the FFT ocean's h0 on the device
-    std::shared_ptr<const FftOceanSpectrum> ocean_source_;  // the CPU spectrum it was made from
-    std::unique_ptr<passes::ReceiverMeshes> receivers_;     // the scene's receiver meshes on the device
-    passes::CausticReadRegionCache read_regions_;           // the photon culling's region, while the camera stays
-    std::unique_ptr<Image> kept_caustic_map_;               // RenderOptions::caustic_map_carry's map
-    const void* receivers_source_ = nullptr;                // the scene whose receivers they are
-    uint64_t receivers_load_id_ = 0;                        // and its Scene::load_id
-    size_t receivers_count_ = 0;
+    // What the compiled frames import from uploads_: held while they may run.
+    std::shared_ptr<const passes::OceanSpectrumBuffer> ocean_;  // the FFT ocean's h0 on the device
+    std::shared_ptr<const passes::ReceiverMeshes> receivers_;   // the scene's receiver meshes on the device
+    passes::CausticReadRegionCache read_regions_;               // the photon culling's region, while the camera stays
+    std::unique_ptr<Image> kept_caustic_map_;                   // RenderOptions::caustic_map_carry's map
     size_t realize_count_ = 0;
     double last_declare_ms_ = 0.0;
 };

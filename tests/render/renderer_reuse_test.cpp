@@ -115,6 +115,28 @@ TEST_F(RendererReuse, ASceneLoadedWhereAFreedOneLivedGetsItsOwnReceivers) {
     EXPECT_NEAR(blue_scene_red, red / 8.0f, 1e-5f * red);
 }
 
+// Renderers given one SceneUploads (the embedding library's frames in flight) upload a scene's
+// receiver meshes once between them, and each renders what a renderer of its own renders, bit
+// for bit; a new scene load is uploaded once more, for all of them.
+TEST_F(RendererReuse, RenderersSharingUploadsUploadTheReceiversOnce) {
+    const auto uploads = std::make_shared<SceneUploads>(context());
+    Renderer first(context(), nullptr, uploads), second(context(), nullptr, uploads), own(context());
+    const RenderOptions options{33, 33, true, fg::TimingMode::None};
+    std::optional<Scene> scene;
+    scene.emplace(overhead_receiver_scene(R"({"type": "box", "half_size": [1, 1, 1], "albedo": [0.8, 0.1, 0.1]})",
+                                          "box.json"));
+    const ImageRGBA32F expected = own.render(*scene, options).image;
+    EXPECT_EQ(first.render(*scene, options).image.rgba, expected.rgba);
+    EXPECT_EQ(second.render(*scene, options).image.rgba, expected.rgba);
+    EXPECT_EQ(uploads->receiver_uploads(), 1u);
+    scene.emplace(overhead_receiver_scene(R"({"type": "box", "half_size": [1, 1, 1], "albedo": [0.1, 0.1, 0.8]})",
+                                          "box.json"));
+    const ImageRGBA32F blue = own.render(*scene, options).image;
+    EXPECT_EQ(second.render(*scene, options).image.rgba, blue.rgba);
+    EXPECT_EQ(first.render(*scene, options).image.rgba, blue.rgba);
+    EXPECT_EQ(uploads->receiver_uploads(), 2u);
+}
+
 // A caller that hands each frame to another image of the same size and format (a host's next
 // target, the embedding library's) keeps the frame's device objects under dynamic rendering, where
 // the executor reads imported images from the graph it runs; a VkRenderPass frame's framebuffers
