@@ -242,36 +242,28 @@ ImageRGBA32F read_pixels(const std::filesystem::path& path, Imf::InputFile& file
     return image;
 }
 
-// An OpenEXR input stream over a file's bytes in memory. It says it is memory-mapped, so the
-// reader takes the pixel data from the bytes where they lie instead of copying them out.
+// An OpenEXR input stream over a file's bytes in memory. It does not offer them as memory-mapped:
+// OpenEXR 3.1's scanline reader would then decode an uncompressed chunk in place, reading the
+// whole line's bytes from where the chunk starts even when the chunk declares fewer, past the end
+// of the bytes (a 484-byte file from the fuzzer did that). Copied out, each chunk lands in a
+// buffer as large as its lines.
 class MemoryInput : public Imf::IStream {
 public:
     MemoryInput(std::span<const char> bytes, const std::string& name) : Imf::IStream(name.c_str()), bytes_(bytes) {}
 
-    bool isMemoryMapped() const override { return true; }
-    char* readMemoryMapped(int n) override {
-        char* at = const_cast<char*>(bytes_.data()) + position_;  // OpenEXR's interface; it only reads
-        advance(n);
-        return at;
-    }
     // As OpenEXR's file streams do: a read past the end throws, and the result says whether bytes are left.
     bool read(char c[], int n) override {
-        const std::uint64_t from = position_;
-        advance(n);
-        std::copy_n(bytes_.data() + from, n, c);
+        if (n < 0 || position_ > bytes_.size() || static_cast<std::uint64_t>(n) > bytes_.size() - position_) {
+            throw Iex::InputExc("unexpected end of file");
+        }
+        std::copy_n(bytes_.data() + position_, n, c);
+        position_ += static_cast<std::uint64_t>(n);
         return position_ < bytes_.size();
     }
     uint64_t tellg() override { return position_; }
     void seekg(uint64_t position) override { position_ = position; }
 
 private:
-    void advance(int n) {
-        if (n < 0 || position_ > bytes_.size() || static_cast<std::uint64_t>(n) > bytes_.size() - position_) {
-            throw Iex::InputExc("unexpected end of file");
-        }
-        position_ += static_cast<std::uint64_t>(n);
-    }
-
     std::span<const char> bytes_;
     std::uint64_t position_ = 0;
 };
@@ -303,11 +295,14 @@ ImageRGBA32F read_exr_bytes(std::span<const char> bytes, const std::filesystem::
     // OpenEXR allocates what each header attribute declares before reading it: the sizes are
     // checked against the file first (exr_header_scan.hpp).
     if (const auto problem = exr_header_problem(bytes)) {
-        throw UserError("cannot read " + quoted_path(path) + ": a corrupt OpenEXR header (" + *problem + ")");
+        throw UserError("cannot read " + quoted_path(path) + ": a corrupt OpenEXR file (" + *problem + ")");
     }
     // OpenEXR's own validator reads every part of the file with bounded memory and time; the
     // library's readers trust what a header declares, so a corrupt file is refused here first.
-    if (Imf::checkOpenEXRFile(bytes.data(), bytes.size(), /*reduceMemory=*/true, /*reduceTime=*/true)) {
+    // Its core check too: it refuses chunks whose sizes do not add up, such as an uncompressed
+    // chunk shorter than its lines, which the reader would fill from beyond the chunk.
+    if (Imf::checkOpenEXRFile(bytes.data(), bytes.size(), /*reduceMemory=*/true, /*reduceTime=*/true,
+                              /*enableCoreCheck=*/true)) {
         throw UserError("cannot read " + quoted_path(path) + ": a corrupt or truncated OpenEXR file");
     }
     try {

@@ -385,9 +385,10 @@ def gltf_cases():
 
 # --- EXR -----------------------------------------------------------------------------------------
 
-def small_exr(width=8, height=6):
+def small_exr(width=8, height=6, short_line=None):
     """An uncompressed scanline OpenEXR of float B, G, R, written by hand (the format's layout:
-    magic, version, header attributes, the line offset table, then one chunk per line)."""
+    magic, version, header attributes, the line offset table, then one chunk per line). With
+    short_line=y, that line's chunk declares and holds 8 bytes instead of its 3 * width floats."""
     def attribute(name, kind, value):
         return name.encode() + b"\0" + kind.encode() + b"\0" + struct.pack("<i", len(value)) + value
 
@@ -403,6 +404,8 @@ def small_exr(width=8, height=6):
     for y in range(height):
         pixels = b"".join(struct.pack(f"<{width}f", *[(c + 1) * 0.25 + 0.01 * (x + y) for x in range(width)])
                           for c in range(3))
+        if y == short_line:
+            pixels = pixels[:8]
         lines.append(struct.pack("<ii", y, len(pixels)) + pixels)
     offset = len(header) + 8 * height
     table = b""
@@ -435,7 +438,12 @@ def exr_cases():
     # allocates them (engine/image/exr_header_scan.hpp).
     j = valid.find(b"screenWindowWidth\0float\0") + len(b"screenWindowWidth\0float\0")
     add_exr("attribute-huge", valid[:j] + struct.pack("<i", 2000000000) + valid[j + 4:],
-            r"a corrupt OpenEXR header \(attribute 'screenWindowWidth' \(at byte \d+\) declares 2000000000 bytes")
+            r"a corrupt OpenEXR file \(attribute 'screenWindowWidth' \(at byte \d+\) declares 2000000000 bytes")
+    # An uncompressed chunk shorter than its line, every offset consistent: OpenEXR's reader would
+    # take the rest of the line from whatever follows the chunk, and its checker lets it pass.
+    add_exr("chunk-short", small_exr(short_line=2),
+            r"a corrupt OpenEXR file \(the chunk of line 2 \(at byte \d+\) holds 8 bytes, and an uncompressed "
+            r"line of this image takes 96\)")
     flipped = bytearray(valid)
     for k in range(len(flipped) // 2, len(flipped), 97):
         flipped[k] ^= 0x5A
