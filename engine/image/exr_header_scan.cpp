@@ -4,6 +4,7 @@
 // file has one header per part and an empty header after the last.
 #include "engine/image/exr_header_scan.hpp"
 
+#include <algorithm>
 #include <cctype>
 
 namespace vkw {
@@ -124,7 +125,7 @@ std::string printable(std::string name) {
 
 }  // namespace
 
-std::optional<std::string> exr_header_problem(std::span<const char> file) {
+std::optional<std::string> exr_header_problem(std::span<const char> file, ExrWindowSize* largest) {
     ByteReader in{file};
     if (file.size() < kMagicBytes) return "the version field is cut off";
     const std::optional<std::uint32_t> version = in.word();
@@ -162,8 +163,15 @@ std::optional<std::string> exr_header_problem(std::span<const char> file) {
                 return "attribute '" + printable(*name) + "' (at byte " + std::to_string(at) + ") declares " +
                        std::to_string(size) + " bytes, and " + std::to_string(in.left()) + " are left in the file";
             }
-            if (scanlines)
-                note_attribute(layout, *name, *type, in.file.subspan(in.at, static_cast<std::size_t>(size)), in);
+            const std::span<const char> value = in.file.subspan(in.at, static_cast<std::size_t>(size));
+            if (scanlines) note_attribute(layout, *name, *type, value, in);
+            if (largest != nullptr && *name == "dataWindow") {
+                LineLayout window;  // every part's, multi-part and tiled files' too
+                note_attribute(window, *name, *type, value, in);
+                if (std::max(window.width, window.height) > std::max(largest->width, largest->height)) {
+                    *largest = {window.width, window.height};
+                }
+            }
             in.at += static_cast<std::size_t>(size);
         }
         if (!multi_part) return std::nullopt;

@@ -21,7 +21,13 @@ namespace vkw {
 // needs (kMaxExrAttributes), or, in an uncompressed single-part scanline file, a line whose chunk
 // (where the offset table points, inside the file) holds other than the line's bytes. nullopt
 // when every header ends where the format says it does and every such chunk fits its line.
-std::optional<std::string> exr_header_problem(std::span<const char> file);
+// `largest`, when given, receives the data window (width and height, in pixels) with the longest
+// side over every part's header, so that the caller can refuse an oversized image before OpenEXR
+// allocates for it; 0 x 0 when no header has a well-formed dataWindow.
+struct ExrWindowSize {
+    std::int64_t width = 0, height = 0;
+};
+std::optional<std::string> exr_header_problem(std::span<const char> file, ExrWindowSize* largest = nullptr);
 
 inline constexpr int kMaxExrAttributes = 100000;
 

@@ -173,6 +173,14 @@ bool has_any_channel(const Imf::ChannelList& channels, const std::string& prefix
                        [&](const char* n) { return channels.findChannel(prefix + n) != nullptr; });
 }
 
+void refuse_oversized(const std::filesystem::path& path, std::int64_t width, std::int64_t height) {
+    if (width > kMaxReadSide || height > kMaxReadSide) {
+        throw UserError("cannot read " + quoted_path(path) + ": declares " + std::to_string(width) + "x" +
+                        std::to_string(height) + " pixels (accepted: each side at most " +
+                        std::to_string(kMaxReadSide) + ")");
+    }
+}
+
 ImageRGBA32F read_pixels(const std::filesystem::path& path, Imf::InputFile& file) {
     auto fail = [&](const std::string& why) { throw UserError("cannot read " + quoted_path(path) + ": " + why); };
 
@@ -182,10 +190,7 @@ ImageRGBA32F read_pixels(const std::filesystem::path& path, Imf::InputFile& file
     if (width <= 0 || height <= 0 || width > INT_MAX || height > INT_MAX) {
         fail("invalid data window " + std::to_string(width) + "x" + std::to_string(height));
     }
-    if (width > kMaxReadSide || height > kMaxReadSide) {
-        fail("declares " + std::to_string(width) + "x" + std::to_string(height) +
-             " pixels (accepted: each side at most " + std::to_string(kMaxReadSide) + ")");
-    }
+    refuse_oversized(path, width, height);
 
     const Imf::ChannelList& channels = file.header().channels();
     for (const char* name : kRgb) {
@@ -294,9 +299,12 @@ ImageRGBA32F read_exr_bytes(std::span<const char> bytes, const std::filesystem::
     }
     // OpenEXR allocates what each header attribute declares before reading it: the sizes are
     // checked against the file first (exr_header_scan.hpp).
-    if (const auto problem = exr_header_problem(bytes)) {
+    ExrWindowSize largest;
+    if (const auto problem = exr_header_problem(bytes, &largest)) {
         throw UserError("cannot read " + quoted_path(path) + ": a corrupt OpenEXR file (" + *problem + ")");
     }
+    // Before OpenEXR's checker, which allocates line buffers as wide as the data window.
+    refuse_oversized(path, largest.width, largest.height);
     // OpenEXR's own validator reads every part of the file with bounded memory and time; the
     // library's readers trust what a header declares, so a corrupt file is refused here first.
     // Its core check too: it refuses chunks whose sizes do not add up, such as an uncompressed
