@@ -123,18 +123,16 @@ TEST_F(RendererReuse, RenderersSharingUploadsUploadTheReceiversOnce) {
     Renderer first(context(), nullptr, uploads), second(context(), nullptr, uploads), own(context());
     const RenderOptions options{33, 33, true, fg::TimingMode::None};
     std::optional<Scene> scene;
-    scene.emplace(
-        overhead_receiver_scene(R"({"type": "box", "half_size": [1, 1, 1], "albedo": [0.8, 0.1, 0.1]})", "box.json"));
-    const ImageRGBA32F expected = own.render(*scene, options).image;
-    EXPECT_EQ(first.render(*scene, options).image.rgba, expected.rgba);
-    EXPECT_EQ(second.render(*scene, options).image.rgba, expected.rgba);
-    EXPECT_EQ(uploads->receiver_uploads(), 1u);
-    scene.emplace(
-        overhead_receiver_scene(R"({"type": "box", "half_size": [1, 1, 1], "albedo": [0.1, 0.1, 0.8]})", "box.json"));
-    const ImageRGBA32F blue = own.render(*scene, options).image;
-    EXPECT_EQ(second.render(*scene, options).image.rgba, blue.rgba);
-    EXPECT_EQ(first.render(*scene, options).image.rgba, blue.rgba);
-    EXPECT_EQ(uploads->receiver_uploads(), 2u);
+    // Each scene in turn, a new load each time.
+    for (const char* albedo : {"[0.8, 0.1, 0.1]", "[0.1, 0.1, 0.8]"}) {
+        scene.emplace(overhead_receiver_scene(
+            std::string(R"({"type": "box", "half_size": [1, 1, 1], "albedo": )") + albedo + "}", "box.json"));
+        const size_t uploaded = uploads->receiver_uploads();
+        const ImageRGBA32F expected = own.render(*scene, options).image;
+        EXPECT_EQ(first.render(*scene, options).image.rgba, expected.rgba) << albedo;
+        EXPECT_EQ(second.render(*scene, options).image.rgba, expected.rgba) << albedo;
+        EXPECT_EQ(uploads->receiver_uploads(), uploaded + 1) << albedo;
+    }
 }
 
 // A caller that hands each frame to another image of the same size and format (a host's next
