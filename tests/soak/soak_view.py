@@ -143,8 +143,15 @@ def main():
     frames_per_unit = 2 if args.resizes else 1  # a resize every 2 frames
     growth = per_frame_kib * frames_per_unit * 1000.0
     verdict = "flat" if growth < args.max_growth_kib else "GROWING"
-    resident = (f"; resident set {samples[0][1] / 1024:.0f} MiB at start, {samples[-1][1] / 1024:.0f} MiB at the end"
-                if samples else "")
+    resident = ""
+    if len(samples) >= 10:
+        # The resident set's growth after the same warm-up, per 1,000 frames (or resizes) assuming a
+        # steady frame rate: printed for the record, not judged (see above).
+        resident_steady = samples[len(samples) // 5:]
+        resident_growth = (slope(resident_steady) * (resident_steady[-1][0] - resident_steady[0][0]) /
+                           (heap[-1][0] * 0.8 / frames_per_unit) * 1000.0)
+        resident = (f"; resident set {samples[0][1] / 1024:.0f} MiB at start, {samples[-1][1] / 1024:.0f} MiB at "
+                    f"the end, {resident_growth:.0f} KiB per 1,000 {unit} after warm-up")
     print(f"soak: {frames} frames{' with validation' if args.validation else ''}"
           f"{f', {args.resizes} resizes' if args.resizes else ''} in {seconds:.0f} s; heap in use "
           f"{heap[0][1] / 1024:.1f} MiB at frame 0, {steady[0][1] / 1024:.1f} MiB after warm-up, "
