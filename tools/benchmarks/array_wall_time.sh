@@ -9,6 +9,8 @@
 # rounds. Defaults: build, 48, 4, 2, pool. Prints a Markdown table (docs/sequences.md keeps one).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source "$(dirname "$0")/provenance.sh"
+provenance_start
 build=${1:-build}
 frames=${2:-48}
 tasks=${3:-4}
@@ -56,6 +58,7 @@ for ((round = 0; round < rounds; ++round)); do
 done
 
 median() { printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+provenance_line "$vk"
 echo "| scene | size | frames | one process, s | array of $tasks tasks, s | array / one | rounds | CPUs |"
 echo "| --- | --- | --- | --- | --- | --- | --- | --- |"
 awk -v scene="$scene" -v frames="$frames" -v one="$(median "${one[@]}")" -v arr="$(median "${arr[@]}")" \

@@ -9,6 +9,8 @@
 # stops halving, the last value is the series' floor (the part the knob does not remove). Prints
 # Markdown (docs/accuracy.md keeps the tables). Minutes on 2 cores per scene.
 source "$(dirname "$0")/scene_against_reference.sh"
+source "$(dirname "$0")/provenance.sh"
+provenance_start
 
 # render N ARGS...: prints "relMSE causticRelMSE" of one render against the reference.
 measure() {
@@ -55,3 +57,4 @@ for scale in 1 4; do
   series "photons per water cell (map_scale $scale, 4 spp)" "1 $map --set effects.caustics.sub_photons=1" \
     "4 $map --set effects.caustics.sub_photons=2" "16 $map --set effects.caustics.sub_photons=4"
 done
+provenance_line "$vkwater"

@@ -12,6 +12,8 @@
 # instead of building one in build/frame_ratio/OLD_COMMIT (as frame_ratio.sh does).
 USAGE=tools/benchmarks/equal_time.sh
 source "$(dirname "$0")/old_build.sh"
+source "$(dirname "$0")/provenance.sh"
+provenance_start
 [ ${#scenes[@]} -gt 0 ] || scenes=(pool lake ocean)
 settings=("1 1" "4 1" "9 1" "16 1" "1 2" "4 2" "9 2" "16 2")  # spp, effects.caustics.map_scale
 
@@ -76,3 +78,4 @@ for scene in "${scenes[@]}"; do
   fi
   echo
 done
+provenance_line "$new_vk" "the old build: $old_commit"

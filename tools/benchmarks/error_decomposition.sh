@@ -9,6 +9,8 @@
 # Prints a Markdown table (docs/accuracy.md keeps one per scene). The times are one frame each
 # on a shared machine: read them as rough.
 source "$(dirname "$0")/scene_against_reference.sh"
+source "$(dirname "$0")/provenance.sh"
+provenance_start
 echo "| kernel | map_scale | spp | relMSE | caustic relMSE | frame ms |"
 echo "| --- | --- | --- | --- | --- | --- |"
 settings=("adaptive 1 1" "adaptive 1 16" "adaptive 2 1" "adaptive 2 16" "adaptive 4 1" "adaptive 4 16"
@@ -23,3 +25,4 @@ for setting in "${settings[@]}"; do
   caustic=$(sed -n 's/.*caustic relMSE \([0-9.e+-]*\),.*/\1/p' <<<"$line")
   echo "| $kernel | $scale | $spp | $rel | $caustic | $ms |"
 done
+provenance_line "$vkwater"

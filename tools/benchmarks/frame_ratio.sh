@@ -17,6 +17,8 @@
 # both builds render. Prints a Markdown table (docs/performance.md keeps one).
 USAGE=tools/benchmarks/frame_ratio.sh
 source "$(dirname "$0")/old_build.sh"
+source "$(dirname "$0")/provenance.sh"
+provenance_start
 [ ${#scenes[@]} -gt 0 ] || scenes=(calm pool lake ocean underwater box)
 width=${WIDTH:-800} height=${HEIGHT:-600} repeat=${REPEAT:-2}
 read -r -a render_args <<< "${RENDER_ARGS:-}"
@@ -73,3 +75,4 @@ awk -F'\t' -v old="$old_commit" '
         print "| " scene " | " p " | " ms_median(scene, "old", p) " | " unit_median(scene, "old", p, sky) " | - | - | - |" }
     }
   }' "$work/times.tsv"
+provenance_line "$new_vk" "the old build: $old_commit"

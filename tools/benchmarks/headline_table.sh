@@ -24,9 +24,8 @@ scenes=(${SCENES:-pool lake ocean box showcase/pool showcase/lagoon calm underwa
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-load_before=$(cut -d' ' -f1-3 /proc/loadavg)
-commit=$(git rev-parse --short HEAD)
-git diff --quiet HEAD 2>/dev/null || commit="$commit with uncommitted changes"
+source tools/benchmarks/provenance.sh
+provenance_start
 
 # Frame 2's "frame" and "calibration" lines of the pass list: "<frame ms> <calibration ms>".
 frame_and_calibration() {
@@ -40,15 +39,11 @@ for round in $(seq "$rounds"); do
     frame_and_calibration "$out.txt" > "$out.times"
   done
 done
-device=$(sed -n 's/^device: \(.*\) (instance .*/\1/p' "$work/$(echo "${scenes[0]}" | tr / _).1.txt" | head -1)
-
 # A number to three significant digits; anything else (n/a) as it is.
 number() { if [[ $1 =~ ^[-+0-9.eE]+$ ]]; then printf '%.3g' "$1"; else printf '%s' "$1"; fi; }
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
-load_after=$(cut -d' ' -f1-3 /proc/loadavg)
-echo "Measured $(date -u +%Y-%m-%d) at $commit on ${device:-the default device}, $(nproc) CPUs;" \
-  "load average $load_before before and $load_after after; median of $rounds rounds."
+provenance_line "$vk" "median of $rounds rounds"
 echo
 echo "| scene | frame at 800x600, ms | frame, calibration passes | relMSE at 400x300 | caustic-layer relMSE |"
 echo "| --- | --- | --- | --- | --- |"

@@ -14,6 +14,8 @@
 # pass of every scene at the last size. docs/performance.md keeps the tables.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source "$(dirname "$0")/provenance.sh"
+provenance_start
 
 rounds=${1:-3}
 shift $(( $# >= 1 ? 1 : 0 ))
@@ -46,6 +48,7 @@ for round in $(seq 1 "$rounds"); do
   done
 done > "$work/times.tsv"
 
+provenance_line "$vk"
 echo "device: $(cat "$work/device.txt"); timing: $(cat "$work/method.txt"); frame $frames of \`--repeat $frames\`, median of $rounds rounds"
 echo
 awk -F'\t' -v last_size="${sizes[${#sizes[@]}-1]}" -v scene_list="${scenes[*]}" -v size_list="${sizes[*]}" '

@@ -10,6 +10,8 @@
 # Prints a Markdown table (docs/sequences.md keeps one).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source "$(dirname "$0")/provenance.sh"
+provenance_start
 build=${1:-build}
 frames=${2:-240}
 rounds=${3:-2}
@@ -60,6 +62,7 @@ median() { printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print (NR % 
 one_s=$(median "${one[@]}")
 each_s=$(median "${each[@]}")
 device=$("$vk" render "scenes/calm.json" --width 8 --height 8 --out "$scratch/probe.exr" | sed -n 's/^device: \(.*\) (instance.*/\1/p')
+provenance_line "$vk"
 echo "| scene | size | one process, $frames frames: s per frame (fps) | one process per frame, $((frames / 10)) frames: s per frame (fps) | ratio | rounds | device |"
 echo "| --- | --- | --- | --- | --- | --- | --- |"
 awk -v scene="$scene" -v one="$one_s" -v each="$each_s" -v rounds="$rounds" -v device="$device" 'BEGIN {

@@ -10,6 +10,8 @@
 # Prints one Markdown table row per scene (docs/performance.md "The frame-time budget").
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source "$(dirname "$0")/provenance.sh"
+provenance_start
 budget=${1:-66}
 frames=${2:-200}
 size=${3:-800x600}
@@ -33,6 +35,7 @@ relmse_at_reference_size() {  # SCENE ARGS...: relMSE against the box reference,
     "$vk" compare "$out/small.exr" "$reference" | awk '/^relMSE/ {print $2; exit}'
 }
 
+provenance_line "$vk"
 echo "| scene | median frame ms | fps | changes | settings at exit | relMSE own settings | relMSE budget's settings |"
 echo "| --- | --- | --- | --- | --- | --- | --- |"
 for scene in "${scenes[@]}"; do

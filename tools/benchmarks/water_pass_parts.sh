@@ -14,6 +14,8 @@
 # (docs/performance.md, "Where the water pass's time goes").
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source "$(dirname "$0")/provenance.sh"
+provenance_start
 rounds=${1:-3} scene=${2:-pool}
 vkwater=build/tools/vkwater/vkwater
 [ -x "$vkwater" ] || { echo "build first: $vkwater is missing" >&2; exit 1; }
@@ -70,6 +72,7 @@ for round in $(seq "$rounds"); do
   done
 done > "$work/times"
 
+provenance_line "$vkwater"
 echo "| $scene, 800x600 | water pass, ms | calibration, ms | water / calibration | water / as built |"
 echo "| --- | --- | --- | --- | --- |"
 python3 - "$work/times" "${variants[@]}" <<'PY'
