@@ -15,6 +15,17 @@ constexpr std::uint32_t kMultiPartFlag = 1u << 12;
 constexpr std::uint32_t kTiledFlag = 1u << 9;
 constexpr std::size_t kMagicBytes = 4;
 
+// The little-endian unsigned integer of `bytes` bytes at `at` (the caller checked they are there).
+std::uint64_t little_endian(std::span<const char> data, std::size_t at, int bytes) {
+    std::uint64_t value = 0;
+    for (int k = 0; k < bytes; ++k) value |= std::uint64_t(static_cast<unsigned char>(data[at + k])) << (8 * k);
+    return value;
+}
+
+std::int32_t int32_at(std::span<const char> data, std::size_t at) {
+    return static_cast<std::int32_t>(static_cast<std::uint32_t>(little_endian(data, at, 4)));
+}
+
 // A cursor over the file's bytes.
 struct ByteReader {
     std::span<const char> file;
@@ -40,76 +51,64 @@ struct ByteReader {
             at = file.size();
             return std::nullopt;
         }
-        const std::uint32_t value = word_at(at);
         at += 4;
-        return value;
-    }
-    std::uint32_t word_at(std::size_t i) const {
-        std::uint32_t value = 0;
-        for (int k = 0; k < 4; ++k) value |= std::uint32_t(static_cast<unsigned char>(file[i + k])) << (8 * k);
-        return value;
+        return static_cast<std::uint32_t>(little_endian(file, at - 4, 4));
     }
 };
 
-// What a single-part scanline header says about its uncompressed lines: the data window's width
-// and height and the bytes of one line. Filled from the attributes as the walk passes them.
+// A box2i value's width and height: x_min, y_min, x_max, y_max as int32.
+ExrWindowSize window_size(std::span<const char> box) {
+    return {std::int64_t{int32_at(box, 8)} - int32_at(box, 0) + 1,
+            std::int64_t{int32_at(box, 12)} - int32_at(box, 4) + 1};
+}
+
+// The bytes of one pixel over every channel of a chlist value, nullopt unless the list parses and
+// every channel is at full resolution. Each channel: name\0, int32 pixel type (0 uint, 1 half,
+// 2 float), uint8 linear, 3 reserved bytes, int32 x and y sampling; an empty name ends the list.
+std::optional<std::uint64_t> pixel_bytes(std::span<const char> list) {
+    std::uint64_t bytes = 0;
+    std::size_t i = 0;
+    while (i < list.size() && list[i] != '\0') {
+        while (i < list.size() && list[i] != '\0') ++i;
+        if (list.size() - i < 17) return std::nullopt;
+        const std::int32_t kind = int32_at(list, i + 1);
+        if (kind < 0 || kind > 2 || int32_at(list, i + 9) != 1 || int32_at(list, i + 13) != 1) return std::nullopt;
+        bytes += kind == 1 ? 2 : 4;
+        i += 17;
+    }
+    if (i >= list.size()) return std::nullopt;  // no terminating empty name
+    return bytes;
+}
+
+// What a single-part scanline header says about its uncompressed lines, filled from the attributes
+// as the walk passes them.
 struct LineLayout {
     bool uncompressed = false;
-    bool channels_known = false;  // a channel list that parses, every channel at full resolution
-    std::int64_t width = 0, height = 0;
-    std::uint64_t pixel_bytes = 0;  // the bytes of one pixel over every channel
+    ExrWindowSize window;
+    std::optional<std::uint64_t> pixel_bytes;
 };
-
-void note_attribute(LineLayout& layout, const std::string& name, const std::string& type, std::span<const char> value,
-                    const ByteReader& in) {
-    const auto word = [&](std::size_t i) {
-        return static_cast<std::int32_t>(in.word_at(static_cast<std::size_t>(value.data() - in.file.data()) + i));
-    };
-    if (name == "compression" && type == "compression" && value.size() == 1) {
-        layout.uncompressed = value[0] == 0;
-    } else if (name == "dataWindow" && type == "box2i" && value.size() == 16) {
-        layout.width = std::int64_t{word(8)} - word(0) + 1;
-        layout.height = std::int64_t{word(12)} - word(4) + 1;
-    } else if (name == "channels" && type == "chlist") {
-        // Each channel: name\0, int32 pixel type (0 uint, 1 half, 2 float), uint8 linear, 3
-        // reserved bytes, int32 x and y sampling; an empty name ends the list.
-        layout.pixel_bytes = 0;
-        std::size_t i = 0;
-        while (i < value.size() && value[i] != '\0') {
-            while (i < value.size() && value[i] != '\0') ++i;
-            if (value.size() - i < 17) return;
-            const std::int32_t kind = word(i + 1), x_sampling = word(i + 9), y_sampling = word(i + 13);
-            if (kind < 0 || kind > 2 || x_sampling != 1 || y_sampling != 1) return;
-            layout.pixel_bytes += kind == 1 ? 2 : 4;
-            i += 17;
-        }
-        layout.channels_known = i < value.size();
-    }
-}
 
 // In an uncompressed single-part scanline file every line is one chunk of exactly its bytes.
 // OpenEXR's reader takes a shorter chunk's missing bytes from whatever follows it, and its checker
 // lets that pass, so the chunks the offset table points at are checked here. Offsets outside the
 // file are left to OpenEXR (it rebuilds a broken table by walking the chunks, or refuses the file).
 std::optional<std::string> uncompressed_line_problem(const ByteReader& in, const LineLayout& layout) {
-    if (!layout.uncompressed || !layout.channels_known || layout.width <= 0 || layout.height <= 0 ||
-        layout.width > (1 << 24) || layout.height > (1 << 24)) {
+    const auto [width, height] = layout.window;
+    if (!layout.uncompressed || !layout.pixel_bytes || width <= 0 || height <= 0 || width > (1 << 24) ||
+        height > (1 << 24)) {
         return std::nullopt;
     }
-    const std::uint64_t line_bytes = static_cast<std::uint64_t>(layout.width) * layout.pixel_bytes;
-    const auto table_entries = static_cast<std::uint64_t>(layout.height);
-    if (table_entries > in.left() / 8) return std::nullopt;  // a cut-off table: OpenEXR's to judge
-    for (std::uint64_t line = 0; line < table_entries; ++line) {
-        std::uint64_t offset = 0;
-        for (int k = 0; k < 8; ++k) {
-            offset |= std::uint64_t(static_cast<unsigned char>(in.file[in.at + 8 * line + k])) << (8 * k);
-        }
+    const std::uint64_t line_bytes = static_cast<std::uint64_t>(width) * *layout.pixel_bytes;
+    const auto lines = static_cast<std::uint64_t>(height);
+    if (lines > in.left() / 8) return std::nullopt;  // a cut-off table: OpenEXR's to judge
+    for (std::uint64_t line = 0; line < lines; ++line) {
+        const std::uint64_t offset = little_endian(in.file, in.at + 8 * line, 8);
         if (offset < in.at || offset > in.file.size() || in.file.size() - offset < 8) continue;
-        const std::uint32_t size = in.word_at(static_cast<std::size_t>(offset) + 4);
-        if (size != line_bytes) {
+        const std::int32_t size = int32_at(in.file, static_cast<std::size_t>(offset) + 4);
+        if (size < 0 || static_cast<std::uint64_t>(size) != line_bytes) {
             return "the chunk of line " + std::to_string(line) + " (at byte " + std::to_string(offset) + ") holds " +
-                   std::to_string(static_cast<std::int32_t>(size)) +
-                   " bytes, and an uncompressed line of this image takes " + std::to_string(line_bytes);
+                   std::to_string(size) + " bytes, and an uncompressed line of this image takes " +
+                   std::to_string(line_bytes);
         }
     }
     return std::nullopt;
@@ -135,7 +134,7 @@ std::optional<std::string> exr_header_problem(std::span<const char> file, ExrWin
     const bool scanlines = !multi_part && (*version & kTiledFlag) == 0;
     LineLayout layout;
     int attributes = 0;
-    for (int part = 0;; ++part) {
+    while (true) {  // each part's header
         for (int in_part = 0;; ++in_part) {
             const std::size_t at = in.at;
             const std::optional<std::string> name = in.name(max_name);
@@ -164,13 +163,18 @@ std::optional<std::string> exr_header_problem(std::span<const char> file, ExrWin
                        std::to_string(size) + " bytes, and " + std::to_string(in.left()) + " are left in the file";
             }
             const std::span<const char> value = in.file.subspan(in.at, static_cast<std::size_t>(size));
-            if (scanlines) note_attribute(layout, *name, *type, value, in);
-            if (largest != nullptr && *name == "dataWindow") {
-                LineLayout window;  // every part's, multi-part and tiled files' too
-                note_attribute(window, *name, *type, value, in);
-                if (std::max(window.width, window.height) > std::max(largest->width, largest->height)) {
-                    *largest = {window.width, window.height};
+            if (*name == "dataWindow" && *type == "box2i" && size == 16) {
+                // Every part's, multi-part and tiled files' too, for `largest`.
+                const ExrWindowSize window = window_size(value);
+                if (scanlines) layout.window = window;
+                if (largest != nullptr &&
+                    std::max(window.width, window.height) > std::max(largest->width, largest->height)) {
+                    *largest = window;
                 }
+            } else if (scanlines && *name == "compression" && *type == "compression" && size == 1) {
+                layout.uncompressed = value[0] == 0;
+            } else if (scanlines && *name == "channels" && *type == "chlist") {
+                layout.pixel_bytes = pixel_bytes(value);
             }
             in.at += static_cast<std::size_t>(size);
         }

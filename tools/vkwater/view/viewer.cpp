@@ -397,7 +397,8 @@ void Viewer::run_command(const ScriptCommand& command) {
             break;
         }
         case ScriptVerb::Heap:
-            std::printf("heap: frame %llu, %zu bytes in use\n", (unsigned long long)frame_, heap_bytes_in_use());
+            std::printf("heap: frame %llu, %zu bytes in use\n", static_cast<unsigned long long>(frame_),
+                        heap_bytes_in_use());
             break;
     }
 }
