@@ -8,9 +8,9 @@
 #include <limits>
 #include <numbers>
 #include <string>
-#include <thread>
 
 #include "engine/core/errors.hpp"
+#include "engine/core/parallel.hpp"
 #include "engine/water/fft.hpp"
 
 namespace vkw {
@@ -108,14 +108,10 @@ SampledOceanSurface::SampledOceanSurface(const FftOceanSpectrum& spectrum, doubl
             }
         }
     };
-    const unsigned threads = std::max(1u, std::min<unsigned>(kOceanFieldCount, std::thread::hardware_concurrency()));
-    std::vector<std::thread> pool;
-    for (unsigned t = 0; t < threads; ++t) {
-        pool.emplace_back([&, t] {
-            for (uint32_t f = t; f < kOceanFieldCount; f += threads) transform_field(f);
-        });
-    }
-    for (std::thread& thread : pool) thread.join();
+    const unsigned threads = std::min<unsigned>(kOceanFieldCount, hardware_threads());
+    run_on_threads(threads, [&](unsigned t) {
+        for (uint32_t f = t; f < kOceanFieldCount; f += threads) transform_field(f);
+    });
 
     // The interpolant's amplitude bound and the largest slope at the samples.
     double max_value = 0.0, max_dx = 0.0, max_dz = 0.0, max_dxz = 0.0;

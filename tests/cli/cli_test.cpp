@@ -355,6 +355,21 @@ TEST(cli, TheReferenceRefusesWavesItCannotResolve) {
         << run.output;
 }
 
+// Waves short against the water's depth spread every refracted beam over many texels of the
+// reference's floor caustic map: the ocean's spectrum on a 1 mm patch spreads each over 5e10 texels
+// of its periodic map (the default 128 m patch visits 1.5e9 texels in all), days of work. It is
+// refused at its first beam, naming the waves, and nothing is written.
+TEST(cli, TheReferenceRefusesCausticMapsBeyondItsWorkBound) {
+    const fs::path out = scratch("tiny_patch.exr");
+    fs::remove(out);
+    const std::string ocean = std::string(VKWATER_SOURCE_DIR) + "/scenes/ocean.json";
+    const CommandRun run = run_vkwater("reference " + ocean + " --width 8 --height 6 --out " + out.string() +
+                                       " --set water.waves.patch_size=0.001");
+    expect_clean_failure(run, 1, "water.waves: the reference's caustic map would visit about");
+    EXPECT_NE(run.output.find("(accepted: at most 2e+10 visits"), std::string::npos) << run.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
 // A command-line error is one line with the vkwater: prefix, as every other error is.
 TEST(cli, CommandLineErrorsAreOneLine) {
     const CommandRun run = run_vkwater("passes " + kPool + " --width 0");

@@ -1,11 +1,11 @@
 #include "tools/reference/caustic_in_scatter.hpp"
 
+#include "engine/core/parallel.hpp"
 #include "tools/reference/optics.hpp"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <thread>
 
 namespace vkw::ref {
 
@@ -35,10 +35,7 @@ CausticInScatter::CausticInScatter(const Scene& scene, const WaterSurface& surfa
                                                          settings.cells_per_side, settings.period, level_ - depths_[k]);
         }
     };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < std::max(1u, std::thread::hardware_concurrency()); ++t) pool.emplace_back(worker);
-    worker();
-    for (std::thread& thread : pool) thread.join();
+    run_on_threads(hardware_threads(), [&](unsigned) { worker(); });
     // Half a texel: each segment's midpoint samples the texel it mostly lies in.
     const double side = settings.period > 0.0 ? settings.period : 2.0 * scene.floor.half_extent;
     segment_length_ = 0.5 * side / settings.texels_per_side;

@@ -1,12 +1,14 @@
 #include "tools/reference/floor_caustics.hpp"
 
+#include "engine/core/errors.hpp"
+#include "engine/core/parallel.hpp"
 #include "tools/reference/optics.hpp"
 #include "tools/reference/polygon_clip.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
-#include <thread>
 
 namespace vkw::ref {
 
@@ -28,7 +30,8 @@ FloorCausticMap::FloorCausticMap(const Scene& scene, const WaterSurface& surface
 
 FloorCausticMap::FloorCausticMap(const Scene& scene, const WaterSurface& surface, uint32_t texels_per_side,
                                  uint32_t cells_per_side, const Tile& cells, const Tile& texels, double plane_y)
-    : texels_(texels_per_side),
+    : source_(scene.source.string()),
+      texels_(texels_per_side),
       centre_(texels.centre),
       half_extent_(texels.half_side),
       texel_size_(2.0 * texels.half_side / texels_per_side),
@@ -41,6 +44,7 @@ FloorCausticMap::FloorCausticMap(const Scene& scene, const WaterSurface& surface
     const glm::dvec3 sigma_t = scene.medium.sigma_t();
     const double extent = cells.half_side;
     const uint32_t m = cells_per_side;
+    triangles_ = 2.0 * m * m;
     // The surface's vertices and their refracted rays, one row at a time.
     struct Vertex {
         glm::dvec3 position;
@@ -68,6 +72,7 @@ FloorCausticMap::FloorCausticMap(const Scene& scene, const WaterSurface& surface
         for (uint32_t i = 0; i < m; ++i) {
             const Vertex* quad[4] = {&previous[i], &previous[i + 1], &current[i + 1], &current[i]};
             for (const auto& triangle : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
+                ++triangles_passed_;
                 const Vertex& a = *quad[triangle[0]];
                 const Vertex& b = *quad[triangle[1]];
                 const Vertex& c = *quad[triangle[2]];
@@ -93,8 +98,35 @@ FloorCausticMap::FloorCausticMap(const Scene& scene, const WaterSurface& surface
     }
 }
 
+// The deposits' work is the texels in their footprints' bounding boxes: about 1.5e9 for the FFT
+// ocean's finer floor map and a few 1e7 for the other built-in scenes' maps. Waves short against
+// the depth below them (an FFT patch of 1e-3 m over 1.5 m of water) spread each beam over
+// thousands of texels, and the map would take days: refused as soon as the work done, or the
+// work projected from the triangles passed so far (after 256 of them, with 8 times the bound as
+// the margin for a start unlike the rest), passes the bound.
+void FloorCausticMap::charge_visits(double box) {
+    constexpr double kMaxTexelVisits = 2e10;
+    constexpr double kProjectionMargin = 8.0;
+    constexpr double kProjectionStart = 256.0;
+    visits_ += box;
+    const double projected = visits_ * triangles_ / std::max(1.0, triangles_passed_);
+    if (visits_ <= kMaxTexelVisits &&
+        (triangles_passed_ < kProjectionStart || projected <= kProjectionMargin * kMaxTexelVisits))
+        return;
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "%s: water.waves: the reference's caustic map would visit about %.2g texels, each beam spreading "
+                  "over %.3g of them (accepted: at most %.0e visits, waves long against the water's depth)",
+                  source_.c_str(), std::max(projected, visits_), visits_ / std::max(1.0, triangles_passed_),
+                  kMaxTexelVisits);
+    throw UserError(text);
+}
+
 int64_t FloorCausticMap::texel_of(double coordinate) const {
-    return static_cast<int64_t>(std::floor((coordinate - centre_ + half_extent_) / texel_size_));
+    // Clamped where doubles stop counting whole texels (a beam running nearly level for 1e14 m
+    // lands 1e20 texels away), and well inside int64_t.
+    const double texel = std::floor((coordinate - centre_ + half_extent_) / texel_size_);
+    return static_cast<int64_t>(std::clamp(texel, -kFarthestTexel, kFarthestTexel));
 }
 
 int64_t FloorCausticMap::texel_index(int64_t x, int64_t z) const {
@@ -128,6 +160,15 @@ void FloorCausticMap::deposit(const glm::dvec2 footprint[3], const glm::dvec3& f
     const int64_t x1 = periodic_ ? texel_of(hi.x) : std::min(last, texel_of(hi.x));
     const int64_t z0 = periodic_ ? texel_of(lo.y) : std::max(first, texel_of(lo.y));
     const int64_t z1 = periodic_ ? texel_of(hi.y) : std::min(last, texel_of(hi.y));
+    if (periodic_ && std::max({-x0, x1, -z0, z1}) >= int64_t(kFarthestTexel)) {
+        char text[320];
+        std::snprintf(text, sizeof text,
+                      "%s: water.waves: a refracted beam reaches the floor %.3g m away, beyond where the reference's "
+                      "periodic caustic map places a texel (accepted: slopes that refract the sun downward)",
+                      source_.c_str(), glm::length(hi));
+        throw UserError(text);
+    }
+    charge_visits(double(x1 - x0 + 1) * double(z1 - z0 + 1));
     for (int64_t z = z0; z <= z1; ++z) {
         for (int64_t x = x0; x <= x1; ++x) {
             const glm::dvec2 corner(centre_ - half_extent_ + x * texel_size_, centre_ - half_extent_ + z * texel_size_);
@@ -168,9 +209,13 @@ RefinedFloorCaustics refine_floor_caustics(const Scene& scene, const WaterSurfac
     };
     // The two maps are independent: the finer one is built on a thread of its own.
     RefinedFloorCaustics refined;
-    std::thread fine([&] { refined.map = build(2 * coarse_cells_per_side); });
-    const std::unique_ptr<FloorCausticMap> coarse_map = build(coarse_cells_per_side);
-    fine.join();
+    std::unique_ptr<FloorCausticMap> coarse_map;
+    run_on_threads(2, [&](unsigned index) {
+        if (index == 0)
+            coarse_map = build(coarse_cells_per_side);
+        else
+            refined.map = build(2 * coarse_cells_per_side);
+    });
     const FloorCausticMap& coarse = *coarse_map;
     double mean = 0.0;
     for (const glm::dvec3& e : coarse.texels()) mean += e.x + e.y + e.z;

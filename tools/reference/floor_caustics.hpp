@@ -21,6 +21,7 @@
 
 #include <glm/glm.hpp>
 
+#include <string>
 #include <vector>
 
 namespace vkw::ref {
@@ -65,9 +66,15 @@ private:
     FloorCausticMap(const Scene& scene, const WaterSurface& surface, uint32_t texels_per_side, uint32_t cells_per_side,
                     const Tile& cells, const Tile& texels, double plane_y);
     void deposit(const glm::dvec2 footprint[3], const glm::dvec3& flux);
+    // Counts a deposit's work (the texels of its footprint's bounding box) and refuses, naming
+    // the waves, a map whose work done or projected passes a bound.
+    void charge_visits(double box_texels);
+    static constexpr double kFarthestTexel = 0x1p52;
     int64_t texel_of(double coordinate) const;
     // The texel (x, z) in the row-major array, wrapped on a periodic map; -1 outside the map.
     int64_t texel_index(int64_t x, int64_t z) const;
+    std::string source_;  // the scene file, for the refusal
+    double triangles_ = 0.0, triangles_passed_ = 0.0, visits_ = 0.0;
     uint32_t texels_;
     double centre_, half_extent_, texel_size_;
     bool periodic_;

@@ -1,12 +1,12 @@
 #include "tools/reference/pixel_footprint.hpp"
 
+#include "engine/core/parallel.hpp"
 #include "tools/reference/reference_renderer.hpp"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <optional>
-#include <thread>
 
 namespace vkw::ref {
 
@@ -35,11 +35,7 @@ PixelFootprints under_water_pixel_footprints(const Scene& scene, const WaterTran
             }
         }
     };
-    const unsigned count = threads ? threads : std::max(1u, std::thread::hardware_concurrency());
-    std::vector<std::thread> pool;
-    for (unsigned i = 1; i < count; ++i) pool.emplace_back(trace_rows);
-    trace_rows();
-    for (std::thread& thread : pool) thread.join();
+    run_on_threads(threads ? threads : hardware_threads(), [&](unsigned) { trace_rows(); });
 
     PixelFootprints footprints;
     for (uint32_t y = 0; y + 1 < height; ++y) {

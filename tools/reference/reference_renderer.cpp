@@ -1,11 +1,11 @@
 #include "tools/reference/reference_renderer.hpp"
 
+#include "engine/core/parallel.hpp"
 #include "tools/reference/water_transport.hpp"
 
 #include <algorithm>
 #include <atomic>
 #include <optional>
-#include <thread>
 #include <vector>
 
 namespace vkw::ref {
@@ -137,11 +137,8 @@ ImageRGBA32F render_reference(const Scene& scene, const ReferenceOptions& option
             if (reports_progress && options.progress) options.progress(double(done) / options.height);
         }
     };
-    const unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-    std::vector<std::thread> pool;
-    for (unsigned i = 1; i < threads; ++i) pool.emplace_back(worker, false);
-    worker(true);  // the calling thread works too, and is the one that reports progress
-    for (std::thread& thread : pool) thread.join();
+    // The calling thread (index 0) works too, and is the one that reports progress.
+    run_on_threads(options.threads ? options.threads : hardware_threads(), [&](unsigned index) { worker(index == 0); });
     if (options.progress) options.progress(1.0);
     image.layers.push_back(std::move(caustic));
     image.layers.push_back(std::move(in_scatter));
