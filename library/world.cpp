@@ -2,6 +2,8 @@
 // a host's command buffer, on a vkw::Context that borrows the host's device.
 #include <vkwater/world.hpp>
 
+#include <vkwater/scene.hpp>
+
 #include "engine/core/errors.hpp"
 #include "engine/framegraph/executor.hpp"
 #include "engine/scene/range.hpp"
@@ -92,6 +94,12 @@ World::~World() = default;
 Result<std::unique_ptr<World>> World::load(const HostDevice& device, const std::string& scene_file,
                                            const WorldOptions& options) {
     return create(device, options, [&](State& state) { state.scene = vkw::load_scene(scene_file, options.overrides); });
+}
+
+Result<std::unique_ptr<World>> World::load(const HostDevice& device, const Scene& scene, const WorldOptions& options) {
+    return create(device, options, [&](State& state) {
+        state.scene = vkw::parse_scene(scene_json(scene), "in-memory scene", options.overrides);
+    });
 }
 
 Result<std::unique_ptr<World>> World::parse(const HostDevice& device, const std::string& scene_json,

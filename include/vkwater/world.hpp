@@ -23,6 +23,8 @@
 
 namespace vkwater {
 
+struct Scene;  // <vkwater/scene.hpp>
+
 // A pinhole camera in the scene's frame (metres, y up). Its projection is reverse Z: see matrices().
 struct Camera {
     std::array<double, 3> position{0.0, 0.0, 0.0};
@@ -99,6 +101,10 @@ class World {
 public:
     // A scene file (JSON, scenes/README.md).
     static Result<std::unique_ptr<World>> load(const HostDevice& device, const std::string& scene_file,
+                                               const WorldOptions& options = {});
+    // A scene built in code (<vkwater/scene.hpp>), checked as a file would be; messages name it
+    // "in-memory scene".
+    static Result<std::unique_ptr<World>> load(const HostDevice& device, const Scene& scene,
                                                const WorldOptions& options = {});
     // The same from JSON text in memory; `name` stands in for the file in messages and glTF paths.
     static Result<std::unique_ptr<World>> parse(const HostDevice& device, const std::string& scene_json,

@@ -2,6 +2,7 @@
 // the frame recorded into the host's command buffer and targets equals the CLI renderer's image
 // wherever the host drew nothing, the host's nearer pixels survive, every Vulkan object goes
 // through the host's allocator, and a mistake in the host's targets is a Status naming it.
+#include <vkwater/scene.hpp>
 #include <vkwater/world.hpp>
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/device_features.hpp"
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
@@ -282,6 +284,123 @@ void WorldTest::expect_renderers_image_outside_the_box(const std::string& scene)
     }
     EXPECT_EQ(box, size_t{kBoxX1 - kBoxX0} * (kBoxY1 - kBoxY0));
     EXPECT_EQ(lit, outside);  // pool has no black pixel: a blank frame would fail here
+}
+
+// scenes/pool.json built in code (<vkwater/scene.hpp>), field for field.
+vkwater::Scene pool_in_code() {
+    vkwater::Scene scene;
+    scene.camera = {{0.0, 1.2, 4.0}, {0.0, -1.5, -2.0}, 60.0, 0.05, 500.0};
+    scene.sun = {80.0, 30.0, {3.0, 3.0, 3.0}};
+    scene.sky.radiance = {0.3, 0.45, 0.7};
+    scene.floor = {-1.5, {0.6, 0.6, 0.6}, 10.0};
+    vkwater::Water water;
+    water.grid_resolution = 1024;
+    water.waves = {{0.017, 0.5, 0.0, 0.0, 0.0}, {0.017, 0.5, 90.0, 90.0, 0.0}};
+    scene.water = water;
+    scene.medium.preset = "pure";
+    return scene;
+}
+
+// A scene built in code goes through the file's loader: pool in structs renders pool.json's image
+// bit for bit.
+TEST_F(WorldTest, ASceneBuiltInCodeRendersAsItsFile) {
+    auto world = vkwater::World::load(host_device(), pool_in_code());
+    ASSERT_TRUE(world) << world.status().message;
+    make_targets();
+    const vkwater::Status status = run_frame(*world.value());
+    ASSERT_TRUE(status) << status.message;
+    expect_renderers_image_outside_the_box(kPool);
+}
+
+// The structs pool does not use (a gradient sky, the medium's coefficients, the three receiver
+// shapes, Gerstner steepness) reach the loader as the scene file that says the same would: the two
+// worlds' frames are equal bit for bit, and not blank.
+TEST_F(WorldTest, EveryStructReachesTheLoaderAsItsJsonField) {
+    vkwater::Scene scene;
+    scene.camera = {{0.5, 1.5, 3.5}, {0.0, -1.0, 0.0}, 55.0, 0.1, 100.0};
+    scene.sun = {50.0, 120.0, {2.0, 1.8, 1.5}};
+    scene.sky.gradient = vkwater::Sky::Gradient{{0.2, 0.3, 0.6}, {0.7, 0.7, 0.8}, {{0.1, 0.1, 0.1}}, 0.7};
+    scene.floor = {-2.0, {0.4, 0.5, 0.3}, 6.0};
+    vkwater::Water water;
+    water.level = 0.1;
+    water.ior = 1.34;
+    water.half_extent = 5.0;
+    water.grid_resolution = 64;
+    water.time = 0.25;
+    water.waves = {{0.02, 0.8, 10.0, 30.0, 0.5}, {0.01, 0.45, 100.0, 0.0, 0.0}};
+    scene.water = water;
+    scene.medium = {"", {0.3, 0.1, 0.05}, {0.1, 0.1, 0.12}, 0.8};
+    vkwater::Receiver box;
+    box.half_size = {0.3, 0.6, 0.3};
+    box.translation = {-0.8, -1.0, -0.5};
+    box.rotation_deg = {0.0, 25.0, 0.0};
+    box.albedo = {0.8, 0.2, 0.2};
+    vkwater::Receiver sphere;
+    sphere.shape = vkwater::Receiver::Shape::Sphere;
+    sphere.radius = 0.35;
+    sphere.translation = {0.7, -1.2, 0.2};
+    sphere.scale = {1.0, 0.6, 1.0};
+    sphere.name = "ball";
+    vkwater::Receiver plane;
+    plane.shape = vkwater::Receiver::Shape::Plane;
+    plane.half_size = {0.5, 0.0, 0.8};
+    plane.translation = {0.0, -1.9, 1.0};
+    scene.receivers = {box, sphere, plane};
+    const std::string file_text = R"({
+      "camera": {"position": [0.5, 1.5, 3.5], "target": [0, -1, 0], "fov_y_deg": 55, "near": 0.1, "far": 100},
+      "sun": {"elevation_deg": 50, "azimuth_deg": 120, "irradiance": [2, 1.8, 1.5]},
+      "sky": {"model": "gradient", "zenith": [0.2, 0.3, 0.6], "horizon": [0.7, 0.7, 0.8],
+              "ground": [0.1, 0.1, 0.1], "exponent": 0.7},
+      "floor": {"height": -2, "albedo": [0.4, 0.5, 0.3], "half_extent": 6},
+      "water": {"level": 0.1, "ior": 1.34, "half_extent": 5, "grid_resolution": 64, "time": 0.25,
+                "waves": {"model": "sum", "components": [
+                  {"amplitude": 0.02, "wavelength": 0.8, "direction_deg": 10, "phase_deg": 30, "steepness": 0.5},
+                  {"amplitude": 0.01, "wavelength": 0.45, "direction_deg": 100}]}},
+      "medium": {"sigma_a": [0.3, 0.1, 0.05], "sigma_s": [0.1, 0.1, 0.12], "g": 0.8},
+      "receivers": [
+        {"type": "box", "half_size": [0.3, 0.6, 0.3], "translation": [-0.8, -1, -0.5], "rotation_deg": [0, 25, 0],
+         "albedo": [0.8, 0.2, 0.2]},
+        {"type": "sphere", "name": "ball", "radius": 0.35, "translation": [0.7, -1.2, 0.2], "scale": [1, 0.6, 1]},
+        {"type": "plane", "half_size": [0.5, 0.8], "translation": [0, -1.9, 1]}]
+    })";
+    make_targets();
+    auto from_structs = vkwater::World::load(host_device(), scene);
+    ASSERT_TRUE(from_structs) << from_structs.status().message;
+    ASSERT_TRUE(run_frame(*from_structs.value()));
+    const size_t values = size_t{kWidth} * kHeight * 4;
+    const std::vector<float> structs_image(color_pixels(), color_pixels() + values);
+    auto from_text = vkwater::World::parse(host_device(), file_text, "structs.json");
+    ASSERT_TRUE(from_text) << from_text.status().message;
+    ASSERT_TRUE(run_frame(*from_text.value()));
+    size_t lit = 0;
+    for (size_t i = 0; i < values; ++i) {
+        ASSERT_EQ(structs_image[i], color_pixels()[i]) << "value " << i;  // the same passes, bit for bit
+        if (i % 4 != 3 && structs_image[i] > 0.0f) ++lit;
+    }
+    EXPECT_GT(lit, values / 2);
+}
+
+// A value out of range in the structs is the loader's message, naming the field as a file's would.
+TEST_F(WorldTest, AStructValueOutOfRangeIsNamedAsItsField) {
+    vkwater::Scene scene = pool_in_code();
+    scene.sun.irradiance[1] = 1e40;
+    const auto bright = vkwater::World::load(host_device(), scene);
+    ASSERT_FALSE(bright);
+    EXPECT_EQ(bright.status().kind, vkwater::ErrorKind::InvalidInput);
+    EXPECT_NE(bright.status().message.find("in-memory scene: sun.irradiance[1]: 1e+40 is out of range"),
+              std::string::npos)
+        << bright.status().message;
+    scene = pool_in_code();
+    scene.camera.fov_y_deg = std::nan("");
+    const auto not_a_number = vkwater::World::load(host_device(), scene);
+    ASSERT_FALSE(not_a_number);
+    EXPECT_NE(not_a_number.status().message.find("camera.fov_y_deg"), std::string::npos)
+        << not_a_number.status().message;
+    scene = pool_in_code();
+    scene.water.reset();
+    const auto dry = vkwater::World::load(host_device(), scene);
+    ASSERT_FALSE(dry);
+    EXPECT_NE(dry.status().message.find("in-memory scene: water: missing"), std::string::npos) << dry.status().message;
 }
 
 // The optional outputs: the caustic layer copied into a host image equals the renderer's layer bit
