@@ -33,6 +33,8 @@ packages=(
   # the sanitizer and fuzzing build of the loaders (tests/sanitize, tests/fuzz): clang with its
   # AddressSanitizer, UndefinedBehaviorSanitizer and libFuzzer runtimes
   clang-14 libclang-rt-14-dev
+  # the frame graph diagram in docs/architecture.md (docs/images/frame_graph.sh, a test)
+  graphviz
   # the bundle that carries the build to a machine without these packages (tools/gpu-bundle.sh)
   xz-utils
   # the batch scheduler test (tests/slurm): a single-node Slurm started in a temporary folder
