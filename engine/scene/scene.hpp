@@ -91,7 +91,7 @@ struct Water {
     // dispatch counts) are checked by the renderer, not here.
     uint32_t grid_resolution = 256;
     // The water is drawn from a mesh, and each pixel then finds the exact surface from the
-    // mesh's point (docs/water_surface.md), so the mesh need not be as fine as the photon grid.
+    // mesh's point (docs/techniques/water_surface.md), so the mesh need not be as fine as the photon grid.
     // By default a uniform mesh over the square (mesh_resolution cells per side, in [2, 4096]);
     // with mesh_cell_pixels (in [1, 64]) a grid that follows the screen instead, with cells about
     // that many pixels wide wherever they are seen. A scene gives at most one.
@@ -208,8 +208,7 @@ struct CausticSettings {
 struct CausticBlurSettings {
     // r0, texels of the caustic map: the blur's radius where photons are as dense as under flat
     // water; it grows as sqrt(E_flat / E) where they are sparser, up to 4 (passes/caustics/caustics_blur.hpp).
-    // 0 (the default): no blur, and the rule leaves the passes out. Measured on pool (docs/methods.md,
-    // Caustics): with the adaptive splat kernel any blur adds error (relMSE 0.0489 -> 0.0505 at
+    // 0 (the default): no blur, and the rule leaves the passes out. Measured on pool (docs/techniques/caustics.md): with the adaptive splat kernel any blur adds error (relMSE 0.0489 -> 0.0505 at
     // 0.5); with the bilinear kernel 0.5 helps (0.0572 -> 0.0511).
     double radius = 0.0;
 };

@@ -7,7 +7,7 @@
 //
 // One full-screen pass ("camera medium", shaders/water/camera_medium_mask.frag) classifies each
 // pixel's near-plane point q against the exact surface, the same wave sum or ocean fields the
-// water's per-pixel refinement evaluates (docs/water_surface.md): q is in the water iff
+// water's per-pixel refinement evaluates (docs/techniques/water_surface.md): q is in the water iff
 // |q.x|, |q.z| <= E, q.y > bottom_y and q.y < the surface's height above (q.x, q.z), found by
 // inverting the horizontal displacement with Newton's method from (q.x, q.z). A point exactly at
 // the surface's height counts as above, as the per-frame fallback and the CPU rule

@@ -1,6 +1,6 @@
 // The water surface recovered per pixel from the mesh it is drawn with: the first crossing of
 // the view ray with the displaced surface P(x) of the scene's wave model, found by Newton's
-// method from the rasterised mesh point (docs/water_surface.md). The mesh
+// method from the rasterised mesh point (docs/techniques/water_surface.md). The mesh
 // then only has to be fine enough for Newton to start near the right crossing; the shading sees
 // the exact surface and its analytic normal wherever the iteration converges.
 //

@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // The water surface drawn from a grid that follows the screen (a projected grid,
-// docs/water_surface.md): screen_cells_x x screen_cells_y cells spread evenly over the viewport,
+// docs/techniques/water_surface.md): screen_cells_x x screen_cells_y cells spread evenly over the viewport,
 // widened by screen_margin past each edge, so that a cell is about as many pixels wide wherever
 // it is seen. Vertex (i, j) stands for the grid parameter where its camera ray meets the mean
 // level (or, for a ray that never does, the point on the water's far edge in the ray's

@@ -24,7 +24,7 @@
 //   difference as h^(1/3) (1.8% at 256 texels, where 2 d* then reaches 1.9%). So at d* the box
 //   check asserts the triangle inequality instead, |map - box| <= |map - tent| + |tent - box|,
 //   with the tent term's derived bound: it still fails if the map strays from the tent-filtered
-//   profile, and the 2.2% kernel bias is reported, not hidden (docs/methods.md, Caustics).
+//   profile, and the 2.2% kernel bias is reported, not hidden (docs/techniques/caustics.md).
 
 #include "tests/caustics/sine_caustic_scene.hpp"
 #include "tests/support/gpu_test.hpp"

@@ -11,7 +11,7 @@
 // Where the comparisons look: pixels at least `margin` pixels from any edge in the reference (a
 // splat reaches at most 7.5 pixels of its level from its photon, kMaxSplatTaps = 16 x 16; closer
 // to a receiver's edge or a silhouette the splats are cut and renormalised, a kernel estimate's
-// boundary bias, documented in docs/methods.md and not asserted here).
+// boundary bias, documented in docs/techniques/caustics.md and not asserted here).
 #include "engine/core/errors.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "engine/water/wave_sum_surface.hpp"
