@@ -2,6 +2,7 @@
 
 #include "engine/core/errors.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -12,12 +13,18 @@ namespace {
 // A convex polygon clipped by the four sides of a square gains at most one vertex per side:
 // the overlap of a polygon of up to kMaxClipped - 4 vertices fits in a fixed array, so
 // overlap_with_square (called millions of times by the caustic maps) allocates nothing.
-constexpr size_t kMaxClipped = 16;
+constexpr size_t kMaxClipped = ColumnCut::kMaxVertices;
 struct FixedPolygon {
     std::array<glm::dvec2, kMaxClipped> vertices;
     size_t size = 0;
     void push_back(const glm::dvec2& v) { vertices[size++] = v; }
     const glm::dvec2& operator[](size_t i) const { return vertices[i]; }
+};
+
+// Appends a clip's output to a ColumnCut in place.
+struct ColumnWriter {
+    ColumnCut& cut;
+    void push_back(const glm::dvec2& v) { cut.vertices[cut.size++] = v; }
 };
 
 // Sutherland-Hodgman for either polygon type (Polygon or FixedPolygon), same arithmetic.
@@ -57,19 +64,35 @@ Polygon clip(const Polygon& polygon, int axis, double bound, bool keep_greater) 
 
 double area(const Polygon& polygon) { return area_of(polygon, polygon.size()); }
 
-double overlap_with_square(const Polygon& polygon, const glm::dvec2& lo, double size) {
+ColumnCut cut_to_column(const Polygon& polygon, double x_lo, double size) {
     if (polygon.size() + 4 > kMaxClipped) {
         throw InternalError("overlap_with_square: " + std::to_string(polygon.size()) + " vertices; at most " +
                             std::to_string(kMaxClipped - 4) + " fit the fixed clip buffers");
     }
+    FixedPolygon a;
+    clip_into(polygon, polygon.size(), 0, x_lo, true, a);
+    ColumnCut cut;
+    ColumnWriter into_cut{cut};
+    clip_into(a, a.size, 0, x_lo + size, false, into_cut);
+    if (cut.size > 0) {
+        cut.y_min = cut.y_max = cut.vertices[0].y;
+        for (size_t i = 1; i < cut.size; ++i) {
+            cut.y_min = std::min(cut.y_min, cut.vertices[i].y);
+            cut.y_max = std::max(cut.y_max, cut.vertices[i].y);
+        }
+    }
+    return cut;
+}
+
+double overlap_in_column(const ColumnCut& column, double y_lo, double size) {
     FixedPolygon a, b;
-    clip_into(polygon, polygon.size(), 0, lo.x, true, a);
-    clip_into(a, a.size, 0, lo.x + size, false, b);
-    a.size = 0;
-    clip_into(b, b.size, 1, lo.y, true, a);
-    b.size = 0;
-    clip_into(a, a.size, 1, lo.y + size, false, b);
+    clip_into(column.vertices, column.size, 1, y_lo, true, a);
+    clip_into(a, a.size, 1, y_lo + size, false, b);
     return b.size < 3 ? 0.0 : area_of(b, b.size);
+}
+
+double overlap_with_square(const Polygon& polygon, const glm::dvec2& lo, double size) {
+    return overlap_in_column(cut_to_column(polygon, lo.x, size), lo.y, size);
 }
 
 }  // namespace vkw::ref
