@@ -18,7 +18,7 @@
 //   (SineFloor::interpolated_normal_shift: 1.5 mm at 128^2, 64x less at 1024^2), moving at most
 //   2 phi_max e of flux across the window's ends: relative 2 phi_max e / (N h E_mean), 0.12%;
 // - fp32 and the fixed point: kSineRounding.
-// The sum bounds |mean_R / mean_1024 - 1| by about 0.3% at R = 128: within the 0.5%
+// The sum bounds |mean_R / mean_1024 - 1| by about 0.3% at R = 128: within the 0.5% asserted
 // (the bound is computed below from the CPU model and printed next to each measured change).
 #include "tests/caustics/sine_caustic_scene.hpp"
 #include "tests/support/gpu_test.hpp"

@@ -3,7 +3,7 @@
 // and read back with the receiver's own normal. docs/model.md section 3 gives the closed form
 //   E = E_perp max(0, -t.N) exp(-sigma_t l),  E_perp = E_s T cos(theta_s) / cos(theta_t),
 // l the path from the surface along the refracted sun t. Checked where the receiver point faces
-// the beam with -t.N >= 0.25 (the band: nearer the terminator the texels around a point
+// the beam with -t.N >= 0.25 (the band the test asserts on: nearer the terminator the texels around a point
 // hold photons that hit other surfaces) and lies at least 3 texels inside the plane's edges.
 // The plane is read through the GLSL lookup (caustic_lookup.glsl, a probe lattice on the plane);
 // the sphere, whose normal changes from point to point, by the same bilinear lookup on the CPU

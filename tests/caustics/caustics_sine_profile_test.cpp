@@ -15,8 +15,8 @@
 // box. Two checks per depth:
 // - against the tent-filtered profile, to the photon lattice's derived bound (lattice_error_bound:
 //   0.43%, 0.80% and 1.75% at the three depths; measured 0.03%, 0.06% and 0.13%): the sampling
-//   noise is that small, so the issue's 2% is meaningful;
-// - against the box-filtered profile, the issue's 2%. The tent and box filters of the exact E
+//   noise is that small, so a 2% bound is meaningful;
+// - against the box-filtered profile, the 2% bound. The tent and box filters of the exact E
 //   differ by themselves (computed from the CPU model and printed): 0.04% at 0.5 d*, 1.0% at 2 d*,
 //   but 2.2% at d*, where the cusp (E ~ |X - X_c|^(-2/3)) lies inside one texel. A splat whose
 //   footprint is at least one texel (the bilinear splat is exactly a one-texel
@@ -35,7 +35,7 @@
 namespace vkw::test {
 namespace {
 
-// The issue's bound on the L1 difference, relative: sum |map - ref| / sum ref over the window.
+// The bound on the L1 difference, relative: sum |map - ref| / sum ref over the window.
 constexpr double kIssueL1 = 0.02;
 
 SineCausticScene profile_scene(double depth_factor) {
@@ -138,12 +138,12 @@ TEST_P(caustics_sine_profile, FloorRowMatchesSection5) {
             "tent-filtered %.3e (bound %.3e); tent vs box filter %.3e\n",
             scene.depth_factor, sine.depth, c, l1_box, kIssueL1, l1_tent, bound, filters / box_sum);
         const double kernel_bias = filters / box_sum;
-        // The issue's 2% wherever the one-texel kernel's own bias is below it; where the bias alone
+        // The 2% bound wherever the one-texel kernel's own bias is below it; where the bias alone
         // exceeds it (the cusp depth) the triangle inequality (header comment).
         const double box_bound = kernel_bias < kIssueL1 ? kIssueL1 : kernel_bias + bound * tent_sum / box_sum;
         if (box_bound > kIssueL1)
             std::printf(
-                "  the issue's 2%% against the box filter is out of reach of a one-texel kernel here "
+                "  the 2%% bound against the box filter is out of reach of a one-texel kernel here "
                 "(its bias alone is %.3e); asserting the triangle bound %.3e\n",
                 kernel_bias, box_bound);
         EXPECT_LE(l1_box, box_bound) << "channel " << c << ": the tent and box filters of the exact E alone differ by "
@@ -190,7 +190,7 @@ double box_l1(const ProfileRun& p, int c) {
 
 // The footprint kernel (Tipprasert 2006's area ratio): each photon's flux spread over its sub-cell's
 // footprint by area, so a texel is the box average of the photons' piecewise-constant irradiance,
-// and the issue's 2% against the box-filtered profile applies at every depth, the cusp's included
+// and the 2% bound against the box-filtered profile applies at every depth, the cusp's included
 // (the footprints there are thin, folded quads whose flux the clipping puts in the right texels).
 TEST_P(caustics_sine_profile, FootprintKernelRowMatchesBoxFilteredSection5) {
     const ProfileRun p = run_profile(context(), GetParam(), CausticKernel::Footprint);

@@ -2,7 +2,7 @@
 // docs/model.md section 5 evaluated on the CPU in double precision, independently of the photon code
 // (no engine or pass code: only the formulas of docs/model.md sections 2 and 5), and filtered per
 // texel of a caustic map row:
-// - Box: the texel average (1/h) * integral over the texel of E(X) dX, the quantity;
+// - Box: the texel average (1/h) * integral over the texel of E(X) dX, the quantity the 2% bound is stated for;
 // - Tent: (1/h) * integral of E(X) tent((X - c)/h) dX, tent(u) = max(0, 1 - |u|), c the texel
 //   centre: what a map built by bilinear (2x2) splatting tends to as the photons get denser,
 //   since each photon adds its flux times tent((X_j - c)/h) to the texel.

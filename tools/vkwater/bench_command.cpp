@@ -37,7 +37,7 @@
 namespace vkw::cli {
 namespace {
 
-// The minimum for a median with a meaningful spread; fewer are for smoke tests.
+// The fewest frames whose median has a meaningful spread; fewer are for smoke tests.
 constexpr uint32_t kRecommendedFrames = 30;
 
 struct BenchArgs {
