@@ -4,7 +4,7 @@ the argument), it fails, naming each file and line, on
 - a Markdown link or image to a file that is not in the tree;
 - a path into the workplace's shared folder, or the name of one of its texts outside docs/ (the
   patterns below): a clone has none of them, so the model is cited as docs/model.md;
-- a seed text's number or an issue's number: nothing a clone can look up;
+- a seed text's number, an issue's number or "the issue": nothing a clone can look up;
 - a README.md over 250 lines (its depth belongs in docs/).
 It reads the files git tracks, plus new ones not ignored, so build outputs are left out; outside a
 git checkout, every file but those under build*/ and dot-folders.
@@ -24,6 +24,7 @@ FORBIDDEN = [
     (re.compile(SHARED_FOLDER), "a path into the workplace's shared folder, which a clone does not have"),
     (re.compile(r"seed 00[0-4]", re.IGNORECASE), "a seed text's number, which a clone cannot look up"),
     (re.compile(r"\bissue #?[0-9]+", re.IGNORECASE), "an issue's number, which a clone cannot look up"),
+    (re.compile(r"\b(the|this) issue\b", re.IGNORECASE), "an issue a clone cannot read: name the bound or setting"),
 ]
 OUTSIDE_TEXTS = re.compile(r"\b(" + "|".join(["PHY" + "SICS", "LAVA" + "PIPE", "STY" + "LE"]) + r")\.md\b")
 # This file holds the patterns.
