@@ -119,6 +119,26 @@ TEST(EmbedInstall, SampleHostBuiltAgainstAnInstallMatchesTheInstalledCli) {
     EXPECT_LT(box_shown, box) << "the water hides the box's submerged part";
     EXPECT_GT(outside, size_t(kWidth) * kHeight / 2);
 
+    // A scene built in code against the installed headers (examples/embed_host/scene_in_code_main.cpp:
+    // pool in structs), written as a file and rendered by the installed CLI: pool.json's image bit
+    // for bit, so the structs, scene_json and its export all reached the install.
+    const fs::path in_code = work / "pool_in_code.json";
+    ASSERT_EQ(run("'" + (host / "embed_host_scene_in_code").string() + "' '" + in_code.string() + "'", log), 0)
+        << tail(log);
+    ASSERT_EQ(run(clean_env + "'" + (prefix / "bin/vkwater").string() + "' render '" + in_code.string() + "'" + size +
+                      " --out '" + (work / "in_code.exr").string() + "'",
+                  log),
+              0)
+        << tail(log);
+    const vkw::ImageRGBA32F from_structs = vkw::read_exr(work / "in_code.exr");
+    ASSERT_EQ(from_structs.width, kWidth);
+    ASSERT_EQ(from_structs.height, kHeight);
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            for (int c = 0; c < 4; ++c) ASSERT_EQ(from_structs.pixel(x, y)[c], cli.pixel(x, y)[c]) << x << "," << y;
+        }
+    }
+
     // The window host, built by the same project (GLFW is a dependency of vkwater's own viewer, so it
     // is there): two frames into its swapchain under a virtual X server, validation clean.
     ASSERT_TRUE(fs::exists(host / "embed_host_window")) << "the sample's GLFW host was not built";
