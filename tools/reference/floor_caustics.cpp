@@ -100,7 +100,7 @@ FloorCausticMap::FloorCausticMap(const Scene& scene, const WaterSurface& surface
 
 // The deposits' work is the texels in their footprints' bounding boxes: about 1.5e9 for the FFT
 // ocean's finer floor map and a few 1e7 for the other built-in scenes' maps. Waves short against
-// the depth below them (an FFT patch of 1e-3 m over 1.5 m of water) spread each beam over
+// the depth below them (the ocean's spectrum on a 1 mm patch) spread each beam over
 // thousands of texels, and the map would take days: refused as soon as the work done, or the
 // work projected from the triangles passed so far (after 256 of them, with 8 times the bound as
 // the margin for a start unlike the rest), passes the bound.
