@@ -7,6 +7,7 @@
 #include "engine/scene/scene_loader.hpp"
 #include "engine/vk/device_features.hpp"
 #include "engine/vk/resources.hpp"
+#include "examples/embed_host/pool_scene.hpp"
 #include "passes/frame/renderer.hpp"
 #include "tests/support/gpu_test.hpp"
 
@@ -286,25 +287,10 @@ void WorldTest::expect_renderers_image_outside_the_box(const std::string& scene)
     EXPECT_EQ(lit, outside);  // pool has no black pixel: a blank frame would fail here
 }
 
-// scenes/pool.json built in code (<vkwater/scene.hpp>), field for field.
-vkwater::Scene pool_in_code() {
-    vkwater::Scene scene;
-    scene.camera = {{0.0, 1.2, 4.0}, {0.0, -1.5, -2.0}, 60.0, 0.05, 500.0};
-    scene.sun = {80.0, 30.0, {3.0, 3.0, 3.0}};
-    scene.sky.radiance = {0.3, 0.45, 0.7};
-    scene.floor = {-1.5, {0.6, 0.6, 0.6}, 10.0};
-    vkwater::Water water;
-    water.grid_resolution = 1024;
-    water.waves = {{0.017, 0.5, 0.0, 0.0, 0.0}, {0.017, 0.5, 90.0, 90.0, 0.0}};
-    scene.water = water;
-    scene.medium.preset = "pure";
-    return scene;
-}
-
 // A scene built in code goes through the file's loader: pool in structs renders pool.json's image
 // bit for bit.
 TEST_F(WorldTest, ASceneBuiltInCodeRendersAsItsFile) {
-    auto world = vkwater::World::load(host_device(), pool_in_code());
+    auto world = vkwater::World::load(host_device(), embed_host::pool_scene());
     ASSERT_TRUE(world) << world.status().message;
     make_targets();
     const vkwater::Status status = run_frame(*world.value());
@@ -382,7 +368,7 @@ TEST_F(WorldTest, EveryStructReachesTheLoaderAsItsJsonField) {
 
 // A value out of range in the structs is the loader's message, naming the field as a file's would.
 TEST_F(WorldTest, AStructValueOutOfRangeIsNamedAsItsField) {
-    vkwater::Scene scene = pool_in_code();
+    vkwater::Scene scene = embed_host::pool_scene();
     scene.sun.irradiance[1] = 1e40;
     const auto bright = vkwater::World::load(host_device(), scene);
     ASSERT_FALSE(bright);
@@ -390,13 +376,13 @@ TEST_F(WorldTest, AStructValueOutOfRangeIsNamedAsItsField) {
     EXPECT_NE(bright.status().message.find("in-memory scene: sun.irradiance[1]: 1e+40 is out of range"),
               std::string::npos)
         << bright.status().message;
-    scene = pool_in_code();
+    scene = embed_host::pool_scene();
     scene.camera.fov_y_deg = std::nan("");
     const auto not_a_number = vkwater::World::load(host_device(), scene);
     ASSERT_FALSE(not_a_number);
     EXPECT_NE(not_a_number.status().message.find("camera.fov_y_deg"), std::string::npos)
         << not_a_number.status().message;
-    scene = pool_in_code();
+    scene = embed_host::pool_scene();
     scene.water.reset();
     const auto dry = vkwater::World::load(host_device(), scene);
     ASSERT_FALSE(dry);

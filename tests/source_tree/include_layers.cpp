@@ -41,11 +41,14 @@ std::vector<Layer> layer_table() {
                                   kPassGroups,
                                   {"engine/window", "passes/frame", "tools/reference", "tools/metrics", "tools/povray",
                                    "tools/benchmarks"}})},
+        // examples/: programs built against an installed vkwater, on its public headers alone (angle
+        // brackets); a test may share their code (the sample's scene built in code).
+        {"examples", {}},
         // tests/: may include anything under test, and each other's support files.
         {"tests", joined({kEngineForPasses,
                           kPassGroups,
                           {"engine/window", "passes/frame", "library", "tools/reference", "tools/metrics",
-                           "tools/povray", "tools/benchmarks", "tools/vkwater"}})},
+                           "tools/povray", "tools/benchmarks", "tools/vkwater", "examples"}})},
     };
     for (std::string_view group : kPassGroups) table.push_back({group, joined({kEngineForPasses, kPassGroups})});
     return table;
