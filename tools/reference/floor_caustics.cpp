@@ -175,7 +175,7 @@ void FloorCausticMap::deposit(const glm::dvec2 footprint[3], const glm::dvec3& f
     const double origin = centre_ - half_extent_;
     for (int64_t x = x0; x <= x1; ++x) {
         const ColumnCut column = cut_to_column(triangle, origin + x * texel_size_, texel_size_);
-        if (column.size < 3) continue;
+        if (column.polygon.size < 3) continue;
         // One row more on each side: a division's rounding must not drop a row that a sliver reaches.
         const int64_t z_first = std::max(z0, texel_of(column.y_min) - 1);
         const int64_t z_last = std::min(z1, texel_of(column.y_max) + 1);

@@ -10,22 +10,7 @@
 namespace vkw::ref {
 namespace {
 
-// A convex polygon clipped by the four sides of a square gains at most one vertex per side:
-// the overlap of a polygon of up to kMaxClipped - 4 vertices fits in a fixed array, so
-// overlap_with_square (called millions of times by the caustic maps) allocates nothing.
-constexpr size_t kMaxClipped = ColumnCut::kMaxVertices;
-struct FixedPolygon {
-    std::array<glm::dvec2, kMaxClipped> vertices;
-    size_t size = 0;
-    void push_back(const glm::dvec2& v) { vertices[size++] = v; }
-    const glm::dvec2& operator[](size_t i) const { return vertices[i]; }
-};
-
-// Appends a clip's output to a ColumnCut in place.
-struct ColumnWriter {
-    ColumnCut& cut;
-    void push_back(const glm::dvec2& v) { cut.vertices[cut.size++] = v; }
-};
+constexpr size_t kMaxClipped = FixedPolygon::kMaxVertices;
 
 // Sutherland-Hodgman for either polygon type (Polygon or FixedPolygon), same arithmetic.
 template <typename In, typename Out>
@@ -72,13 +57,13 @@ ColumnCut cut_to_column(const Polygon& polygon, double x_lo, double size) {
     FixedPolygon a;
     clip_into(polygon, polygon.size(), 0, x_lo, true, a);
     ColumnCut cut;
-    ColumnWriter into_cut{cut};
-    clip_into(a, a.size, 0, x_lo + size, false, into_cut);
-    if (cut.size > 0) {
-        cut.y_min = cut.y_max = cut.vertices[0].y;
-        for (size_t i = 1; i < cut.size; ++i) {
-            cut.y_min = std::min(cut.y_min, cut.vertices[i].y);
-            cut.y_max = std::max(cut.y_max, cut.vertices[i].y);
+    const FixedPolygon& b = cut.polygon;
+    clip_into(a, a.size, 0, x_lo + size, false, cut.polygon);
+    if (b.size > 0) {
+        cut.y_min = cut.y_max = b[0].y;
+        for (size_t i = 1; i < b.size; ++i) {
+            cut.y_min = std::min(cut.y_min, b[i].y);
+            cut.y_max = std::max(cut.y_max, b[i].y);
         }
     }
     return cut;
@@ -86,7 +71,7 @@ ColumnCut cut_to_column(const Polygon& polygon, double x_lo, double size) {
 
 double overlap_in_column(const ColumnCut& column, double y_lo, double size) {
     FixedPolygon a, b;
-    clip_into(column.vertices, column.size, 1, y_lo, true, a);
+    clip_into(column.polygon, column.polygon.size, 1, y_lo, true, a);
     clip_into(a, a.size, 1, y_lo + size, false, b);
     return b.size < 3 ? 0.0 : area_of(b, b.size);
 }
