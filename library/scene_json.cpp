@@ -32,7 +32,7 @@ json sky_json(const Sky& sky) {
 json water_json(const Water& water) {
     json out = {{"level", water.level},
                 {"ior", water.ior},
-                {"half_extent", water.half_extent},
+                {"half_extent", water.infinite ? json("infinite") : json(water.half_extent)},
                 {"grid_resolution", water.grid_resolution},
                 {"time", water.time}};
     if (!water.waves.empty()) {

@@ -122,6 +122,16 @@ double FieldReader::number(std::string_view key, const Range& range, double fall
     return optional_number(key, range).value_or(fallback);
 }
 
+std::optional<double> FieldReader::number_or_word(std::string_view key, const Range& range, std::string_view word,
+                                                  double fallback) {
+    const json* value = find(key);
+    if (value == nullptr) return fallback;
+    const std::string accepted = range.describe() + ", or \"" + std::string(word) + "\"";
+    if (value->is_string() && value->get<std::string>() == word) return std::nullopt;
+    if (value->is_string()) fail_type(path_of(key), "a number or \"" + std::string(word) + "\"", *value, accepted);
+    return to_number(*value, path_of(key), range, accepted);
+}
+
 std::optional<glm::dvec3> FieldReader::optional_vec3(std::string_view key, const Range& range) {
     const json* value = find(key);
     if (value == nullptr) return std::nullopt;

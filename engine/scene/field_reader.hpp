@@ -52,6 +52,10 @@ public:
     std::optional<double> optional_number(std::string_view key, const Range& range);
     double number(std::string_view key, const Range& range);                   // required
     double number(std::string_view key, const Range& range, double fallback);  // optional
+    // A number in `range`, or the string `word` in its place (nullopt then): a field such as a
+    // water's extent, which may be "infinite".
+    std::optional<double> number_or_word(std::string_view key, const Range& range, std::string_view word,
+                                         double fallback);
 
     // A 3-vector is an array of exactly three numbers, each within `range`.
     std::optional<glm::dvec3> optional_vec3(std::string_view key, const Range& range);

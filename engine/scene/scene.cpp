@@ -20,7 +20,10 @@ uint32_t Water::drawn_mesh_resolution() const {
     return mesh_resolution.value_or(std::min(kDefaultWaterMeshResolution, grid_resolution));
 }
 
-uint32_t Water::screen_mesh_cell_pixels() const { return mesh_resolution ? 0 : mesh_cell_pixels.value_or(0); }
+uint32_t Water::screen_mesh_cell_pixels() const {
+    if (mesh_resolution) return 0;
+    return mesh_cell_pixels.value_or(infinite ? kDefaultInfiniteWaterCellPixels : 0);
+}
 
 glm::dvec3 direction_toward_sun(double elevation_deg, double azimuth_deg) {
     double sin_el = 0.0, cos_el = 0.0, sin_az = 0.0, cos_az = 0.0;
@@ -52,6 +55,23 @@ glm::dvec3 sky_average_radiance(const Sky& sky) {
 double water_bottom(const Scene& scene) {
     if (scene.water && scene.water->depth) return scene.water->level - *scene.water->depth;
     return scene.floor.height;
+}
+
+double water_drawn_half_extent(const Scene& scene) {
+    const Water& water = *scene.water;
+    if (!water.infinite) return water.half_extent;
+    const glm::dvec3& eye = scene.camera.position;
+    return std::max(std::abs(eye.x), std::abs(eye.z)) + scene.camera.far_plane;
+}
+
+double receivers_half_extent(const Scene& scene) {
+    double extent = scene.floor.half_extent;
+    for (const Receiver& receiver : scene.receivers) {
+        if (receiver.mesh.positions.empty()) continue;
+        const glm::dvec3 lo = receiver.mesh.bounds_min, hi = receiver.mesh.bounds_max;
+        extent = std::max({extent, std::abs(lo.x), std::abs(lo.z), std::abs(hi.x), std::abs(hi.z)});
+    }
+    return extent;
 }
 
 glm::dmat4 projection_matrix(const Camera& camera, double aspect) {

@@ -81,12 +81,26 @@ struct FloorPlane {
 
 inline constexpr uint32_t kDefaultWaterMeshResolution = 256;
 
+// The screen grid's cell width for infinite water that names no mesh: cells of 8 pixels keep
+// Newton's start within a crest of the crossing for the built-in waves (docs/techniques/water_surface.md).
+inline constexpr uint32_t kDefaultInfiniteWaterCellPixels = 8;
+
+// Infinite water's far field (docs/model.md section 1, "Infinite water"): beyond this distance
+// from the camera both renderers take the surface as its mean level, flat. Waves there are finer
+// than a pixel for the cameras the schema allows within a few metres of the water, and a point
+// sample of them is aliasing, not detail.
+inline constexpr double kInfiniteWaterFarField = 2000.0;  // metres
+
 // The water body: a surface around y = level over the square |x|, |z| <= half_extent, and the
 // water volume below it down to level - depth (or to the floor when depth is not given).
+// Infinite water (`"half_extent": "infinite"`) has no edge: its surface and volume reach the
+// horizon, and half_extent is then the square that holds every receiver (the floor's and the
+// meshes'), over which the photons, the godray beams and the reference's maps are traced.
 struct Water {
     double level = 0.0;         // metres, mean surface height
     double ior = 1.333;         // index of refraction, in [1, 2] (docs/model.md section 1)
     double half_extent = 10.0;  // metres, > 0
+    bool infinite = false;
     // Surface grid cells per side, in [2, 4096]. The device's own limits (buffer sizes,
     // dispatch counts) are checked by the renderer, not here.
     uint32_t grid_resolution = 256;
@@ -100,7 +114,8 @@ struct Water {
     // The uniform mesh's cells per side: mesh_resolution, or the smaller of
     // kDefaultWaterMeshResolution and grid_resolution.
     uint32_t drawn_mesh_resolution() const;
-    // The screen mesh's cell width in pixels; 0 when the uniform mesh is drawn.
+    // The screen mesh's cell width in pixels; 0 when the uniform mesh is drawn. Infinite water
+    // is always drawn from the screen's grid.
     uint32_t screen_mesh_cell_pixels() const;
     double time = 0.0;            // seconds at which the waves are evaluated
     std::optional<double> depth;  // metres below level, > 0; nullopt: down to the floor
@@ -280,6 +295,11 @@ glm::dvec3 sky_average_radiance(const Sky& sky);
 
 // The y of the bottom of the water volume: level - depth, or the floor's height.
 double water_bottom(const Scene& scene);
+// The half side of the square the water's surface is drawn over: half_extent, or for infinite
+// water one that holds every point within the camera's far distance (what the camera can see).
+double water_drawn_half_extent(const Scene& scene);
+// For infinite water, the square that holds the floor and every receiver mesh (its half_extent).
+double receivers_half_extent(const Scene& scene);
 
 // Direction TOWARD the sun for elevation `el` above the horizon and azimuth `az`, both in
 // degrees: u = (cos(el) sin(az), sin(el), -cos(el) cos(az)). Azimuth 0 faces -z ("north",

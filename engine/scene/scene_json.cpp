@@ -24,6 +24,7 @@ Scene scene_from_json(const nlohmann::json& root, const ErrorContext& errors, co
         fields.objects("receivers", [&](FieldReader& receiver) { return read_receiver(receiver, scope); });
     scene.effects = fields.object("effects", Presence::optional, read_effects);
     fields.finish();
+    if (scene.water && scene.water->infinite) scene.water->half_extent = receivers_half_extent(scene);
 
     if (scene.water && !scene.water->depth && !(scene.floor.height < scene.water->level)) {
         errors.fail("water.level",

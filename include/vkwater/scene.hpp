@@ -59,9 +59,10 @@ struct Wave {
 // The water: a square of side 2 half_extent at mean height level, its surface flat or a sum of the
 // waves (for the FFT ocean: overrides, "water.waves.model=fft" and its fields).
 struct Water {
-    double level = 0.0;  // m
-    double ior = 1.333;  // 1 to 2
-    double half_extent = 10.0;
+    double level = 0.0;              // m
+    double ior = 1.333;              // 1 to 2
+    double half_extent = 10.0;       // m: the water covers |x|, |z| <= half_extent
+    bool infinite = false;           // true: no edge, to the horizon (half_extent is not read)
     uint32_t grid_resolution = 256;  // the photon grid's cells per side, 2 to 4096
     double time = 0.0;               // s, the waves' clock (a frame's Frame::time_seconds replaces it)
     std::vector<Wave> waves;         // empty: flat water

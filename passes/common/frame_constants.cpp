@@ -59,8 +59,9 @@ bool camera_eye_in_water(const Scene& scene) {
     if (!scene.water) return false;
     const Water& water = *scene.water;
     const glm::dvec3 eye = scene.camera.position;
-    return eye.y < water.level && eye.y >= water_bottom(scene) && std::abs(eye.x) <= water.half_extent &&
-           std::abs(eye.z) <= water.half_extent;
+    const double extent = water_drawn_half_extent(scene);
+    return eye.y < water.level && eye.y >= water_bottom(scene) && std::abs(eye.x) <= extent &&
+           std::abs(eye.z) <= extent;
 }
 
 }  // namespace vkw

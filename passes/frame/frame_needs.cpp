@@ -170,9 +170,10 @@ WaterBounds water_bounds(const Scene& scene) {
     const double amplitude = frame_amplitude_bound(water.waves, water.level, water.time);
     // Gerstner and choppy waves also move points sideways, by at most the amplitude
     // bound for the models here; widen the box by it too.
-    return {{-water.half_extent - amplitude, std::min(water_bottom(scene), water.level - amplitude),
-             -water.half_extent - amplitude},
-            {water.half_extent + amplitude, water.level + amplitude, water.half_extent + amplitude}};
+    // Infinite water: the square of all the camera can see.
+    const double extent = water_drawn_half_extent(scene);
+    return {{-extent - amplitude, std::min(water_bottom(scene), water.level - amplitude), -extent - amplitude},
+            {extent + amplitude, water.level + amplitude, extent + amplitude}};
 }
 
 std::array<glm::dvec3, 4> near_plane_corners(const Camera& camera, double aspect) {

@@ -73,6 +73,14 @@ struct ScreenMesh {
     uint32_t cell_pixels = 0;
     float margin = 0.0f;
     float amplitude = 0.0f;  // m: a bound on |surface height - level|
+    // Infinite water (only ever drawn from this grid): the square the surface is drawn over (it
+    // holds all the camera can see, engine/scene water_drawn_half_extent), the far field's
+    // distance (kInfiniteWaterFarField) and the water's bottom, which a ray under the water that
+    // meets no receiver runs to.
+    bool infinite = false;
+    float drawn_half_extent = 0.0f;
+    float far_field = 0.0f;
+    float bottom_y = 0.0f;
 };
 
 // What the surface's passes leave for their readers.

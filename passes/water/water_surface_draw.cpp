@@ -9,7 +9,9 @@ WaterSurfacePush water_surface_push(const WaterSurfaceBuffers& surface, uint32_t
     WaterSurfacePush push;
     push.mesh_resolution = surface.mesh_resolution;
     push.level = surface.model.level;
-    push.half_extent = surface.model.half_extent;
+    push.half_extent = surface.screen.infinite ? surface.screen.drawn_half_extent : surface.model.half_extent;
+    push.far_field = surface.screen.far_field;
+    push.bottom_y = surface.screen.bottom_y;
     push.wave_count = surface.model.wave_count;
     push.ocean_n = surface.model.ocean_n;
     push.nodes_per_metre = surface.model.nodes_per_metre;
@@ -46,9 +48,11 @@ const char* WaterSurfaceReads::vertex_shader() const {
 
 std::string WaterSurfaceReads::specialise(GraphicsPipelineDesc& desc, const std::string& key) const {
     const bool screen_grid = screen.cell_pixels > 0;
-    desc.specialization_constants = {surface_model, screen_grid ? 1u : 0u};
+    // Constant 1: 0 the uniform mesh, 1 the screen's grid, 2 the screen's grid of infinite water.
+    desc.specialization_constants = {surface_model, screen_grid ? (screen.infinite ? 2u : 1u) : 0u};
     static constexpr const char* kModelNames[] = {"/flat", "/sum", "/ocean"};
-    return key + kModelNames[surface_model] + (screen_grid ? "/screen grid" : "");
+    return key + kModelNames[surface_model] + (screen_grid ? "/screen grid" : "") +
+           (screen.infinite ? "/infinite" : "");
 }
 
 std::vector<fg::DescriptorBinding> WaterSurfaceReads::stand_ins(const fg::PassContext& context) const {

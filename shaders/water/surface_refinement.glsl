@@ -27,6 +27,17 @@ layout(constant_id = 0) const uint WATER_SURFACE_MODEL = WATER_SURFACE_SUM;
 // 0: the uniform mesh, whose cells are fine enough for Newton alone, compiled without them
 // (llvmpipe would run them masked for every pixel: docs/lavapipe.md).
 layout(constant_id = 1) const uint WATER_SCREEN_GRID = 0u;
+// 2: infinite water, drawn from the screen's grid (params.half_extent is then the square the
+// camera can see), with its far field compiled in (water_in_far_field).
+const bool WATER_INFINITE = WATER_SCREEN_GRID == 2u;
+
+// Infinite water's far field (docs/model.md section 1, "Infinite water"): a ray whose crossing
+// with the mean level lies farther than params.far_field from the eye, horizontally, meets the
+// level there, flat; the waves are traced no farther. True with that crossing's ray parameter.
+bool water_in_far_field(vec3 eye, vec3 d, out float t) {
+    t = (params.level - eye.y) / d.y;
+    return WATER_INFINITE && t > 0.0 && !isinf(t) && t * length(d.xz) > params.far_field;
+}
 
 // A converged crossing misses the surface by at most this times (1 + t) metres: about ten fp32
 // ulps of the positions involved (P and eye + t d are sums of terms of magnitude t and |eye|).
@@ -200,6 +211,13 @@ bool refine_by_march(vec3 eye, vec3 d, float t_lo, float t_hi, uint steps, float
 // shows no water; never for the uniform mesh, which ends at the square's edge.
 bool water_surface_of_pixel(vec3 eye, vec3 d, vec3 mesh_position, vec3 mesh_normal, vec2 mesh_parameter,
                             float mesh_sag, out vec3 position, out vec3 normal, out bool outside) {
+    float to_level;
+    if (water_in_far_field(eye, d, to_level)) {
+        position = vec3(eye.x + to_level * d.x, params.level, eye.z + to_level * d.z);
+        normal = vec3(0.0, 1.0, 0.0);
+        outside = false;
+        return true;
+    }
     normal = normalize(mesh_normal);
     const bool may_pass_edge = WATER_SCREEN_GRID != 0u;
     outside = may_pass_edge && any(greaterThan(abs(mesh_parameter), vec2(params.half_extent)));

@@ -104,6 +104,10 @@ vec3 radiance_in_water(vec3 p, vec3 d, bool reflected, float weight, out float l
     vec3 behind;
     bool floor_hit = floor_along(p, d, optics, length_in_water, behind, caustic);
     if (!floor_hit) length_in_water = 0.0;
+    // Under infinite water a ray that meets no receiver runs on to the water's bottom, where
+    // nothing is lit (docs/model.md section 1, "Infinite water"); elsewhere the scenes close
+    // their water with a floor or walls, and such a ray leaves it.
+    const float to_bottom = WATER_INFINITE && d.y < 0.0 ? (params.bottom_y - p.y) / d.y : 0.0;
     vec3 object;
     float distance_to_object;
     vec2 object_uv;
@@ -124,6 +128,7 @@ vec3 radiance_in_water(vec3 p, vec3 d, bool reflected, float weight, out float l
         float a = floor_hit || length_in_water > 0.0 ? exp(-params.blend_k * length_in_water) : 0.0;
         return params.water_colour.rgb + a * (behind - params.water_colour.rgb);
     }
+    if (!floor_hit && length_in_water == 0.0) length_in_water = max(to_bottom, 0.0);
     return water_path_radiance(analytic_inscatter_sigma_s(), frame.medium_sigma_t.rgb, frame.medium_sigma_s.w,
                                max(0.0, frame.water.x - p.y), length_in_water, d, optics.refracted_sun.xyz,
                                optics.e_perp0.rgb, behind);

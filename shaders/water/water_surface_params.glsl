@@ -22,7 +22,7 @@ layout(push_constant) uniform Params {
     uint ocean_n;           // the ocean's nodes per side
     float nodes_per_metre;  // n / patch_size
     float mesh_sag;         // m: how far the uniform mesh may lie from the surface (a cell's chord)
-    float bottom_y;         // the camera-medium pass: the water volume's bottom,
+    float bottom_y;         // the water volume's bottom (the camera-medium pass; infinite water's shading)
     float amplitude;        // a bound on |surface height - level| (the camera-medium pass, the screen mesh)
     // The screen's grid (water/water_surface_screen.vert and, in the fragment stage, the code
     // that constant WATER_SCREEN_GRID compiles in); unused by the uniform mesh.
@@ -31,6 +31,7 @@ layout(push_constant) uniform Params {
     float sag_per_diagonal_squared;  // 1/m: a cell's sag over its diagonal squared (|d^2 P / du^2| / 8)
     float march_step;       // m: the refinement's march step along a long window (0: no march)
     float slope_bound;      // a bound on the surface's slope over world x, z (0: none known)
+    float far_field;        // m: infinite water's far field (WATER_INFINITE); else unused
 } params;
 
 #endif

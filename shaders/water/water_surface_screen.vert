@@ -6,7 +6,9 @@
 // it is seen. Vertex (i, j) stands for the grid parameter where its camera ray meets the mean
 // level (or, for a ray that never does, the point on the water's far edge in the ray's
 // horizontal direction); it is drawn at the surface point of that parameter, with the analytic
-// normal there. The grid stops a cell's diagonal past the water's square, and the fragment
+// normal there (for infinite water beyond its far field, at that point of the flat level). For
+// infinite water the square is one that holds all the camera can see, so rays that miss the level
+// end at the horizon. The grid stops a cell's diagonal past the water's square, and the fragment
 // shader leaves out the pixels whose surface point lies outside it: the square's edge is then
 // exact per pixel, not the chords of cells clamped onto it. As for the uniform mesh
 // (water_surface.vert), one triangle strip per row of cells, an instance each, and the
@@ -53,6 +55,11 @@ void main() {
     vec3 dP_du, dP_dv;
     water_surface_at(parameter, out_position, dP_du, dP_dv);
     out_normal = water_normal(dP_du, dP_dv);
+    if (WATER_INFINITE && distance(parameter, frame.camera_position.xz) > params.far_field) {
+        // Infinite water's far field is its mean level (water_in_far_field).
+        out_position = vec3(parameter.x, params.level, parameter.y);
+        out_normal = vec3(0.0, 1.0, 0.0);
+    }
     out_parameter = parameter;
     out_mesh_sag = min(params.sag_per_diagonal_squared * diagonal_squared, 2.0 * params.amplitude);
     gl_Position = frame.view_proj * vec4(out_position, 1.0);

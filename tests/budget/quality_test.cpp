@@ -45,6 +45,25 @@ TEST(BudgetQuality, ASceneWithoutWaterTurnsOnlyTheResolution) {
     EXPECT_EQ(quality_candidates(top).size(), std::size(kRenderScales));
 }
 
+// Infinite water (ocean) has no uniform mesh to turn: every candidate keeps the screen's grid, and
+// its options, given back, load (a uniform mesh would be refused there).
+TEST(BudgetQuality, InfiniteWaterKeepsTheScreensGrid) {
+    const Scene original = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/ocean.json");
+    ASSERT_TRUE(original.water->infinite);
+    const Quality top = scene_quality(original, decide_frame_needs(original, 4.0 / 3.0));
+    EXPECT_EQ(top.mesh_resolution, 0u);
+    for (const Quality& q : quality_candidates(top)) {
+        EXPECT_EQ(q.mesh_resolution, 0u);
+        Scene applied = original;
+        apply_quality(q, top, applied);
+        EXPECT_FALSE(applied.water->mesh_resolution.has_value());
+        EXPECT_EQ(applied.water->screen_mesh_cell_pixels(), original.water->screen_mesh_cell_pixels());
+        for (const std::string& argument : quality_arguments(q, top)) {
+            EXPECT_EQ(argument.find("mesh_resolution"), std::string::npos) << argument;
+        }
+    }
+}
+
 // The options a budgeted render prints, given back as --set and --render-scale, make the same scene
 // (lake: it has every knob, the scene lookups' steps too).
 TEST(BudgetQuality, ItsOptionsGiveTheSceneApplyQualityMakes) {

@@ -103,7 +103,9 @@ def load_builtin(name):
 
 # A value of the wrong JSON type for each kind of leaf, and what the loader must say about it.
 WRONG_TYPE = {
-    "number": ("wide", r"expected (a number|an integer), got string \"wide\""),
+    "number": ("wide", r"expected (a number|an integer|a number or \"infinite\"), got string \"wide\""),
+    # A number that may be the word "infinite" instead (water.half_extent).
+    "number or word": ("wide", r"expected a number or \"infinite\", got string \"wide\""),
     "string": (42, r"expected (a string|one of .*), got number 42"),
     "bool": ("yes", r"expected (a boolean|true or false), got string \"yes\""),
     "vector": ("up", r"expected an array of \d numbers, got string \"up\""),
@@ -115,6 +117,8 @@ def kind_of(value):
         return "bool"
     if isinstance(value, (int, float)):
         return "number"
+    if value == "infinite":
+        return "number or word"
     if isinstance(value, str):
         return "string"
     if isinstance(value, list) and value and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value):

@@ -366,6 +366,16 @@ TEST_F(WorldTest, EveryStructReachesTheLoaderAsItsJsonField) {
     EXPECT_GT(lit, values / 2);
 }
 
+// Infinite water in the structs is the file's "half_extent": "infinite", whatever half_extent holds.
+TEST(SceneStructs, InfiniteWaterIsTheFilesWord) {
+    vkwater::Scene scene = embed_host::pool_scene();
+    scene.water->infinite = true;
+    scene.water->half_extent = 3.0;
+    const std::string text = vkwater::scene_json(scene);
+    EXPECT_NE(text.find(R"("half_extent": "infinite")"), std::string::npos) << text;
+    EXPECT_EQ(text.find(R"("half_extent": 3)"), std::string::npos) << text;
+}
+
 // A value out of range in the structs is the loader's message, naming the field as a file's would.
 TEST_F(WorldTest, AStructValueOutOfRangeIsNamedAsItsField) {
     vkwater::Scene scene = embed_host::pool_scene();

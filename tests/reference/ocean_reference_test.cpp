@@ -38,7 +38,9 @@ TEST(reference_ocean, SmallOceanRendersWithItsErrorBoundsReported) {
     EXPECT_GT(report.caustic_refinement_change, 0.0);
     EXPECT_GT(report.surface_height_error_bound, 0.0);
     EXPECT_GT(report.surface_slope_error_bound, 0.0);
-    ASSERT_EQ(report.approximations.size(), 2u);  // the sampled surface and periodic map; the modulated in-scatter's
+    // Infinite water's far field, the sampled surface and periodic map, the modulated in-scatter's.
+    ASSERT_EQ(report.approximations.size(), 3u);
+    EXPECT_EQ(report.approximations[0].rfind("infinite water: ", 0), 0u) << report.approximations[0];
 }
 
 }  // namespace

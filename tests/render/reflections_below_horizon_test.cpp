@@ -1,12 +1,15 @@
 // Reflections below the horizon in real time (docs/model.md section 1, "Reflections below the
 // horizon"): a ray that a wave's face reflects downward meets the water again, so no water pixel
-// shows the sky's `ground`. The FFT ocean seen at grazing angles, its ground made green 1000
-// W m^-2 sr^-1 and the sun off (no glints), so that a pixel seeing the ground through a reflectance
-// of at least 0.02 would read 20 or more.
+// shows the sky's `ground`; and the ocean's infinite water covers every pixel under the horizon.
+// The FFT ocean seen at grazing angles, its ground made green 1000 W m^-2 sr^-1 and the sun off
+// (no glints), so that a pixel seeing the ground through a reflectance of at least 0.02 would read
+// 20 or more.
 #include "engine/scene/scene_loader.hpp"
 #include "passes/frame/renderer.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/reference/reference_renderer.hpp"
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +22,10 @@ using BelowHorizon = GpuTest;
 
 TEST_F(BelowHorizon, OceanWaterNeverShowsTheGround) {
     const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/ocean.json",
-                                   {"sky.ground=[0,1000,0]", "sun.irradiance=[0,0,0]"});
+                                   {"sky.ground=[0,1000,0]", "sun.irradiance=[0,0,0]", "camera.fov_y_deg=10"});
+    // A 10-degree view, 72 pixels high: a pixel is 2.4e-3 rad, so the ray one pixel under the horizon
+    // from 4 m up meets the level 1.6 km away, four times as far as the floor's square reaches.
+    ASSERT_TRUE(scene.water->infinite);
     const uint32_t width = 96, height = 72;
     Renderer renderer(context());
     const RenderResult result = renderer.render(scene, {width, height, true, fg::TimingMode::None});
@@ -29,13 +35,11 @@ TEST_F(BelowHorizon, OceanWaterNeverShowsTheGround) {
     int water_pixels = 0;
     for (uint32_t y = 0; y < height; ++y) {
         for (uint32_t x = 0; x < width; ++x) {
-            const ref::Ray ray = ref::camera_ray(scene.camera, width, height, x + 0.5, y + 0.5);
-            // Water pixels only: the centre ray meets the mean level inside the water's square, with
-            // 5 m to spare for the waves (past the water's edge the ground is really there).
-            if (!(ray.direction.y < 0.0)) continue;
-            const glm::dvec3 at_level =
-                ray.origin + ((scene.water->level - ray.origin.y) / ray.direction.y) * ray.direction;
-            if (std::max(std::abs(at_level.x), std::abs(at_level.z)) > scene.water->half_extent - 5.0) continue;
+            // The ocean's water is infinite: every pixel whose centre ray points at least one pixel
+            // below the horizon (the ray through the centre of the pixel above points down too) is
+            // water. A pixel there that showed no water would show the ground itself.
+            const ref::Ray above = ref::camera_ray(scene.camera, width, height, x + 0.5, y - 0.5);
+            if (!(above.direction.y < 0.0)) continue;
             ++water_pixels;
             const float green = result.image.rgba[(std::size_t(y) * width + x) * 4 + 1];
             EXPECT_LE(green, bound) << "pixel (" << x << ", " << y << ")";

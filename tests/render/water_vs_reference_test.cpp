@@ -176,6 +176,26 @@ TEST_F(WaterBody, RaysFromTheWaterThatMeetNothingSeeNothing) {
     EXPECT_EQ(lit_in_real_time, 0) << "of " << black_in_reference << " black reference pixels";
 }
 
+// Infinite flat water (docs/model.md section 1, "Infinite water") over a floor only 2 m wide, from
+// calm's camera: the refracted rays past the floor run to the water's bottom and bring that path's
+// in-scatter, in both renderers. Flat water leaves the shading no approximation, so the bound is
+// the fp32 one of FlatWaterMatchesToFp32Rounding; and most of the water pixels are such rays.
+TEST_F(WaterBody, InfiniteFlatWaterMatchesToFp32Rounding) {
+    const Scene scene = builtin("calm.json", {"water.half_extent=\"infinite\"", "floor.half_extent=2"});
+    ASSERT_TRUE(scene.water->infinite);
+    Renderer renderer(context());
+    const RenderResult real_time = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
+    const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
+    const auto pixels = metrics::counted_pixels(kWidth, kHeight, nullptr);
+    EXPECT_LT(metrics::rel_mse(metrics::rgb_view(real_time.image), metrics::rgb_view(reference), pixels), 1e-10);
+    EXPECT_LT(std::abs(metrics::mean_bias(metrics::rgb_view(real_time.image), metrics::rgb_view(reference), pixels)),
+              1e-5);
+    // Not the water of a 20 m square either: calm's own image differs.
+    const RenderResult finite =
+        renderer.render(builtin("calm.json", {"floor.half_extent=2"}), {kWidth, kHeight, true, fg::TimingMode::None});
+    EXPECT_GT(metrics::rel_mse(metrics::rgb_view(finite.image), metrics::rgb_view(reference), pixels), 1e-6);
+}
+
 using WaterRule = GpuTest;
 
 TEST_F(WaterRule, CulledWaterImageEqualsForcedOnImage) {

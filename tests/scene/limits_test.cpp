@@ -28,7 +28,7 @@ TEST(scene_limits, EachAcceptedAtItsLimitAndRefusedPastIt) {
          "camera.position[0]: 100010 is out of range (accepted: -1e+05 <= value <= 1e+05 m)"},
         {"floor.height=-1e5", "floor.height=-1.0001e5", "floor.height: -100010 is out of range"},
         {"water.half_extent=1e5", "water.half_extent=1.0001e5",
-         "water.half_extent: 100010 is out of range (accepted: 0 < value <= 1e+05 m)"},
+         "water.half_extent: 100010 is out of range (accepted: 0 < value <= 1e+05 m, or \"infinite\")"},
         {waves + "1e5}]}", waves + "1.0001e5}]}", "wavelength: 100010 is out of range"},
         {"sun.irradiance=[1e30, 0, 0]", "sun.irradiance=[1.0001e30, 0, 0]",
          "sun.irradiance[0]: 1.0001e+30 is out of range (accepted: 0 <= value <= 1e+30 W m^-2)"},

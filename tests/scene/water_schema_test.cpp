@@ -44,6 +44,26 @@ TEST(scene_water, DepthGivesTheVolumeItsOwnBottom) {
     EXPECT_EQ(water_bottom(with_water(R"({ "level": -2, "depth": 1 })")), -3.0);
 }
 
+TEST(scene_water, InfiniteWaterMapsTheSquareOfItsReceivers) {
+    // The default floor's square (10 m), then a receiver reaching 30 m out in -z.
+    const Water water = *with_water(R"({ "half_extent": "infinite" })").water;
+    EXPECT_TRUE(water.infinite);
+    EXPECT_EQ(water.half_extent, 10.0);
+    EXPECT_EQ(water.screen_mesh_cell_pixels(), kDefaultInfiniteWaterCellPixels);  // never the uniform mesh
+    const std::string text = R"({ "camera": { "position": [0, 1, 3], "target": [0, 0, 0] },
+                                  "sun": { "elevation_deg": 45 }, "sky": { "radiance": [1, 1, 1] },
+                                  "water": { "half_extent": "infinite", "mesh_cell_pixels": 4 },
+                                  "receivers": [{ "type": "box", "half_size": [1, 1, 1],
+                                                  "translation": [0, -1, -29] }] })";
+    const Scene scene = parse_scene(text, "water.json");
+    EXPECT_EQ(scene.water->half_extent, 30.0);
+    EXPECT_EQ(scene.water->screen_mesh_cell_pixels(), 4u);
+    // The square drawn holds all the camera sees: its own distance from the centre plus its far plane.
+    EXPECT_EQ(water_drawn_half_extent(scene), 3.0 + scene.camera.far_plane);
+    // A number is a square, as before.
+    EXPECT_FALSE(with_water(R"({ "half_extent": 4 })").water->infinite);
+}
+
 TEST(scene_water, SumOfSinesAndGerstnerWaves) {
     const Water water = *with_water(R"({ "seed": 9, "time": 2.5, "waves": { "model": "sum", "components": [
         { "amplitude": 0.1, "wavelength": 2, "direction_deg": 30, "phase_deg": 45, "steepness": 0.5, "speed": 1.5 },

@@ -340,28 +340,46 @@ TEST_F(water_gpu_refinement, GerstnerFromBelow) {
 }
 
 // A choppy 64^2 ocean over a 32 m patch; the water spans one patch, the mesh one cell per node.
+struct ChoppyOcean {
+    static FftOceanSettings settings() {
+        FftOceanSettings ocean;
+        ocean.resolution = 64;
+        ocean.patch_size = 32.0;
+        ocean.wind_speed = 7.0;
+        ocean.wind_direction_deg = 25.0;
+        ocean.spectrum = OceanSpectrum::Jonswap;
+        ocean.fetch = 20000.0;
+        ocean.choppiness = 0.8;
+        return ocean;
+    }
+    static constexpr uint64_t kSeed = 77;
+
+    explicit ChoppyOcean(Context& context)
+        : ocean(settings()),
+          spectrum(std::make_shared<const FftOceanSpectrum>(make_ocean_spectrum(ocean, kSeed))),
+          buffer(context, spectrum) {
+        inputs.level = 0.0;
+        inputs.half_extent = 16.0;
+        inputs.grid_resolution = 64;
+        inputs.time = 2.0;
+        inputs.waves.model = WaveModel::FftOcean;
+        inputs.waves.ocean = ocean;
+        inputs.waves.seed = kSeed;
+        inputs.ocean = &buffer;
+    }
+
+    FftOceanSettings ocean;
+    std::shared_ptr<const FftOceanSpectrum> spectrum;
+    passes::OceanSpectrumBuffer buffer;
+    passes::WaterSurfaceInputs inputs;
+};
+
 void expect_ocean_refined(Context& context, const glm::dvec3& eye, const glm::dvec3& target,
                           uint32_t screen_cell_pixels = 0) {
-    FftOceanSettings ocean;
-    ocean.resolution = 64;
-    ocean.patch_size = 32.0;
-    ocean.wind_speed = 7.0;
-    ocean.wind_direction_deg = 25.0;
-    ocean.spectrum = OceanSpectrum::Jonswap;
-    ocean.fetch = 20000.0;
-    ocean.choppiness = 0.8;
-    constexpr uint64_t kSeed = 77;
-    const auto spectrum = std::make_shared<const FftOceanSpectrum>(make_ocean_spectrum(ocean, kSeed));
-    const passes::OceanSpectrumBuffer buffer(context, spectrum);
-    passes::WaterSurfaceInputs inputs;
-    inputs.level = 0.0;
-    inputs.half_extent = 16.0;
-    inputs.grid_resolution = 64;
-    inputs.time = 2.0;
-    inputs.waves.model = WaveModel::FftOcean;
-    inputs.waves.ocean = ocean;
-    inputs.waves.seed = kSeed;
-    inputs.ocean = &buffer;
+    const ChoppyOcean choppy(context);
+    const FftOceanSettings& ocean = choppy.ocean;
+    const passes::WaterSurfaceInputs& inputs = choppy.inputs;
+    const auto& spectrum = choppy.spectrum;
     const OceanReference reference = ocean_reference(*spectrum, ocean.choppiness, inputs.time);
     const CpuSurface surface = [&](double x0, double z0) { return ocean_sample(reference, x0, z0, inputs.level); };
     // The mesh's vertices lie on the FFT's nodes (M = n over one patch), and between them the
@@ -432,6 +450,69 @@ TEST_F(water_gpu_refinement, ChoppyOceanFromAboveOnTheScreenGrid) {
 
 TEST_F(water_gpu_refinement, ChoppyOceanFromBelowOnTheScreenGrid) {
     expect_ocean_refined(context(), {0.0, -2.0, 10.0}, {0.0, 0.0, 0.0}, kScreenCellPixels);
+}
+
+// Infinite water (docs/model.md section 1, "Infinite water") is drawn from the screen's grid to
+// the horizon. On the choppy ocean from 4 m up, over the whole image: every pixel whose ray points
+// at least one pixel below the horizon (the ray of the pixel above it points down too) shows
+// water; no pixel whose ray rises shows any (the camera is above every crest); and every pixel
+// whose ray meets the mean level beyond the far field shows that flat crossing. The far field is
+// put at 100 m here (the scenes' is kInfiniteWaterFarField) so that it spans rows of this image.
+TEST_F(water_gpu_refinement, InfiniteOceanIsWaterToTheHorizon) {
+    const ChoppyOcean choppy(context());
+    const double amplitude =
+        ocean_reference(*choppy.spectrum, choppy.ocean.choppiness, choppy.inputs.time).grid.max_abs_height();
+    Scene scene;
+    scene.camera.position = {0.0, 4.0, 20.0};
+    scene.camera.target = {0.0, 0.0, -40.0};
+    scene.camera.fov_y_deg = 50.0;
+    scene.camera.far_plane = 1e5;
+    scene.water = Water{};
+    scene.water->infinite = true;
+    scene.water->half_extent = choppy.inputs.half_extent;
+    ASSERT_GT(scene.camera.position.y, amplitude);
+    const FrameConstants constants = make_frame_constants(scene, kWidth, kHeight);
+    passes::ScreenMesh screen =
+        passes::screen_mesh(kScreenCellPixels, scene.camera, double(kWidth) / kHeight, 0.0, amplitude);
+    constexpr double kFarField = 100.0;
+    screen.infinite = true;
+    screen.drawn_half_extent = static_cast<float>(water_drawn_half_extent(scene));
+    screen.far_field = static_cast<float>(kFarField);
+    screen.bottom_y = -30.0f;
+    const std::vector<glm::vec4> pixels =
+        probe_pixels(context(), constants, choppy.inputs, choppy.inputs.grid_resolution, screen);
+
+    const glm::dvec3 eye = scene.camera.position;
+    uint32_t below_horizon = 0, far_field = 0;
+    for (uint32_t y = 0; y < kHeight; ++y) {
+        for (uint32_t x = 0; x < kWidth; ++x) {
+            const glm::vec4 gpu = pixels[y * kWidth + x];
+            const glm::dvec3 d = pixel_ray(constants, x, y);
+            if (d.y > 0.0) {
+                EXPECT_EQ(gpu.w, 0.0f) << "pixel (" << x << ", " << y << ") rises but shows water";
+                continue;
+            }
+            if (y > 0 && pixel_ray(constants, x, y - 1).y < 0.0) {
+                ++below_horizon;
+                EXPECT_NE(gpu.w, 0.0f) << "pixel (" << x << ", " << y << ") lies below the horizon but shows no water";
+            }
+            // The far field, with 1% of margin for the shader's fp32 decision at its boundary.
+            const double to_level = -eye.y / d.y;
+            if (to_level * std::hypot(d.x, d.z) > 1.01 * kFarField) {
+                ++far_field;
+                // Exactly on the level, and on the pixel's ray to 1e-4 rad: the GPU's ray comes
+                // from the fp32 inverse of a projection with near 0.05 m and far 1e5 m, which
+                // turns it by up to about 1e-5 rad (1.02e-5 measured); a pixel here is 7e-3 rad,
+                // so a neighbouring pixel's crossing fails by 70 times the bound.
+                EXPECT_EQ(gpu.y, 0.0f) << "pixel (" << x << ", " << y << ")";
+                const glm::dvec3 to_shown = glm::normalize(glm::dvec3(gpu) - eye);
+                EXPECT_LE(std::acos(std::min(1.0, glm::dot(to_shown, d))), 1e-4) << "pixel (" << x << ", " << y << ")";
+            }
+        }
+    }
+    std::printf("%u pixels below the horizon, %u of them in the far field\n", below_horizon, far_field);
+    EXPECT_GT(below_horizon, kWidth * kHeight / 3);
+    EXPECT_GT(far_field, 2 * kWidth);  // rows of it, not a stray pixel
 }
 
 }  // namespace

@@ -118,6 +118,8 @@ FloorWindow lit_floor_window(const Scene& scene, double side) {
 std::string povray_floor_scene(const Scene& scene, const PovrayOptions& options) {
     require(scene.water.has_value(), scene, "water", "the scene has no water (accepted: a scene with water)");
     const Water& water = *scene.water;
+    require(!scene.water->infinite, scene, "water.half_extent",
+            "\"infinite\": the cross-check closes its water in a mesh (accepted: a number)");
     require(scene.receivers.empty(), scene, "receivers",
             "receivers are not exported to POV-Ray (accepted: a scene without receivers)");
     require(water_bottom(scene) <= scene.floor.height, scene, "water.depth",

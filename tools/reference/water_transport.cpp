@@ -2,6 +2,7 @@
 
 #include "engine/core/errors.hpp"
 #include "engine/scene/builtin_meshes.hpp"
+#include "engine/scene/range.hpp"
 #include "engine/water/sampled_ocean_surface.hpp"
 #include "tools/reference/optics.hpp"
 #include "tools/reference/texture_lookup.hpp"
@@ -70,6 +71,7 @@ WaterTransport::WaterTransport(const Scene& scene, const Quality& quality)
     if (has_water_) {
         level_ = scene.water->level;
         half_extent_ = scene.water->half_extent;
+        infinite_ = scene.water->infinite;
         bottom_ = water_bottom(scene);
         ior_ = scene.water->ior;
     }
@@ -80,6 +82,15 @@ WaterTransport::WaterTransport(const Scene& scene, const Quality& quality)
         const double cos_t = -refracted_sun_.y;
         const double transmittance = 1.0 - fresnel_reflectance(cos_s, 1.0, ior_);
         e_perp0_ = scene.sun.irradiance * (cos_s * transmittance / cos_t);
+    }
+    if (infinite_) {
+        approximations_.push_back(
+            "infinite water: the waves out to " + format_number(kInfiniteWaterFarField) +
+            " m from each ray's origin (horizontally), the flat mean level beyond; the photon beams and the "
+            "in-scatter maps over the receivers' square (half side " +
+            format_number(half_extent_) +
+            " m); a refracted ray that meets no receiver runs to the water's bottom (y = " + format_number(bottom_) +
+            " m), where nothing is lit");
     }
     if (ocean) {
         build_ocean(quality);
@@ -208,9 +219,8 @@ void WaterTransport::build_ocean(const Quality& quality) {
     approximations_.push_back(
         "FFT ocean: the surface is the zero-padded FFT samples (padding " + std::to_string(quality.ocean_padding) +
         ") with Hermite patches, error bound " + std::to_string(surface_height_error_bound_) + " m in height, " +
-        std::to_string(surface_slope_error_bound_) +
-        " in slope; the floor's caustics are one period's map repeated, also near the water's edge where some "
-        "beams would have entered beyond it");
+        std::to_string(surface_slope_error_bound_) + " in slope; the floor's caustics are one period's map repeated" +
+        (infinite_ ? std::string() : ", also near the water's edge where some beams would have entered beyond it"));
 }
 
 BeamIrradiance::Visibility WaterTransport::beam_visibility() const {
@@ -271,8 +281,19 @@ double WaterTransport::surface_height(double x, double z) const {
 std::optional<WaterTransport::WaterHit> WaterTransport::water_surface_hit(const Ray& ray) const {
     if (!has_water_) return std::nullopt;
     auto inside_extent = [&](const glm::dvec3& p) {
-        return std::abs(p.x) <= half_extent_ && std::abs(p.z) <= half_extent_;
+        return infinite_ || (std::abs(p.x) <= half_extent_ && std::abs(p.z) <= half_extent_);
     };
+    const double horizontal = std::hypot(ray.direction.x, ray.direction.z);
+    // Infinite water's far field: a ray that crosses the mean level farther than the far field
+    // (horizontally) meets it there, flat; the waves are searched no farther.
+    double wave_reach = kInfinity;
+    if (infinite_) {
+        const double to_level = (level_ - ray.origin.y) / ray.direction.y;
+        if (to_level > 0.0 && std::isfinite(to_level) && to_level * horizontal > kInfiniteWaterFarField) {
+            return WaterHit{to_level, {0.0, 1.0, 0.0}};
+        }
+        if (horizontal > 0.0) wave_reach = kInfiniteWaterFarField / horizontal;
+    }
     if (!surface_) {
         if (ray.direction.y == 0.0) return std::nullopt;
         const double t = (level_ - ray.origin.y) / ray.direction.y;
@@ -291,12 +312,13 @@ std::optional<WaterTransport::WaterHit> WaterTransport::water_surface_hit(const 
         t1 = std::max(a, b);
         if (t1 <= 0.0) return std::nullopt;
     }
+    t1 = std::min(t1, wave_reach);
+    if (t1 < t0) return std::nullopt;
     // f > 0 above the surface; the crossing is the first sign change along the ray.
     auto f = [&](double t) {
         const glm::dvec3 p = ray.origin + t * ray.direction;
         return p.y - surface_->height_at(p.x, p.z);
     };
-    const double horizontal = std::hypot(ray.direction.x, ray.direction.z);
     const double step = std::min((t1 - t0) / 4.0, shortest_wavelength_ / 64.0 / std::max(horizontal, 1e-12));
     // |df/dt| <= |d_y| + |d_h| max|grad h|: no crossing lies within |f| / that of a point.
     const double lipschitz = std::abs(ray.direction.y) + horizontal * crossing_slope_;
@@ -327,7 +349,7 @@ bool WaterTransport::in_water(const glm::dvec3& p) const {
     // split). The bottom is usually the floor itself, and a floor hit can round a hair
     // below it: points within kBottomTolerance of the bottom are in the water.
     constexpr double kBottomTolerance = 1e-6;
-    return has_water_ && std::abs(p.x) <= half_extent_ && std::abs(p.z) <= half_extent_ &&
+    return has_water_ && (infinite_ || (std::abs(p.x) <= half_extent_ && std::abs(p.z) <= half_extent_)) &&
            p.y >= bottom_ - kBottomTolerance && p.y < surface_height(p.x, p.z);
 }
 
@@ -513,8 +535,10 @@ glm::dvec3 WaterTransport::radiance_in_water_to_receiver(const Ray& ray, PixelRa
                                                          const BeamIrradiance::Patch* footprint) const {
     const auto hit = closest_receiver(ray, kInfinity);
     // A ray that leaves the water body without meeting a receiver sees nothing (the
-    // scenes close their water with a floor or walls).
-    const double length = hit ? hit->distance : 0.0;
+    // scenes close their water with a floor or walls). Under infinite water it runs on to
+    // the water's bottom, where nothing is lit.
+    const double to_bottom = infinite_ && ray.direction.y < 0.0 ? (bottom_ - ray.origin.y) / ray.direction.y : 0.0;
+    const double length = hit ? hit->distance : std::max(to_bottom, 0.0);
     const glm::dvec3 behind =
         hit ? receiver_radiance(ray.origin + hit->distance * ray.direction, *hit, primary, footprint) : glm::dvec3(0.0);
     return in_water_segment(ray.origin, length, ray.direction, behind, in_scatter);

@@ -126,6 +126,13 @@ public:
                                                 const BeamIrradiance::Patch* footprint) const;
     // What "one level coarser" is for this scene's caustics, for the manifest ("" if closed form).
     std::string coarser_caustics() const;
+    struct WaterHit {
+        double distance;
+        glm::dvec3 normal;  // unit, toward the air
+    };
+    // Where the ray crosses the water's surface within its extent (for infinite water, out to
+    // the far field, and beyond it the flat level), if it does.
+    std::optional<WaterHit> water_surface_hit(const Ray& ray) const;
 
 private:
     struct SurfaceHit {
@@ -134,12 +141,6 @@ private:
         glm::dvec3 normal;
     };
     std::optional<SurfaceHit> closest_receiver(const Ray& ray, double max_distance) const;
-    struct WaterHit {
-        double distance;
-        glm::dvec3 normal;  // unit, toward the air
-    };
-    // Where the ray crosses the water's surface within its extent, if it does.
-    std::optional<WaterHit> water_surface_hit(const Ray& ray) const;
     double surface_height(double x, double z) const;
     // Radiance arriving along `ray` travelling in air (one surface event already spent
     // or none to come): receivers above the water, or the sky with the sun's disk.
@@ -195,6 +196,9 @@ private:
     std::unique_ptr<TriangleBvh> bvh_;
     double level_ = 0.0, half_extent_ = 0.0, bottom_ = 0.0, ior_ = 1.0;
     bool has_water_ = false;
+    // Infinite water (docs/model.md section 1, "Infinite water"): no edge, and beyond
+    // kInfiniteWaterFarField from a ray's origin the flat mean level.
+    bool infinite_ = false;
     std::unique_ptr<WaterSurface> surface_;  // wavy water only
     // Steps along view rays: |f| / (|d_y| + |d_h| crossing_slope_) when crossing_slope_ > 0
     // (the FFT ocean), else the fixed step of 1/64 of the shortest wavelength.

@@ -24,7 +24,8 @@ Quality scene_quality(const Scene& scene, const fg::FrameNeeds& needs) {
     Quality quality;
     if (scene.water) {
         quality.photon_grid = scene.water->grid_resolution;
-        quality.mesh_resolution = scene.water->drawn_mesh_resolution();
+        // Infinite water is drawn from the screen's grid at every setting: no uniform mesh to turn.
+        quality.mesh_resolution = scene.water->infinite ? 0 : scene.water->drawn_mesh_resolution();
         const fg::EffectDecision* godrays = needs.find(Effect::VolumeCaustics);
         if (godrays && godrays->needed && scene.effects.godrays.method == GodrayMethod::Lines) {
             quality.godray_grid = scene.effects.godrays.grid;
@@ -81,7 +82,8 @@ void apply_quality(const Quality& quality, const Quality& top, Scene& scene) {
         scene.water->grid_resolution = quality.photon_grid;
         // As quality_arguments says it: below the top, the uniform mesh the cost and error models
         // were fitted with; at the top, the scene's own mesh (the screen's grid where it asks).
-        if (quality.mesh_resolution != top.mesh_resolution || quality.photon_grid != top.photon_grid) {
+        if (quality.mesh_resolution != 0 &&
+            (quality.mesh_resolution != top.mesh_resolution || quality.photon_grid != top.photon_grid)) {
             scene.water->mesh_resolution = quality.mesh_resolution;
             scene.water->mesh_cell_pixels.reset();
         }
