@@ -643,11 +643,15 @@ TEST(cli, EveryShowcaseSceneRendersCleanly) {
 }
 
 // Each showcase scene's error against its committed reference (tests/references/showcase/, 400x300,
-// point-sampled like the frame) stays where it was measured: the real-time targets allow no built-in
-// scene's relMSE to rise by more than 2% relative. The table holds the values measured when the
-// reference was committed; a scene without an entry fails, so a new scene brings its figure.
+// point-sampled like the frame but for the ocean's, 16 samples per pixel for its glitter path) stays
+// where it was measured: the real-time targets allow no built-in scene's relMSE to rise by more than
+// 2% relative. The table holds the values measured when the reference was committed; a scene without
+// an entry fails, so a new scene brings its figure. The ocean's is large and meaningful only as a
+// regression guard: the glitter lobe spreads the sun over pixels where the exact surface shows it in
+// few of the reference's samples (docs/accuracy.md, "The showcase ocean's reference").
 TEST(cli, ShowcaseScenesKeepTheirErrorAgainstTheirReferences) {
-    const std::map<std::string, double> measured_rel_mse = {{"pool", 0.00498254}, {"lagoon", 0.00782716}};
+    const std::map<std::string, double> measured_rel_mse = {
+        {"pool", 0.00498254}, {"lagoon", 0.00782716}, {"ocean", 167.743}, {"shore", 0.00315135}};
     const fs::path showcase = fs::path(VKWATER_SOURCE_DIR) / "scenes/showcase";
     const fs::path references = fs::path(VKWATER_SOURCE_DIR) / "tests/references/showcase";
     for (const auto& file : fs::directory_iterator(showcase)) {

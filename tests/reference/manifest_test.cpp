@@ -32,13 +32,14 @@ nlohmann::json manifest(const std::filesystem::path& folder = kReferences) {
     return nlohmann::json::parse(in);
 }
 
-std::string regenerate_hint(const std::filesystem::path& folder, const std::string& name) {
+// `spp`: the samples per pixel the entry records (the showcase ocean's glitter path needs 16).
+std::string regenerate_hint(const std::filesystem::path& folder, const std::string& name, int64_t spp = 1) {
     const std::string stem = std::filesystem::path(name).stem().string();
     if (folder == kBoxReferences) return "tools/reference/make_box_references.sh " + stem;
     if (folder == kShowcaseReferences) {
-        return "vkwater reference scenes/showcase/" + name +
-               " --cells-per-wavelength 64 --out tests/references/showcase/" + stem +
-               ".exr --manifest tests/references/showcase/manifest.json";
+        return "vkwater reference scenes/showcase/" + name + " --cells-per-wavelength 64" +
+               (spp > 1 ? " --spp " + std::to_string(spp) : std::string()) + " --out tests/references/showcase/" +
+               stem + ".exr --manifest tests/references/showcase/manifest.json";
     }
     return "vkwater reference scenes/" + name + " --out tests/references/" + stem +
            ".exr --manifest tests/references/manifest.json";
@@ -52,7 +53,7 @@ void expect_entries_match_scene_files_and_images(const std::filesystem::path& fo
         const std::filesystem::path scene = folder / entry["scene"].get<std::string>();
         EXPECT_EQ(scene_file_hash(scene), entry["scene_hash"].get<std::string>())
             << scene << " changed since its reference was rendered; regenerate it with\n  "
-            << regenerate_hint(folder, name);
+            << regenerate_hint(folder, name, entry["samples_per_pixel"].get<int64_t>());
         const ImageRGBA32F image = read_exr(folder / entry["reference"].get<std::string>());
         EXPECT_EQ(image.width, entry["width"].get<int>());
         EXPECT_EQ(image.height, entry["height"].get<int>());

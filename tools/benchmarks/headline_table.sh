@@ -19,7 +19,7 @@ cd "$(dirname "$0")/../.."
 rounds=${1:-3}
 vk=${VKWATER:-build/tools/vkwater/vkwater}
 [ -x "$vk" ] || { echo "headline_table: build this tree first ($vk)" >&2; exit 1; }
-scenes=(${SCENES:-pool lake ocean box showcase/pool showcase/lagoon calm underwater})
+scenes=(${SCENES:-pool lake ocean box showcase/pool showcase/lagoon showcase/ocean showcase/shore calm underwater})
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
