@@ -8,6 +8,7 @@
 #include "passes/water/water_surface_sum.hpp"
 
 #include <shader_structs/water/ocean_grid.comp.hpp>
+#include <shader_structs/water/ocean_height_bound.comp.hpp>
 #include <shader_structs/water/ocean_spectra.comp.hpp>
 
 #include <numbers>
@@ -22,6 +23,9 @@ using SpectraPush = glsl::ocean_spectra_comp::Params;
 // The push-constant block of shaders/water/ocean_grid.comp (a WaterGridPush, then the FFT's size and
 // its nodes per metre).
 using GridPush = glsl::ocean_grid_comp::Params;
+
+// The push-constant block of shaders/water/ocean_height_bound.comp: the nodes per side.
+using HeightBoundPush = glsl::ocean_height_bound_comp::Params;
 
 fg::BufferHandle add_spectra_pass(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs) {
     const FftOceanSpectrum& spectrum = inputs.ocean->spectrum();
@@ -39,7 +43,8 @@ fg::BufferHandle add_spectra_pass(fg::FrameGraph& graph, const WaterSurfaceInput
         "ocean spectra", fg::PassKind::Compute,
         [&](fg::PassBuilder& builder, Data& d) {
             builder.read_storage("InitialSpectrum", h0);
-            const VkDeviceSize bytes = VkDeviceSize{kOceanGridCount} * n * n * 4 * sizeof(float);
+            // The grids, then the height bound's vec4 (water_surface_ocean.hpp).
+            const VkDeviceSize bytes = (VkDeviceSize{kOceanGridCount} * n * n + 1) * 4 * sizeof(float);
             d.grids = builder.write_storage("Grids", builder.create_buffer("ocean spectra", {bytes}));
         },
         [push](const Data&, fg::PassContext& context) {
@@ -52,6 +57,24 @@ fg::BufferHandle add_spectra_pass(fg::FrameGraph& graph, const WaterSurfaceInput
     return data.grids;
 }
 
+// The largest |h| over the nodes into the vec4 after the fields: one work group.
+fg::BufferHandle add_height_bound_pass(fg::FrameGraph& graph, fg::BufferHandle fields, uint32_t n) {
+    struct Data {
+        fg::BufferHandle grids;
+    };
+    const auto& data = graph.add_pass<Data>(
+        "ocean height bound", fg::PassKind::Compute,
+        [&](fg::PassBuilder& builder, Data& d) { d.grids = builder.read_write_storage("Grids", fields); },
+        [push = HeightBoundPush{n}](const Data&, fg::PassContext& context) {
+            const Pipeline& pipeline =
+                context.pipeline("ocean height bound", ComputePipelineDesc{"water/ocean_height_bound.comp"});
+            context.bind(pipeline);
+            context.push_constants(pipeline, push);
+            vkCmdDispatch(context.cmd(), 1, 1, 1);
+        });
+    return data.grids;
+}
+
 }  // namespace
 
 WaterSurfaceBuffers add_ocean_passes(fg::FrameGraph& graph, const WaterSurfaceInputs& inputs,
@@ -59,7 +82,8 @@ WaterSurfaceBuffers add_ocean_passes(fg::FrameGraph& graph, const WaterSurfaceIn
     const FftOceanSpectrum& spectrum = inputs.ocean->spectrum();
     const fg::BufferHandle spectra = add_spectra_pass(graph, inputs);
     WaterSurfaceBuffers out;
-    out.ocean_fields = add_inverse_fft_passes(graph, spectra, spectrum.n, kOceanGridCount);
+    out.ocean_fields =
+        add_height_bound_pass(graph, add_inverse_fft_passes(graph, spectra, spectrum.n, kOceanGridCount), spectrum.n);
     // The refinement's shader declares the sum's table too: an empty one stands in.
     out.waves = add_wave_table_pass(graph, {}, inputs.time);
     const GridPush push{water_grid_push(inputs), spectrum.n, static_cast<float>(spectrum.n / spectrum.patch_size)};

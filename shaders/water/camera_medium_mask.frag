@@ -18,9 +18,10 @@ void main() {
     const vec3 q = on_near_plane.xyz / on_near_plane.w;
     const bool in_volume = all(lessThanEqual(abs(q.xz), vec2(params.half_extent))) && q.y > params.bottom_y;
     // Below every trough, or above every crest, q.y alone decides; between them the surface.
-    bool in_water = in_volume && q.y < params.level - params.amplitude;
+    const float amplitude = water_height_bound();
+    bool in_water = in_volume && q.y < params.level - amplitude;
     const bool undecided = in_volume && WATER_SURFACE_MODEL != WATER_SURFACE_FLAT &&
-                           abs(q.y - params.level) <= params.amplitude;
+                           abs(q.y - params.level) <= amplitude;
     if (WATER_SURFACE_MODEL == WATER_SURFACE_FLAT) in_water = in_volume && q.y < params.level;
     // The grid parameter whose point lies above or below q, x0 + D(x0) = q.xz, by Newton's
     // method, then the height there. A loop, not an if: llvmpipe skips a loop that no pixel of

@@ -43,6 +43,16 @@ bool water_in_far_field(vec3 eye, vec3 d, out float t) {
 // ulps of the positions involved (P and eye + t d are sums of terms of magnitude t and |eye|).
 const float REFINEMENT_RELATIVE_TOLERANCE = 1e-5;
 
+// A bound on |surface height - level|: the push constant's (the CPU's, good at every time), or for
+// the FFT ocean the largest |h| over its nodes this frame (water/ocean_height_bound.comp), which
+// bounds its bilinear surface exactly and is several times smaller. The margin covers the fp32
+// roundings of mix() and of level + h.
+float water_height_bound() {
+    if (WATER_SURFACE_MODEL != WATER_SURFACE_OCEAN) return params.amplitude;
+    const float largest = grids[2u * params.ocean_n * params.ocean_n].x;
+    return min(params.amplitude, largest * (1.0 + 1e-6) + 4.0 * 1.2e-7 * (abs(params.level) + largest));
+}
+
 void water_surface_at(vec2 x, out vec3 position, out vec3 dP_du, out vec3 dP_dv) {
     if (WATER_SURFACE_MODEL == WATER_SURFACE_OCEAN) {
         ocean_point(x, params.level, params.ocean_n, params.nodes_per_metre, position, dP_du, dP_dv);
@@ -247,10 +257,11 @@ bool water_surface_of_pixel(vec3 eye, vec3 d, vec3 mesh_position, vec3 mesh_norm
     // On the screen's grid, a window longer than half the shortest wavelength (a coarse cell
     // seen at a grazing angle) can hold several crossings, and Newton from its front may land on
     // any of them: march it for the first change of side, then refine within that step. The
-    // march runs over the part of the window inside the slab |y - level| <= amplitude, which
+    // march runs over the part of the window inside the slab |y - level| <= the height bound, which
     // holds both the mesh's point and every crossing.
-    const float to_top = (params.level + params.amplitude - eye.y) / d.y;
-    const float to_bottom = (params.level - params.amplitude - eye.y) / d.y;
+    const float slab = water_height_bound();
+    const float to_top = (params.level + slab - eye.y) / d.y;
+    const float to_bottom = (params.level - slab - eye.y) / d.y;
     const float march_lo = max(t - back, min(to_top, to_bottom)), march_hi = min(t + back, max(to_top, to_bottom));
     const float window_run = (march_hi - march_lo) * length(d.xz);
     const bool can_march = WATER_SCREEN_GRID != 0u && params.march_step > 0.0 && march_hi > march_lo;

@@ -2,8 +2,13 @@
 // the GPU evolves the CPU's h0 (uploaded once in fp32), so at vertices on FFT nodes it must
 // reproduce evaluate_ocean_grid to fp32 FFT error, and between nodes the CPU grid's fields
 // interpolated bilinearly (the GPU's sampling) to that plus the interpolation's rounding.
+#include "engine/framegraph/executor.hpp"
+#include "engine/vk/resources.hpp"
 #include "engine/water/fft_ocean.hpp"
 #include "engine/water/ocean_grid.hpp"
+#include "passes/present/readback.hpp"
+#include "passes/water/water_surface.hpp"
+#include "passes/water/water_surface_ocean.hpp"
 #include "passes/water/water_surface_spectrum.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tests/water_gpu/fp32_error.hpp"
@@ -101,6 +106,40 @@ TEST_F(water_gpu_ocean, ChoppyJonswapEqualsTheCpuFftGridAtItsNodes) {
 TEST_F(water_gpu_ocean, ChoppyOceanBetweenNodesIsTheBilinearCpuGrid) {
     // Vertex spacing 1 m, node spacing 50 / 32 = 1.5625 m: most vertices fall between nodes.
     expect_matches_cpu(context(), {ocean_settings(32, 50.0, OceanSpectrum::Phillips, 0.6), 20.0, 40, 7.0}, false);
+}
+
+// The bound the GPU writes after the fields (shaders/water/ocean_height_bound.comp) is the largest
+// |h| over the CPU's double-precision grid at its nodes, to the fp32 FFT's error bound for the height
+// (ocean_reference.hpp): the per-pixel march's slab and the camera medium's band rest on it.
+TEST_F(water_gpu_ocean, HeightBoundIsTheGridsLargestHeight) {
+    const OceanCase c{ocean_settings(64, 32.0, OceanSpectrum::Jonswap, 0.8), 16.0, 64, 13.0};
+    const auto spectrum = std::make_shared<const FftOceanSpectrum>(make_ocean_spectrum(c.ocean, kSeed));
+    const passes::OceanSpectrumBuffer buffer(context(), spectrum);
+    const passes::WaterSurfaceInputs inputs = ocean_inputs(c, buffer);
+    const uint32_t n = c.ocean.resolution;
+    const VkDeviceSize bytes = (VkDeviceSize{passes::kOceanGridCount} * n * n + 1) * 4 * sizeof(float);
+    Buffer readback(context(), {bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "ocean fields readback");
+    {
+        fg::PipelineStore pipelines;
+        fg::FrameGraph graph;
+        const passes::WaterSurfaceBuffers surface =
+            passes::add_water_surface_passes(graph, inputs, c.grid_resolution, passes::ScreenMesh{});
+        ASSERT_TRUE(surface.ocean_fields.has_value());
+        passes::add_readback_pass(graph, *surface.ocean_fields, readback.handle(), bytes);
+        graph.compile(1, 1);
+        fg::FrameExecutor executor(context(), graph, pipelines, {.check_finite = true, .timing = fg::TimingMode::None});
+        executor.execute();
+    }
+    std::vector<float> fields(bytes / sizeof(float));
+    std::memcpy(fields.data(), readback.mapped(), bytes);
+    const float gpu_bound = fields[fields.size() - 4];
+    const OceanReference reference = ocean_reference(*spectrum, c.ocean.choppiness, c.time);
+    const double cpu_largest = reference.grid.max_abs_height();
+    std::printf("largest |h|: GPU %.6f m, CPU %.6f m (the all-time bound 2 sum |h0|: %.3f m)\n", gpu_bound, cpu_largest,
+                spectrum->amplitude_bound());
+    EXPECT_NEAR(gpu_bound, cpu_largest, reference.node_error[kOceanHeight]);
+    // Not the all-time bound: a third of it or less here, which is what shortens the march.
+    EXPECT_LT(3.0 * cpu_largest, spectrum->amplitude_bound());
 }
 
 TEST_F(water_gpu_ocean, SameTimeAndSeedGiveBitIdenticalVertices) {
