@@ -182,14 +182,7 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
         const Water& water = *scene.water;
         passes::WaterSurfaceInputs inputs{water.level, water.half_extent, water.grid_resolution,
                                           water.time,  water.waves,       ocean};
-        passes::ScreenMesh screen = passes::screen_mesh(water.screen_mesh_cell_pixels(), scene.camera,
-                                                        double(width) / double(height), water.level, amplitude);
-        if (water.infinite) {
-            screen.infinite = true;
-            screen.drawn_half_extent = static_cast<float>(water_drawn_half_extent(scene));
-            screen.far_field = static_cast<float>(kInfiniteWaterFarField);
-            screen.bottom_y = static_cast<float>(water_bottom(scene));
-        }
+        const passes::ScreenMesh screen = passes::water_screen_mesh(scene, double(width) / double(height), amplitude);
         water_buffers = passes::add_water_surface_passes(graph, inputs, water.drawn_mesh_resolution(), screen);
         surface = water_buffers->grid;
         // Without it (culled: no ray can start in the water) the shading falls back to the

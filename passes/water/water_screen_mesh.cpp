@@ -26,6 +26,18 @@ ScreenMesh screen_mesh(uint32_t cell_pixels, const Camera& camera, double aspect
     return mesh;
 }
 
+ScreenMesh water_screen_mesh(const Scene& scene, double aspect, double amplitude) {
+    const Water& water = *scene.water;
+    ScreenMesh mesh = screen_mesh(water.screen_mesh_cell_pixels(), scene.camera, aspect, water.level, amplitude);
+    if (water.infinite) {
+        mesh.infinite = true;
+        mesh.drawn_half_extent = static_cast<float>(water_drawn_half_extent(scene));
+        mesh.far_field = static_cast<float>(kInfiniteWaterFarField);
+        mesh.bottom_y = static_cast<float>(water_bottom(scene));
+    }
+    return mesh;
+}
+
 glm::uvec2 screen_mesh_cells(const ScreenMesh& mesh, VkExtent2D extent) {
     const double widened = 1.0 + mesh.margin;
     auto cells = [&](uint32_t pixels) {

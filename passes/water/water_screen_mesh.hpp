@@ -27,6 +27,11 @@ inline constexpr double kMaxScreenMeshMargin = 1.0;
 // corner can still pull the mesh's edge into view).
 ScreenMesh screen_mesh(uint32_t cell_pixels, const Camera& camera, double aspect, double level, double amplitude);
 
+// The grid the scene's water is drawn from: screen_mesh for its cell width (0: the uniform mesh),
+// and for infinite water the square the camera can see (water_drawn_half_extent), the far field
+// (kInfiniteWaterFarField) and the water's bottom. `amplitude` bounds |surface height - level|.
+ScreenMesh water_screen_mesh(const Scene& scene, double aspect, double amplitude);
+
 // Cells across and down an image of `extent` pixels (at least one each).
 glm::uvec2 screen_mesh_cells(const ScreenMesh& mesh, VkExtent2D extent);
 

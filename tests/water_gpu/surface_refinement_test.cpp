@@ -470,15 +470,14 @@ TEST_F(water_gpu_refinement, InfiniteOceanIsWaterToTheHorizon) {
     scene.water = Water{};
     scene.water->infinite = true;
     scene.water->half_extent = choppy.inputs.half_extent;
+    scene.water->depth = 30.0;
+    ASSERT_EQ(scene.water->screen_mesh_cell_pixels(), kScreenCellPixels);
     ASSERT_GT(scene.camera.position.y, amplitude);
     const FrameConstants constants = make_frame_constants(scene, kWidth, kHeight);
-    passes::ScreenMesh screen =
-        passes::screen_mesh(kScreenCellPixels, scene.camera, double(kWidth) / kHeight, 0.0, amplitude);
+    passes::ScreenMesh screen = passes::water_screen_mesh(scene, double(kWidth) / kHeight, amplitude);
+    ASSERT_TRUE(screen.infinite);
     constexpr double kFarField = 100.0;
-    screen.infinite = true;
-    screen.drawn_half_extent = static_cast<float>(water_drawn_half_extent(scene));
     screen.far_field = static_cast<float>(kFarField);
-    screen.bottom_y = -30.0f;
     const std::vector<glm::vec4> pixels =
         probe_pixels(context(), constants, choppy.inputs, choppy.inputs.grid_resolution, screen);
 

@@ -280,9 +280,6 @@ double WaterTransport::surface_height(double x, double z) const {
 
 std::optional<WaterTransport::WaterHit> WaterTransport::water_surface_hit(const Ray& ray) const {
     if (!has_water_) return std::nullopt;
-    auto inside_extent = [&](const glm::dvec3& p) {
-        return infinite_ || (std::abs(p.x) <= half_extent_ && std::abs(p.z) <= half_extent_);
-    };
     const double horizontal = std::hypot(ray.direction.x, ray.direction.z);
     // Infinite water's far field: a ray that crosses the mean level farther than the far field
     // (horizontally) meets it there, flat; the waves are searched no farther.
@@ -297,7 +294,7 @@ std::optional<WaterTransport::WaterHit> WaterTransport::water_surface_hit(const 
     if (!surface_) {
         if (ray.direction.y == 0.0) return std::nullopt;
         const double t = (level_ - ray.origin.y) / ray.direction.y;
-        if (t <= 0.0 || !inside_extent(ray.origin + t * ray.direction)) return std::nullopt;
+        if (t <= 0.0 || !over_water(ray.origin + t * ray.direction)) return std::nullopt;
         return WaterHit{t, {0.0, 1.0, 0.0}};
     }
     // The part of the ray inside the slab between the lowest trough and the highest crest.
@@ -334,7 +331,7 @@ std::optional<WaterTransport::WaterHit> WaterTransport::water_surface_hit(const 
                 (f(mid) * start_sign > 0.0 ? lo : hi) = mid;
             }
             const glm::dvec3 p = ray.origin + hi * ray.direction;
-            if (!inside_extent(p)) return std::nullopt;
+            if (!over_water(p)) return std::nullopt;
             const glm::dvec2 parameter = surface_->parameter_at(p.x, p.z);
             return WaterHit{hi, surface_->at_parameter(parameter.x, parameter.y).normal};
         }
@@ -349,8 +346,11 @@ bool WaterTransport::in_water(const glm::dvec3& p) const {
     // split). The bottom is usually the floor itself, and a floor hit can round a hair
     // below it: points within kBottomTolerance of the bottom are in the water.
     constexpr double kBottomTolerance = 1e-6;
-    return has_water_ && (infinite_ || (std::abs(p.x) <= half_extent_ && std::abs(p.z) <= half_extent_)) &&
-           p.y >= bottom_ - kBottomTolerance && p.y < surface_height(p.x, p.z);
+    return has_water_ && over_water(p) && p.y >= bottom_ - kBottomTolerance && p.y < surface_height(p.x, p.z);
+}
+
+bool WaterTransport::over_water(const glm::dvec3& p) const {
+    return infinite_ || (std::abs(p.x) <= half_extent_ && std::abs(p.z) <= half_extent_);
 }
 
 std::optional<WaterTransport::SurfaceHit> WaterTransport::closest_receiver(const Ray& ray, double max_distance) const {

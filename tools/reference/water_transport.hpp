@@ -142,6 +142,8 @@ private:
     };
     std::optional<SurfaceHit> closest_receiver(const Ray& ray, double max_distance) const;
     double surface_height(double x, double z) const;
+    // Whether p lies over (or under) the water's square, in x and z; anywhere for infinite water.
+    bool over_water(const glm::dvec3& p) const;
     // Radiance arriving along `ray` travelling in air (one surface event already spent
     // or none to come): receivers above the water, or the sky with the sun's disk.
     glm::dvec3 radiance_in_air(const Ray& ray) const;
