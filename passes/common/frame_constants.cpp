@@ -42,6 +42,11 @@ FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t
         // The fallback for frames whose camera-medium split is culled (passes/water/camera_medium.hpp
         // classifies every pixel otherwise).
         constants.camera_medium = glm::vec4(camera_eye_in_water(scene) ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+        if (water.infinite) {
+            // Where a camera ray in the water that meets nothing ends (shaders/sky/sky.frag).
+            constants.camera_medium.y = static_cast<float>(water_bottom(scene));
+            constants.camera_medium.z = static_cast<float>(kInfiniteWaterFarField);
+        }
         // Only the glitter reads the table (its shader variant); without it the fields stay 0.
         if (scene.effects.water.glitter) {
             const UnresolvedSlopeTable slopes = unresolved_slope_table(water.waves);

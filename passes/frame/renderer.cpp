@@ -258,8 +258,9 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
             }
         }
     }
-    // The sky after the camera-medium split: a ray from the water that meets nothing sees nothing.
-    passes::add_sky_pass(graph);
+    // The sky after the camera-medium split: a ray from the water that meets nothing sees nothing,
+    // or under infinite water the in-scatter of its run to the bottom.
+    passes::add_sky_pass(graph, scene.water && scene.water->infinite);
     // The water before the floor and the receiver meshes: none of them blends, so the depth test
     // alone decides each pixel, and the floor's pixels behind the surface (all of pool's) fail it
     // before their fragments are shaded.

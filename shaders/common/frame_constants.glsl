@@ -23,7 +23,8 @@ layout(set = 0, binding = 0, std140) uniform FrameConstants {
     vec4 medium_sigma_t;      // rgb: extinction, 1/m
     vec4 medium_sigma_s;      // rgb: scattering, 1/m; w: Henyey-Greenstein g
     vec4 camera_medium;       // x: 1 if the camera is in the water (per frame, from the mean level; the fallback when
-                              //    the stencil split is culled, see water/camera_medium.glsl)
+                              //    the stencil split is culled, see water/camera_medium.glsl); infinite water:
+                              //    y: the water's bottom y, z: the far field's distance (water/water_bottom.glsl)
     vec4 camera_near;         // x: near-plane distance, m (the stencil split's clip depth)
     vec4 medium_options;      // x: 1 when the shading adds the analytic in-scatter of the sun's beam; 0 when the
                               //    godray passes supply the in-scatter instead (counted once, docs/model.md section 1)

@@ -19,6 +19,7 @@
 #include "water/camera_medium.glsl"
 #include "water/surface_refinement.glsl"
 #include "water/underwater_light.glsl"
+#include "water/water_bottom.glsl"
 
 #ifdef VKWATER_SCENE_VIEWS
 #include "water/scene_lookup.glsl"
@@ -105,9 +106,9 @@ vec3 radiance_in_water(vec3 p, vec3 d, bool reflected, float weight, out float l
     bool floor_hit = floor_along(p, d, optics, length_in_water, behind, caustic);
     if (!floor_hit) length_in_water = 0.0;
     // Under infinite water a ray that meets no receiver runs on to the water's bottom, where
-    // nothing is lit (docs/model.md section 1, "Infinite water"); elsewhere the scenes close
-    // their water with a floor or walls, and such a ray leaves it.
-    const float to_bottom = WATER_INFINITE && d.y < 0.0 ? (params.bottom_y - p.y) / d.y : 0.0;
+    // nothing is lit (water/water_bottom.glsl); elsewhere the scenes close their water with a
+    // floor or walls, and such a ray leaves it.
+    const float to_bottom = WATER_INFINITE ? run_to_water_bottom(p, d, params.bottom_y, params.far_field) : 0.0;
     vec3 object;
     float distance_to_object;
     vec2 object_uv;

@@ -1,7 +1,8 @@
 // Infinite water in the CPU reference (docs/model.md section 1, "Infinite water"): no edge, the
 // waves traced out to the far field and the flat mean level beyond it, and under it a water body
-// whose refracted rays that meet no receiver run on to its bottom.
+// whose rays that meet no receiver run on to its bottom.
 #include "engine/scene/scene_loader.hpp"
+#include "tools/reference/optics.hpp"
 #include "tools/reference/water_transport.hpp"
 
 #include <gtest/gtest.h>
@@ -103,6 +104,58 @@ TEST(reference_infinite_water, ARefractedRayThatMeetsNoReceiverRunsToTheBottom) 
         EXPECT_NEAR(beyond.radiance[c], over_black.radiance[c], 1e-12 * over_black.radiance[c]) << "channel " << c;
         EXPECT_NEAR(beyond.in_scatter[c], over_black.in_scatter[c], 1e-12 * over_black.in_scatter[c])
             << "channel " << c;
+    }
+}
+
+// The flat version of the scene above, with `half_extent` for the water and `albedo` for the floor.
+Scene flat_over_a_small_floor(const std::string& half_extent, const std::string& albedo) {
+    Scene scene = sine_over_a_small_floor(half_extent, albedo);
+    scene.water->waves = WaveSettings{};
+    return scene;
+}
+
+TEST(reference_infinite_water, ACameraRayInTheWaterThatMeetsNothingRunsToTheBottom) {
+    // A camera 1 m under the water, 1000 m out along z (no floor under it), looking 10 degrees
+    // down: the pixel must equal the same ray from over a black floor at the bottom's height, as
+    // for the refracted ray above. Before this rule it was black.
+    const Scene infinite_scene = flat_over_a_small_floor(R"("infinite")", "[0.6, 0.5, 0.4]");
+    const Scene black_floor_scene = flat_over_a_small_floor("25", "[0, 0, 0]");
+    const WaterTransport infinite(infinite_scene);
+    const WaterTransport black_floor(black_floor_scene);
+    const double down = 10.0 * std::acos(-1.0) / 180.0;
+    const glm::dvec3 view(0.0, -std::sin(down), -std::cos(down));
+    const PixelRadiance beyond = infinite.trace_camera_ray({{0.0, -1.0, 1000.0}, view});
+    const PixelRadiance over_black = black_floor.trace_camera_ray({{0.0, -1.0, 0.0}, view});
+    for (int c = 0; c < 3; ++c) {
+        ASSERT_GT(beyond.radiance[c], 0.0) << "channel " << c;
+        // As above: only the horizontal coordinates differ, 1e-12 relative.
+        EXPECT_NEAR(beyond.radiance[c], over_black.radiance[c], 1e-12 * over_black.radiance[c]) << "channel " << c;
+        EXPECT_NEAR(beyond.in_scatter[c], over_black.in_scatter[c], 1e-12 * over_black.in_scatter[c])
+            << "channel " << c;
+    }
+}
+
+TEST(reference_infinite_water, AGrazingRayInTheWaterEndsAtTheFarField) {
+    // 1e-6 rad under the horizon the bottom, 0.5 m below, lies 500 km away: the run ends at the
+    // far field, 2000 m out horizontally, and brings exactly the in-scatter of that segment
+    // (docs/model.md section 6's closed form), finite.
+    const Scene scene = flat_over_a_small_floor(R"("infinite")", "[0.6, 0.5, 0.4]");
+    const WaterTransport transport(scene);
+    const double down = 1e-6;
+    const glm::dvec3 view(0.0, -std::sin(down), -std::cos(down));
+    const PixelRadiance pixel = transport.trace_camera_ray({{0.0, -1.0, 1000.0}, view});
+    const double ior = scene.water->ior;
+    const glm::dvec3 refracted_sun = *refract(scene.sun.direction, {0.0, 1.0, 0.0}, 1.0 / ior);
+    const double cos_s = -scene.sun.direction.y;
+    const glm::dvec3 e_perp0 =
+        scene.sun.irradiance * (cos_s * (1.0 - fresnel_reflectance(cos_s, 1.0, ior)) / -refracted_sun.y);
+    const double run = kInfiniteWaterFarField / std::cos(down);
+    for (int c = 0; c < 3; ++c) {
+        const double expected = water_path_radiance({scene.medium.sigma_s[c], scene.medium.sigma_t()[c], scene.medium.g,
+                                                     1.0, run, view, refracted_sun, e_perp0[c], 0.0});
+        ASSERT_GT(expected, 0.0);
+        // The same function of the same inputs, up to the roundings of the run: 1e-12 relative.
+        EXPECT_NEAR(pixel.radiance[c], expected, 1e-12 * expected) << "channel " << c;
     }
 }
 

@@ -196,6 +196,29 @@ TEST_F(WaterBody, InfiniteFlatWaterMatchesToFp32Rounding) {
     EXPECT_GT(metrics::rel_mse(metrics::rgb_view(finite.image), metrics::rgb_view(reference), pixels), 1e-6);
 }
 
+// A camera 1 m under infinite flat water looking 17 degrees down past a floor only 2 m wide: the
+// rays below the horizon that meet nothing run to the water's bottom (or the far field) and bring
+// that path's in-scatter, from the sky pass, in both renderers; the rays above it meet the surface
+// from below. The bound is the fp32 one of FlatWaterMatchesToFp32Rounding. Before this rule those
+// pixels were black in both, so each pixel is also asked to be lit.
+TEST_F(WaterBody, CameraUnderInfiniteWaterSeesTheRunToTheBottom) {
+    const Scene scene =
+        builtin("calm.json", {"water.half_extent=\"infinite\"", "floor.half_extent=2", "camera.position=[0, -1, 0]",
+                              "camera.direction=[0, -0.3, -1]", "camera.far=100000"});
+    Renderer renderer(context());
+    const RenderResult real_time = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
+    const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
+    const auto pixels = metrics::counted_pixels(kWidth, kHeight, nullptr);
+    EXPECT_LT(metrics::rel_mse(metrics::rgb_view(real_time.image), metrics::rgb_view(reference), pixels), 1e-10);
+    EXPECT_LT(std::abs(metrics::mean_bias(metrics::rgb_view(real_time.image), metrics::rgb_view(reference), pixels)),
+              1e-5);
+    uint32_t dark = 0;
+    for (uint32_t y = 0; y < kHeight; ++y) {
+        for (uint32_t x = 0; x < kWidth; ++x) dark += real_time.image.pixel(x, y)[2] > 0.0f ? 0 : 1;
+    }
+    EXPECT_EQ(dark, 0u);
+}
+
 using WaterRule = GpuTest;
 
 TEST_F(WaterRule, CulledWaterImageEqualsForcedOnImage) {

@@ -54,7 +54,8 @@ TEST(ShaderVariants, AVariantTheBuildDoesNotCompileThrowsNamingTheOnesItDoes) {
     } catch (const InternalError& e) {
         EXPECT_EQ(std::string(e.what()),
                   "shader 'sky/sky.frag' is not compiled with the macros VKWATER_CAUSTICS (shaders/CMakeLists.txt); "
-                  "its variants define:\n  none\n  VKWATER_PER_PIXEL_MEDIUM");
+                  "its variants define:\n  VKWATER_INFINITE_WATER\n  none\n  VKWATER_INFINITE_WATER, "
+                  "VKWATER_PER_PIXEL_MEDIUM\n  VKWATER_PER_PIXEL_MEDIUM");
     }
     EXPECT_THROW((void)ShaderVariant{"sky/no_such.frag"}.file(), InternalError);
 }

@@ -89,8 +89,8 @@ WaterTransport::WaterTransport(const Scene& scene, const Quality& quality)
             " m from each ray's origin (horizontally), the flat mean level beyond; the photon beams and the "
             "in-scatter maps over the receivers' square (half side " +
             format_number(half_extent_) +
-            " m); a refracted ray that meets no receiver runs to the water's bottom (y = " + format_number(bottom_) +
-            " m), where nothing is lit");
+            " m); a ray in the water that meets no receiver runs to the water's bottom (y = " + format_number(bottom_) +
+            " m), where nothing is lit, or to the far field if that is nearer");
     }
     if (ocean) {
         build_ocean(quality);
@@ -534,14 +534,21 @@ glm::dvec3 WaterTransport::in_water_segment(const glm::dvec3& origin, double len
 glm::dvec3 WaterTransport::radiance_in_water_to_receiver(const Ray& ray, PixelRadiance* primary, glm::dvec3* in_scatter,
                                                          const BeamIrradiance::Patch* footprint) const {
     const auto hit = closest_receiver(ray, kInfinity);
-    // A ray that leaves the water body without meeting a receiver sees nothing (the
-    // scenes close their water with a floor or walls). Under infinite water it runs on to
-    // the water's bottom, where nothing is lit.
-    const double to_bottom = infinite_ && ray.direction.y < 0.0 ? (bottom_ - ray.origin.y) / ray.direction.y : 0.0;
-    const double length = hit ? hit->distance : std::max(to_bottom, 0.0);
+    // A ray that leaves the water body without meeting a receiver sees nothing (the scenes close
+    // their water with a floor or walls). Under infinite water it runs on to the water's bottom,
+    // where nothing is lit, but no farther than the far field from its origin, horizontally.
+    const double length = hit ? hit->distance : run_to_bottom(ray);
     const glm::dvec3 behind =
         hit ? receiver_radiance(ray.origin + hit->distance * ray.direction, *hit, primary, footprint) : glm::dvec3(0.0);
     return in_water_segment(ray.origin, length, ray.direction, behind, in_scatter);
+}
+
+double WaterTransport::run_to_bottom(const Ray& ray) const {
+    if (!infinite_ || !(ray.direction.y < 0.0)) return 0.0;
+    const double to_bottom = (bottom_ - ray.origin.y) / ray.direction.y;
+    const double horizontal = std::hypot(ray.direction.x, ray.direction.z);
+    const double to_far_field = horizontal > 0.0 ? kInfiniteWaterFarField / horizontal : to_bottom;
+    return std::max(std::min(to_bottom, to_far_field), 0.0);
 }
 
 PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray, const BeamIrradiance::Patch* footprint) const {
@@ -574,8 +581,9 @@ PixelRadiance WaterTransport::trace_camera_ray(const Ray& ray, const BeamIrradia
         pixel.radiance = in_water_segment(ray.origin, receiver->distance, ray.direction, behind, &pixel.in_scatter);
         return pixel;
     }
-    if (to_surface == kInfinity) {
-        pixel.radiance = in_water_segment(ray.origin, 0.0, ray.direction, glm::dvec3(0.0));
+    if (to_surface == kInfinity) {  // out through the side, or under infinite water to its bottom
+        pixel.radiance =
+            in_water_segment(ray.origin, run_to_bottom(ray), ray.direction, glm::dvec3(0.0), &pixel.in_scatter);
         return pixel;
     }
     // The surface from below: Snell's window, total internal reflection outside it.

@@ -174,6 +174,10 @@ private:
     // caustics under waves); the in-scatter term alone also in `in_scatter`, when given.
     glm::dvec3 in_water_segment(const glm::dvec3& origin, double length, const glm::dvec3& direction,
                                 const glm::dvec3& behind, glm::dvec3* in_scatter = nullptr) const;
+    // How far a ray in infinite water that meets no receiver runs: to the water's bottom, no
+    // farther than the far field from its origin, horizontally (docs/model.md section 1); 0 for
+    // water with an edge, which such a ray leaves through the side, and for a ray not pointing down.
+    double run_to_bottom(const Ray& ray) const;
     bool sun_blocked_in_air(const glm::dvec3& point) const;
     BeamIrradiance::Visibility beam_visibility() const;
     bool meshes_under_water() const;  // any receiver mesh reaching below the highest crest
