@@ -1,6 +1,7 @@
 #include "passes/frame/renderer.hpp"
 
 #include "engine/core/errors.hpp"
+#include "engine/scene/pixel_filter.hpp"
 #include "engine/vk/context.hpp"
 #include "engine/water/surface.hpp"
 #include "passes/caustics/caustic_layer.hpp"
@@ -16,6 +17,7 @@
 #include "passes/common/frame_constants_upload.hpp"
 #include "passes/common/frame_keys.hpp"
 #include "passes/frame/frame_needs.hpp"
+#include "passes/frame/temporal_accumulation.hpp"
 #include "passes/frame/upscale.hpp"
 #include "passes/godrays/godrays.hpp"
 #include "passes/godrays/godrays_composite.hpp"
@@ -154,7 +156,7 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
                        uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
                        const passes::ReceiverMeshes* receivers, const FrameOutput* output, LayerReadbacks layers,
                        passes::CausticReadRegionCache* read_regions, VkExtent2D output_size,
-                       const CausticMapCarrying* carry) {
+                       const CausticMapCarrying* carry, const passes::TemporalInputs* temporal) {
     const bool caustic_layer = output ? output->caustic_layer : layers.caustic != VK_NULL_HANDLE;
     const bool inscatter_layer = layers.inscatter != VK_NULL_HANDLE && !output;
     // The waves' amplitude bound, once: for the FFT ocean it builds the CPU surface.
@@ -294,6 +296,10 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
                                                output_size.height, "in-scatter layer upscale"));
         }
     }
+    if (temporal) {
+        fg::Blackboard& board = graph.blackboard();
+        board.put(keys::kHdrColor, passes::add_temporal_accumulation(graph, board.get(keys::kHdrColor), *temporal));
+    }
     if (output) {
         output->add_passes(graph, graph.blackboard().get(keys::kHdrColor));
         return;
@@ -428,6 +434,24 @@ void Renderer::reload_shaders() {
     *pipelines_ = fg::PipelineStore{};  // shared: the other renderers must reload too (the window has one)
 }
 
+fg::ImportedImage Renderer::temporal_history(uint32_t width, uint32_t height) {
+    Image* history = temporal_.history.get();
+    if (!history || history->desc().width != width || history->desc().height != height) {
+        forget_compiled_frames();  // one may import the old image
+        temporal_.history = std::make_unique<Image>(
+            context_, ImageDesc{width, height, VK_FORMAT_R32G32B32A32_SFLOAT, passes::kTemporalHistoryUsage},
+            "temporal history");
+        temporal_.frames = 0;  // a new image holds nothing yet
+    }
+    fg::ImportedImage imported;
+    imported.image = temporal_.history->handle();
+    imported.view = temporal_.history->view();
+    imported.width = width;
+    imported.height = height;
+    imported.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+    return imported;
+}
+
 Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptions& options,
                                            const FrameOutput* output) {
     const uint32_t max_size = context_.properties().limits.maxImageDimension2D;
@@ -436,6 +460,36 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
                         " is out of range (accepted: 1 to " + std::to_string(max_size) + " on '" +
                         context_.device_name() + "')");
     }
+    if (!options.temporal.enabled) {
+        temporal_.frames = 0;
+        return prepare_graph(scene, options, output, nullptr);
+    }
+    const double floor = options.temporal.blend_floor;
+    if (!(floor > 0.0 && floor <= 1.0) && !(floor == 0.0 && !options.temporal.clamp_history)) {
+        throw InternalError("temporal accumulation: blend_floor " + std::to_string(floor) + " is outside (0, 1]");
+    }
+    passes::TemporalInputs inputs;
+    inputs.history = temporal_history(options.width, options.height);
+    // This frame's jitter on top of the caller's camera; the reprojection between unjittered cameras.
+    Scene jittered = scene;
+    jittered.camera.image_shift_ndc +=
+        image_shift_for_pixel_offset(passes::temporal_jitter(temporal_.frames), options.width, options.height);
+    const glm::dmat4 view_proj =
+        projection_matrix(scene.camera, double(options.width) / double(options.height)) * view_matrix(scene.camera);
+    inputs.first = temporal_.frames == 0;
+    inputs.reprojection = glm::mat4(passes::temporal_reprojection(temporal_.previous_view_proj, view_proj));
+    // Exactly the same camera: the reprojection is the identity, which fp32 would only round to one.
+    inputs.camera_still = view_proj == temporal_.previous_view_proj;
+    inputs.blend = static_cast<float>(std::max(1.0 / (temporal_.frames + 1.0), floor));
+    inputs.clamp_history = options.temporal.clamp_history;
+    CompiledFrame& frame = prepare_graph(jittered, options, output, &inputs);
+    temporal_.previous_view_proj = view_proj;
+    ++temporal_.frames;
+    return frame;
+}
+
+Renderer::CompiledFrame& Renderer::prepare_graph(const Scene& scene, const RenderOptions& options,
+                                                 const FrameOutput* output, const passes::TemporalInputs* temporal) {
     if (scene.water) {
         // The surface grid must fit the device: a quarter of its largest heap at most, so
         // the frame's other targets fit beside it, and one storage-buffer binding (the water
@@ -511,7 +565,7 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
     }
     build_frame_graph(*graph, scene, constants_.get(), width, height, readback.hdr.handle(), ocean, receivers, output,
                       {readback.caustic.handle(), readback.inscatter.handle()}, &read_regions_,
-                      {options.width, options.height}, &carry);
+                      {options.width, options.height}, &carry, temporal);
     // Timed frames carry the unit their times are reported in; untimed ones (tests) need none.
     if (options.timing != fg::TimingMode::None) passes::add_calibration_pass(*graph);
     graph->compile(width, height);

@@ -14,6 +14,7 @@
 #include "passes/caustics/caustics_read_region.hpp"
 #include "passes/common/frame_constants.hpp"
 #include "passes/frame/scene_uploads.hpp"
+#include "passes/frame/temporal_accumulation.hpp"
 
 #include <array>
 #include <cstdint>
@@ -28,6 +29,16 @@ class Context;
 struct FftOceanSpectrum;
 
 enum class CausticMapCarry : uint8_t { None, Keep, Reuse };
+
+// Temporal accumulation over the frames a renderer renders with it on, in order
+// (passes/frame/temporal_accumulation.hpp).
+struct TemporalOptions {
+    bool enabled = false;
+    // The least weight a frame gets: the first frames are a running mean (1 / n), later ones an
+    // exponential one of about 1 / blend_floor frames, so that the picture follows the scene.
+    double blend_floor = 0.1;
+    bool clamp_history = true;  // off only in tests: the plain running mean
+};
 
 struct RenderOptions {
     uint32_t width = 800;
@@ -50,6 +61,10 @@ struct RenderOptions {
     // Reuse reads the kept one instead of tracing the photons again.
     CausticMapCarry caustic_map_carry = CausticMapCarry::None;
     std::vector<glm::dvec2> sub_frame_shifts;
+    // On: this frame is rendered with the next sub-pixel jitter and blended into the colour the
+    // renderer accumulated over the frames before it (reprojected to this camera); off: the frame
+    // as it is, and the accumulated colour is forgotten.
+    TemporalOptions temporal;
 };
 
 struct RenderResult {
@@ -105,7 +120,8 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
                        uint32_t height, VkBuffer readback, const passes::OceanSpectrumBuffer* ocean,
                        const passes::ReceiverMeshes* receivers, const FrameOutput* output = nullptr,
                        LayerReadbacks layers = {}, passes::CausticReadRegionCache* read_regions = nullptr,
-                       VkExtent2D output_size = {0, 0}, const CausticMapCarrying* carry = nullptr);
+                       VkExtent2D output_size = {0, 0}, const CausticMapCarrying* carry = nullptr,
+                       const passes::TemporalInputs* temporal = nullptr);
 
 class Renderer {
 public:
@@ -136,11 +152,18 @@ public:
     uint64_t read_regions_computed() const { return read_regions_.computed(); }
     // The CPU time of the last frame's needs decision, declaration and compilation, in milliseconds.
     double last_declare_ms() const { return last_declare_ms_; }
+    // Frames accumulated so far with RenderOptions::temporal on (0 after a frame with it off).
+    uint32_t temporal_frames() const { return temporal_.frames; }
+    // Forgets the accumulated colour: the next temporal frame starts afresh (a reloaded scene).
+    void reset_temporal_history() { temporal_.frames = 0; }
 
 private:
     struct CompiledFrame;
     struct Readback;
     CompiledFrame& prepare(const Scene& scene, const RenderOptions& options, const FrameOutput* output);
+    CompiledFrame& prepare_graph(const Scene& scene, const RenderOptions& options, const FrameOutput* output,
+                                 const passes::TemporalInputs* temporal);
+    fg::ImportedImage temporal_history(uint32_t width, uint32_t height);
     void forget_compiled_frames();
     const Readback& readback_targets(const RenderOptions& options, bool window_output);
     const passes::OceanSpectrumBuffer* ocean_spectrum(const Scene& scene);
@@ -158,6 +181,11 @@ private:
     std::shared_ptr<const passes::ReceiverMeshes> receivers_;   // the scene's receiver meshes on the device
     passes::CausticReadRegionCache read_regions_;               // the photon culling's region, while the camera stays
     std::unique_ptr<Image> kept_caustic_map_;                   // RenderOptions::caustic_map_carry's map
+    struct TemporalState {
+        std::unique_ptr<Image> history;      // the colour accumulated so far, the output's size
+        uint32_t frames = 0;                 // frames in it
+        glm::dmat4 previous_view_proj{1.0};  // the last frame's camera, unjittered
+    } temporal_;
     size_t realize_count_ = 0;
     double last_declare_ms_ = 0.0;
 };

@@ -168,6 +168,26 @@ TEST(cli, SequenceOptionsAreCheckedBeforeRendering) {
     expect_clean_failure(run_vkwater("render " + calm + "--frames 0:3 --out d%d/x_%d.exr"), 1, "in the folder");
     expect_clean_failure(run_vkwater("render " + calm + "--frames 0:3 --out x_%s.exr"), 1,
                          "a '%' that is neither %d, %0Nd nor %%");
+    // Temporal accumulation: a sequence's frames in order, in one process, each at one sample.
+    expect_clean_failure(run_vkwater("render " + calm + "--temporal" + out), 1,
+                         "--temporal: accumulates over a sequence's frames (accepted: with --frames A:B)");
+    expect_clean_failure(run_vkwater("render " + calm + "--frames 0:3 --temporal --shard 0/2" + out), 1,
+                         "--shard '0/2': a temporal sequence's frames depend on the ones before");
+    expect_clean_failure(run_vkwater("render " + calm + "--frames 0:3 --temporal --spp 4" + out), 1,
+                         "--spp 4: --temporal jitters its frames within the pixel itself (accepted: --spp 1 with it)");
+}
+
+// A temporal sequence renders every frame again, in order: a kept frame would not hold the
+// history the next one needs.
+TEST(cli, ATemporalSequenceRendersEveryFrameAgain) {
+    const fs::path folder = fresh_folder("sequence-temporal");
+    const std::string calm = std::string(VKWATER_SOURCE_DIR) + "/scenes/calm.json --width 16 --height 12 --temporal";
+    const std::string out = " --frames 0:2 --out " + (folder / "t_%04d.exr").string();
+    ASSERT_EQ(run_vkwater("render " + calm + out).exit_code, 0);
+    const CommandRun rerun = run_vkwater("render " + calm + out);
+    ASSERT_EQ(rerun.exit_code, 0) << rerun.output;
+    EXPECT_NE(rerun.output.find("0 kept"), std::string::npos) << rerun.output;
+    EXPECT_NE(rerun.output.find("3 to render"), std::string::npos) << rerun.output;
 }
 
 }  // namespace

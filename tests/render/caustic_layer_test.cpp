@@ -5,6 +5,7 @@
 // water. And the layer leaves the image as it is.
 #include "engine/scene/scene_loader.hpp"
 #include "passes/frame/renderer.hpp"
+#include "tests/support/builtin_scene.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/metrics/metrics.hpp"
 #include "tools/reference/reference_renderer.hpp"
@@ -18,8 +19,6 @@ namespace {
 
 constexpr uint32_t kWidth = 64;
 constexpr uint32_t kHeight = 48;
-
-Scene builtin(const char* name) { return load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes" / name); }
 
 RenderOptions with_layer() {
     RenderOptions options{kWidth, kHeight, true, fg::TimingMode::None};
@@ -99,7 +98,7 @@ using CausticLayerImage = GpuTest;
 // water, which the real-time water reads from the refraction view's layer.
 TEST_P(CausticLayer, FlatWaterLayerMatchesTheReference) {
     const bool box = std::string(GetParam()) == "box.json";
-    Scene scene = builtin(GetParam());
+    Scene scene = builtin_scene(GetParam());
     Renderer renderer(context());
     const RenderResult real_time = renderer.render(scene, with_layer());
     const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
@@ -119,7 +118,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, CausticLayer, ::testing::Values("calm.json", "b
 TEST_F(CausticLayerImage, BoxSidesUnderTheWaterAreCompared) {
     // What makes the box case above meaningful: the box's sunlit sides under the water fill
     // enough interior pixels (the reference's red channel is the box alone).
-    const Scene scene = builtin("box.json");
+    const Scene scene = builtin_scene("box.json");
     const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
     const ExtraLayer& layer = caustic_of(reference);
     int box_lit = 0;
@@ -157,7 +156,7 @@ TEST_F(CausticLayerFromBelow, FloorSeenFromTheWaterMatchesAndTheSurfaceIsZero) {
 
 TEST_F(CausticLayerImage, LayerLeavesTheImageUnchanged) {
     // The layer is a second output of the same shaders: the radiance must not move by a bit.
-    const Scene scene = builtin("lake.json");
+    const Scene scene = builtin_scene("lake.json");
     Renderer renderer(context());
     const RenderResult plain = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
     const RenderResult layered = renderer.render(scene, with_layer());

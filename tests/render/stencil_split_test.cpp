@@ -15,6 +15,7 @@
 #include "passes/frame/renderer.hpp"
 #include "passes/present/readback.hpp"
 #include "passes/water/camera_medium.hpp"
+#include "tests/support/builtin_scene.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/reference/reference_renderer.hpp"
 
@@ -27,10 +28,6 @@ namespace {
 
 constexpr uint32_t kWidth = 64;
 constexpr uint32_t kHeight = 47;  // odd: the middle row's centres lie on the camera's horizontal plane
-
-Scene builtin(const char* name, const std::vector<std::string>& overrides = {}) {
-    return load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes" / name, overrides);
-}
 
 // The split's mask for `scene` (underwater_view forced on), read back from the real frame graph.
 std::vector<uint8_t> render_mask(Context& context, fg::PipelineStore& pipelines, const Scene& scene) {
@@ -96,7 +93,7 @@ TEST_P(StencilSplit, MaskMatchesCpuClassification) {
                             R"({"amplitude": 0.3, "wavelength": 1.7, "direction_deg": 20},)"
                             R"({"amplitude": 0.15, "wavelength": 0.9, "direction_deg": 75, "phase_deg": 40}]})");
     }
-    const Scene scene = builtin("calm.json", overrides);
+    const Scene scene = builtin_scene("calm.json", overrides);
     ASSERT_DOUBLE_EQ(scene.camera.position.y, c.camera_height);
     fg::PipelineStore pipelines;
     const std::vector<uint8_t> mask = render_mask(context(), pipelines, scene);
@@ -150,10 +147,11 @@ TEST_F(UnderwaterViewRule, CulledImageEqualsForcedOnImage) {
     // same image exactly.
     Renderer renderer(context());
     const RenderOptions options{kWidth, kHeight, true, fg::TimingMode::None};
-    const RenderResult culled = renderer.render(builtin("calm.json"), options);
+    const RenderResult culled = renderer.render(builtin_scene("calm.json"), options);
     const size_t pipelines_culled = renderer.pipelines().size();
     ASSERT_FALSE(renderer.pipelines().contains("camera medium/camera medium/flat/dynamic"));
-    const RenderResult forced_on = renderer.render(builtin("calm.json", {"effects.underwater_view.mode=on"}), options);
+    const RenderResult forced_on =
+        renderer.render(builtin_scene("calm.json", {"effects.underwater_view.mode=on"}), options);
     EXPECT_GT(renderer.pipelines().size(), pipelines_culled);
     EXPECT_TRUE(renderer.pipelines().contains("camera medium/camera medium/flat/dynamic"));
     EXPECT_EQ(culled.image.rgba, forced_on.image.rgba);

@@ -5,6 +5,7 @@
 #include "engine/scene/scene_loader.hpp"
 #include "passes/frame/renderer.hpp"
 #include "passes/frame/supersampled_frame.hpp"
+#include "tests/support/builtin_scene.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/metrics/metrics.hpp"
 #include "tools/reference/reference_renderer.hpp"
@@ -17,14 +18,10 @@ namespace {
 constexpr uint32_t kWidth = 64;
 constexpr uint32_t kHeight = 48;
 
-Scene builtin(const char* name, const std::vector<std::string>& overrides = {}) {
-    return load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes" / name, overrides);
-}
-
 class WaterAgainstReference : public GpuTest, public ::testing::WithParamInterface<const char*> {};
 
 TEST_P(WaterAgainstReference, FlatWaterMatchesToFp32Rounding) {
-    const Scene scene = builtin(GetParam());
+    const Scene scene = builtin_scene(GetParam());
     Renderer renderer(context());
     const RenderResult real_time = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
     const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
@@ -46,7 +43,7 @@ TEST_P(WaterAgainstReference, FlatWaterMatchesToFp32Rounding) {
 // through the shifted camera, so the two sides sample the same four rays per pixel, and the bound
 // is the point-sampled one above: a mean of four values each within 1e-5 relative.
 TEST_P(WaterAgainstReference, SupersampledFrameSeesTheShiftedRays) {
-    const Scene scene = builtin(GetParam());
+    const Scene scene = builtin_scene(GetParam());
     const PixelFilter filter = pixel_filter_from_spp(4);
     Renderer renderer(context());
     const RenderResult real_time =
@@ -76,7 +73,7 @@ TEST_P(WaterAgainstReference, SupersampledFrameSeesTheShiftedRays) {
 
 // One sample per pixel is the plain frame, bit for bit.
 TEST_P(WaterAgainstReference, OneSampleIsThePlainFrame) {
-    const Scene scene = builtin(GetParam());
+    const Scene scene = builtin_scene(GetParam());
     Renderer renderer(context());
     const RenderOptions options{kWidth, kHeight, true, fg::TimingMode::None};
     const RenderResult plain = renderer.render(scene, options);
@@ -103,11 +100,11 @@ TEST_P(TiledFloor, MatchesTheReferenceToFp32Rounding) {
     if (std::string(GetParam()) == "below") camera.push_back("camera.position=[0,-0.5,2]");
     std::vector<std::string> tiled = camera;
     tiled.push_back(R"(floor.tiles={"side":0.25,"grout":0.02,"grout_albedo":[0.2,0.2,0.2]})");
-    const Scene scene = builtin("calm.json", tiled);
+    const Scene scene = builtin_scene("calm.json", tiled);
     Renderer renderer(context());
     const RenderOptions options{kWidth, kHeight, true, fg::TimingMode::None};
     const RenderResult real_time = renderer.render(scene, options);
-    const RenderResult untiled = renderer.render(builtin("calm.json", camera), options);
+    const RenderResult untiled = renderer.render(builtin_scene("calm.json", camera), options);
     const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
     int flipped = 0, grout = 0;
     ImageRGBA32F mask;  // R = 1: a pixel whose two colours agree in kind (counted_pixels)
@@ -181,7 +178,7 @@ TEST_F(WaterBody, RaysFromTheWaterThatMeetNothingSeeNothing) {
 // in-scatter, in both renderers. Flat water leaves the shading no approximation, so the bound is
 // the fp32 one of FlatWaterMatchesToFp32Rounding; and most of the water pixels are such rays.
 TEST_F(WaterBody, InfiniteFlatWaterMatchesToFp32Rounding) {
-    const Scene scene = builtin("calm.json", {"water.half_extent=\"infinite\"", "floor.half_extent=2"});
+    const Scene scene = builtin_scene("calm.json", {"water.half_extent=\"infinite\"", "floor.half_extent=2"});
     ASSERT_TRUE(scene.water->infinite);
     Renderer renderer(context());
     const RenderResult real_time = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
@@ -191,8 +188,8 @@ TEST_F(WaterBody, InfiniteFlatWaterMatchesToFp32Rounding) {
     EXPECT_LT(std::abs(metrics::mean_bias(metrics::rgb_view(real_time.image), metrics::rgb_view(reference), pixels)),
               1e-5);
     // Not the water of a 20 m square either: calm's own image differs.
-    const RenderResult finite =
-        renderer.render(builtin("calm.json", {"floor.half_extent=2"}), {kWidth, kHeight, true, fg::TimingMode::None});
+    const RenderResult finite = renderer.render(builtin_scene("calm.json", {"floor.half_extent=2"}),
+                                                {kWidth, kHeight, true, fg::TimingMode::None});
     EXPECT_GT(metrics::rel_mse(metrics::rgb_view(finite.image), metrics::rgb_view(reference), pixels), 1e-6);
 }
 
@@ -202,9 +199,9 @@ TEST_F(WaterBody, InfiniteFlatWaterMatchesToFp32Rounding) {
 // from below. The bound is the fp32 one of FlatWaterMatchesToFp32Rounding. Before this rule those
 // pixels were black in both, so each pixel is also asked to be lit.
 TEST_F(WaterBody, CameraUnderInfiniteWaterSeesTheRunToTheBottom) {
-    const Scene scene =
-        builtin("calm.json", {"water.half_extent=\"infinite\"", "floor.half_extent=2", "camera.position=[0, -1, 0]",
-                              "camera.direction=[0, -0.3, -1]", "camera.far=100000"});
+    const Scene scene = builtin_scene(
+        "calm.json", {"water.half_extent=\"infinite\"", "floor.half_extent=2", "camera.position=[0, -1, 0]",
+                      "camera.direction=[0, -0.3, -1]", "camera.far=100000"});
     Renderer renderer(context());
     const RenderResult real_time = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
     const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
@@ -229,10 +226,10 @@ TEST_F(WaterRule, CulledWaterImageEqualsForcedOnImage) {
     forced.push_back("effects.water.mode=on");
     Renderer renderer(context());
     const RenderResult culled =
-        renderer.render(builtin("pool.json", away), {kWidth, kHeight, true, fg::TimingMode::None});
+        renderer.render(builtin_scene("pool.json", away), {kWidth, kHeight, true, fg::TimingMode::None});
     const size_t pipelines_culled = renderer.pipelines().size();
     const RenderResult forced_on =
-        renderer.render(builtin("pool.json", forced), {kWidth, kHeight, true, fg::TimingMode::None});
+        renderer.render(builtin_scene("pool.json", forced), {kWidth, kHeight, true, fg::TimingMode::None});
     EXPECT_GT(renderer.pipelines().size(), pipelines_culled) << "forcing the water on created no water pipeline";
     EXPECT_EQ(culled.image.rgba, forced_on.image.rgba);
 }
@@ -242,9 +239,10 @@ TEST_F(WaterRule, CulledCausticBlurImageEqualsForcedOnImage) {
     // run with every width h = 1, the identity (each texel keeps its value times 1 / 1), so the
     // images are equal exactly.
     Renderer renderer(context());
-    const RenderResult culled = renderer.render(builtin("pool.json"), {kWidth, kHeight, true, fg::TimingMode::None});
+    const RenderResult culled =
+        renderer.render(builtin_scene("pool.json"), {kWidth, kHeight, true, fg::TimingMode::None});
     const size_t pipelines_culled = renderer.pipelines().size();
-    const RenderResult forced_on = renderer.render(builtin("pool.json", {"effects.caustic_blur.mode=on"}),
+    const RenderResult forced_on = renderer.render(builtin_scene("pool.json", {"effects.caustic_blur.mode=on"}),
                                                    {kWidth, kHeight, true, fg::TimingMode::None});
     EXPECT_GT(renderer.pipelines().size(), pipelines_culled) << "forcing the blur on created no pipeline";
     EXPECT_EQ(culled.image.rgba, forced_on.image.rgba);
@@ -259,10 +257,10 @@ TEST_F(WaterRule, CulledCausticsImageEqualsForcedOnImage) {
     forced.push_back("effects.caustics.mode=on");
     Renderer renderer(context());
     const RenderResult culled =
-        renderer.render(builtin("pool.json", night), {kWidth, kHeight, true, fg::TimingMode::None});
+        renderer.render(builtin_scene("pool.json", night), {kWidth, kHeight, true, fg::TimingMode::None});
     const size_t pipelines_culled = renderer.pipelines().size();
     const RenderResult forced_on =
-        renderer.render(builtin("pool.json", forced), {kWidth, kHeight, true, fg::TimingMode::None});
+        renderer.render(builtin_scene("pool.json", forced), {kWidth, kHeight, true, fg::TimingMode::None});
     EXPECT_GT(renderer.pipelines().size(), pipelines_culled) << "forcing the caustics on created no pipeline";
     EXPECT_EQ(culled.image.rgba, forced_on.image.rgba);
 }

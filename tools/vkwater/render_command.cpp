@@ -82,6 +82,9 @@ int run_render(const RenderArgs& args) {
     }
     if (!args.shard.empty())
         throw UserError("--shard '" + args.shard + "': a shard is a share of a sequence's frames; give --frames too");
+    if (args.temporal) {
+        throw UserError("--temporal: accumulates over a sequence's frames (accepted: with --frames A:B)");
+    }
     const auto start = std::chrono::steady_clock::now();
     const std::vector<std::string> overrides = applied_overrides(args);
     Scene scene = load_command_scene(args.scene, overrides, args.allow_outside_paths);
@@ -267,6 +270,10 @@ Run add_render_command(CLI::App& app) {
     command->add_option("--shard", args->shard,
                         "Render only task I of N of a sequence (I/N): the frames at positions I, I + N, ... of the "
                         "range, for a batch scheduler's array (tools/slurm/)");
+    command->add_flag("--temporal", args->temporal,
+                      "With --frames: temporal accumulation, each frame jittered within its pixel and blended into "
+                      "the frames before it, reprojected and clamped to its neighbourhood (every frame is rendered "
+                      "in order, none kept; as vkwater view --temporal)");
     add_device_options(*command, args->device);
     command->footer(
         "Examples:\n"

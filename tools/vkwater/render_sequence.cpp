@@ -57,7 +57,8 @@ nlohmann::json sequence_identity(const RenderArgs& args, const FramePattern& pat
               {"recording", args.recording},
               {"causticLayer", !args.no_caustic_layer},
               {"inscatterLayer", !args.no_inscatter_layer},
-              {"pixelType", args.half ? "half" : "float"}}}};
+              {"pixelType", args.half ? "half" : "float"},
+              {"temporal", args.temporal}}}};
 }
 
 std::string seconds_text(double seconds) {
@@ -85,6 +86,16 @@ int run_render_sequence(const RenderArgs& args) {
     if (args.out.empty()) {
         throw UserError("--frames: give --out with the frame number in the file name, e.g. --out out/pool_%04d.exr");
     }
+    // Each accumulated frame holds the ones before it: one process renders them all, in order.
+    if (args.temporal && !args.shard.empty()) {
+        throw UserError("--shard '" + args.shard +
+                        "': a temporal sequence's frames depend on the ones before (accepted: --temporal without "
+                        "--shard)");
+    }
+    if (args.temporal && args.spp != 1) {
+        throw UserError("--spp " + std::to_string(args.spp) +
+                        ": --temporal jitters its frames within the pixel itself (accepted: --spp 1 with it)");
+    }
     const FramePattern pattern(args.out);
     const std::vector<std::string> overrides = applied_overrides(args);
     Scene scene = load_command_scene(args.scene, overrides, args.allow_outside_paths);
@@ -104,7 +115,8 @@ int run_render_sequence(const RenderArgs& args) {
     const std::vector<int64_t> mine = shard.frames_of(range);
     for (int64_t frame : mine) {
         const auto found = recorded.find(frame);
-        if (found != recorded.end() && file_holds(pattern.file_for(frame), found->second.pixel_hash)) {
+        if (!args.temporal && found != recorded.end() &&
+            file_holds(pattern.file_for(frame), found->second.pixel_hash)) {
             ++kept;
         } else {
             to_render.push_back(frame);

@@ -25,6 +25,7 @@ RenderOptions render_options(const RenderArgs& args) {
     options.caustic_layer = !args.no_caustic_layer;
     options.inscatter_layer = !args.no_inscatter_layer;
     options.render_scale = args.render_scale;
+    options.temporal.enabled = args.temporal;
     options.recording =
         args.recording == "renderpass" ? fg::RecordingKind::RenderPassObject : fg::RecordingKind::DynamicRendering;
     return options;

@@ -38,7 +38,8 @@ struct RenderArgs {
     // A sequence: the frames, their rate and this process's share of them.
     std::string frames;  // "A:B[:STEP]"; empty: one frame
     double fps = 24.0;
-    std::string shard;  // "I/N"; empty: every frame
+    std::string shard;      // "I/N"; empty: every frame
+    bool temporal = false;  // --temporal: accumulate over the sequence's frames (RenderOptions::temporal)
 };
 
 // The --set overrides with --exposure as the override camera.exposure, so that the EXR's record

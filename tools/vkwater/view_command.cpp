@@ -61,6 +61,10 @@ Run add_view_command(CLI::App& app) {
     add_spp_option(*command, args->viewer.spp,
                    "more each frame shown averages k^2 sub-frames shifted to the centres of the pixel's k x k strata "
                    "(the box filter of render --spp, the same image; the caustic photons traced once for all of them)");
+    command->add_flag("--temporal", args->viewer.temporal,
+                      "Temporal accumulation: each frame jittered within its pixel and blended into the frames "
+                      "before it, reprojected to the moved camera and clamped to its neighbourhood, so that still "
+                      "views sharpen to the 16-sample box filter and moving ones do not ghost");
     command
         ->add_option("--budget-ms", args->viewer.budget_ms,
                      "Keep the frame time within this many milliseconds by choosing the settings (resolution "

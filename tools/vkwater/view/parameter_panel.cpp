@@ -235,6 +235,7 @@ bool ParameterPanel::draw(Scene& scene, const fg::FrameNeeds* needs, ViewControl
         if (ImGui::Button("step (N)")) controls.step = true;
         slider("time speed", controls.time_speed, 0.0f, 4.0f, "%.2f");
         if (scene.water) ImGui::Text("water time: %.3f s", scene.water->time);
+        ImGui::Checkbox("temporal accumulation", &controls.temporal);
         if (ImGui::Button("screenshot (F12)")) controls.screenshot = true;
         ImGui::SameLine();
         if (ImGui::Button("reload shaders (F5)")) controls.reload_shaders = true;

@@ -19,6 +19,7 @@ struct ViewControls {
     CameraMode camera_mode = CameraMode::Orbit;
     bool paused = false;
     double time_speed = 1.0;  // the water's seconds per second of frames
+    bool temporal = false;    // temporal accumulation (--temporal; not with a box filter)
     bool show_panels = true;
     // Requests, cleared by the viewer once served.
     bool step = false;  // advance the paused clock by one frame

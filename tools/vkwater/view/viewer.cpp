@@ -172,7 +172,12 @@ private:
 Viewer::Viewer(const ViewerOptions& options) : options_(options) {
     scripted_ = options_.frames > 0 || !options_.script.empty();
     filter_ = pixel_filter_from_spp(options_.spp);
+    if (options_.temporal && filter_.is_box()) {
+        throw UserError("--spp " + std::to_string(options_.spp) +
+                        ": --temporal jitters its frames within the pixel itself (accepted: --spp 1 with it)");
+    }
     controls_.paused = options_.paused;
+    controls_.temporal = options_.temporal;
     overrides_ = options_.overrides;
     load_scene_state();  // a bad scene fails before any window opens
     if (!options_.script.empty()) {
@@ -480,6 +485,8 @@ fg::FrameExecutor& Viewer::prepare_scene_frame(uint32_t sub_frame) {
     options.width = swapchain_->extent().width;
     options.height = swapchain_->extent().height;
     options.render_scale = options_.render_scale;
+    // The panel's switch (--temporal at start); a box filter jitters its sub-frames itself.
+    options.temporal.enabled = controls_.temporal && !filter_.is_box();
     apply_budget(options);
     // The hand-off image is imported: a new one (a new size) is a new graph.
     const FrameOutput output{[this, sub_frame](fg::FrameGraph& graph, fg::ImageHandle hdr) {

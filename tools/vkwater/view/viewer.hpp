@@ -36,6 +36,9 @@ struct ViewerOptions {
     // Samples per pixel (--spp, a square k^2): each frame shown is the mean of k^2 sub-frames, the
     // box filter vkwater render --spp takes, made on the device (passes/frame/accumulate.hpp).
     int64_t spp = 1;
+    // --temporal: each frame jittered within its pixel and blended into the frames before it,
+    // reprojected to the moved camera and clamped (RenderOptions::temporal).
+    bool temporal = false;
     // The frame-time budget (tools/vkwater/budget/): nullopt for the default (the present interval
     // on a GPU, kCpuBudgetMs on a CPU device, none in scripted runs, with a render_scale or with
     // more than one sample per pixel); 0 none.
