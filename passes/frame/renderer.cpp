@@ -434,6 +434,13 @@ void Renderer::reload_shaders() {
     *pipelines_ = fg::PipelineStore{};  // shared: the other renderers must reload too (the window has one)
 }
 
+glm::dvec2 Renderer::next_temporal_shift(uint32_t width, uint32_t height) const {
+    // A history of another size is made anew: its first frame is frame 0 of the cycle.
+    const Image* history = temporal_.history.get();
+    const bool fits = history && history->desc().width == width && history->desc().height == height;
+    return image_shift_for_pixel_offset(passes::temporal_jitter(fits ? temporal_.frames : 0), width, height);
+}
+
 fg::ImportedImage Renderer::temporal_history(uint32_t width, uint32_t height) {
     Image* history = temporal_.history.get();
     if (!history || history->desc().width != width || history->desc().height != height) {
@@ -468,21 +475,28 @@ Renderer::CompiledFrame& Renderer::prepare(const Scene& scene, const RenderOptio
     if (!(floor > 0.0 && floor <= 1.0) && !(floor == 0.0 && !options.temporal.clamp_history)) {
         throw InternalError("temporal accumulation: blend_floor " + std::to_string(floor) + " is outside (0, 1]");
     }
+    // The caller shifted the camera by this frame's jitter, as for the sub-frames of a box filter
+    // (the scene is not copied: its receivers are large, and their uploads are keyed on it).
+    const glm::dvec2 jitter = next_temporal_shift(options.width, options.height);
+    if (scene.camera.image_shift_ndc != jitter) {
+        throw InternalError(
+            "temporal accumulation: the camera's image shift is not this frame's jitter "
+            "(set it to Renderer::next_temporal_shift before the frame)");
+    }
     passes::TemporalInputs inputs;
     inputs.history = temporal_history(options.width, options.height);
-    // This frame's jitter on top of the caller's camera; the reprojection between unjittered cameras.
-    Scene jittered = scene;
-    jittered.camera.image_shift_ndc +=
-        image_shift_for_pixel_offset(passes::temporal_jitter(temporal_.frames), options.width, options.height);
+    // The reprojection is between unjittered cameras.
+    Camera unjittered = scene.camera;
+    unjittered.image_shift_ndc = glm::dvec2(0.0);
     const glm::dmat4 view_proj =
-        projection_matrix(scene.camera, double(options.width) / double(options.height)) * view_matrix(scene.camera);
+        projection_matrix(unjittered, double(options.width) / double(options.height)) * view_matrix(unjittered);
     inputs.first = temporal_.frames == 0;
     inputs.reprojection = glm::mat4(passes::temporal_reprojection(temporal_.previous_view_proj, view_proj));
     // Exactly the same camera: the reprojection is the identity, which fp32 would only round to one.
     inputs.camera_still = view_proj == temporal_.previous_view_proj;
     inputs.blend = static_cast<float>(std::max(1.0 / (temporal_.frames + 1.0), floor));
     inputs.clamp_history = options.temporal.clamp_history;
-    CompiledFrame& frame = prepare_graph(jittered, options, output, &inputs);
+    CompiledFrame& frame = prepare_graph(scene, options, output, &inputs);
     temporal_.previous_view_proj = view_proj;
     ++temporal_.frames;
     return frame;

@@ -61,9 +61,10 @@ struct RenderOptions {
     // Reuse reads the kept one instead of tracing the photons again.
     CausticMapCarry caustic_map_carry = CausticMapCarry::None;
     std::vector<glm::dvec2> sub_frame_shifts;
-    // On: this frame is rendered with the next sub-pixel jitter and blended into the colour the
-    // renderer accumulated over the frames before it (reprojected to this camera); off: the frame
-    // as it is, and the accumulated colour is forgotten.
+    // On: this frame, whose camera the caller has shifted by Renderer::next_temporal_shift (as a
+    // box filter's sub-frames are shifted), is blended into the colour the renderer accumulated over
+    // the frames before it, reprojected to this camera; off: the frame as it is, and the accumulated
+    // colour is forgotten.
     TemporalOptions temporal;
 };
 
@@ -154,6 +155,10 @@ public:
     double last_declare_ms() const { return last_declare_ms_; }
     // Frames accumulated so far with RenderOptions::temporal on (0 after a frame with it off).
     uint32_t temporal_frames() const { return temporal_.frames; }
+    // The Camera::image_shift_ndc of the next temporal frame at width x height: its sub-pixel jitter
+    // (passes/frame/temporal_accumulation.hpp). A temporal frame whose camera has another shift is
+    // refused (InternalError).
+    glm::dvec2 next_temporal_shift(uint32_t width, uint32_t height) const;
     // Forgets the accumulated colour: the next temporal frame starts afresh (a reloaded scene).
     void reset_temporal_history() { temporal_.frames = 0; }
 

@@ -3,6 +3,7 @@
 // stale history is clamped into this frame's neighbourhood, and the reprojection matrix takes a
 // point's clip coordinates under one camera to those under the other.
 #include "passes/frame/temporal_accumulation.hpp"
+#include "engine/core/errors.hpp"
 #include "engine/scene/pixel_filter.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "passes/frame/renderer.hpp"
@@ -29,6 +30,12 @@ RenderOptions options(bool temporal) {
     return o;
 }
 
+// The renderer's next temporal frame: the camera shifted by its jitter, as the callers do.
+RenderResult temporal_frame(Renderer& renderer, Scene scene, const RenderOptions& temporal) {
+    scene.camera.image_shift_ndc = renderer.next_temporal_shift(kWidth, kHeight);
+    return renderer.render(scene, temporal);
+}
+
 // Frame `index` of a temporal sequence as the renderer renders it before the accumulation.
 RenderResult jittered_frame(Renderer& renderer, Scene scene, uint32_t index) {
     scene.camera.image_shift_ndc = image_shift_for_pixel_offset(passes::temporal_jitter(index), kWidth, kHeight);
@@ -49,7 +56,7 @@ TEST_F(TemporalAccumulation, StillFramesWithoutTheClampAreTheMeanOfTheirJittered
     temporal.temporal.clamp_history = false;
     temporal.temporal.blend_floor = 0.0;
     RenderResult accumulated;
-    for (uint32_t i = 0; i < passes::kTemporalJitterCycle; ++i) accumulated = renderer.render(scene, temporal);
+    for (uint32_t i = 0; i < passes::kTemporalJitterCycle; ++i) accumulated = temporal_frame(renderer, scene, temporal);
     EXPECT_EQ(renderer.temporal_frames(), passes::kTemporalJitterCycle);
 
     Renderer plain(context());
@@ -78,9 +85,11 @@ TEST_F(TemporalAccumulation, StillFramesWithoutTheClampAreTheMeanOfTheirJittered
 TEST_F(TemporalAccumulation, TheFirstFrameIsItsJitteredFrame) {
     const Scene scene = builtin_scene("calm.json");
     Renderer renderer(context());
-    const RenderResult first = renderer.render(scene, options(true));
+    const RenderResult first = temporal_frame(renderer, scene, options(true));
     Renderer plain(context());
     EXPECT_EQ(first.image.rgba, jittered_frame(plain, scene, 0).image.rgba);
+    // A camera without the next frame's jitter is the caller's mistake, refused.
+    EXPECT_THROW(renderer.render(scene, options(true)), InternalError);
 }
 
 // Eight frames of calm with a grey floor, then one where the floor is nearly black: the history
@@ -94,8 +103,8 @@ TEST_F(TemporalAccumulation, AStaleHistoryIsClampedIntoTheNeighbourhood) {
         Renderer renderer(context());
         RenderOptions temporal = options(true);
         temporal.temporal.clamp_history = clamp;
-        for (int i = 0; i < 8; ++i) renderer.render(grey, temporal);
-        const RenderResult accumulated = renderer.render(dark, temporal);
+        for (int i = 0; i < 8; ++i) temporal_frame(renderer, grey, temporal);
+        const RenderResult accumulated = temporal_frame(renderer, dark, temporal);
         Renderer plain(context());
         const RenderResult current = jittered_frame(plain, dark, 8);
         size_t outside = 0;
@@ -140,7 +149,7 @@ TEST_F(TemporalAccumulation, TheHistoryFollowsAMovingCamera) {
     constexpr int kSteps = 12;
     for (int i = 0; i <= kSteps; ++i) {
         scene.camera.target = start + (end - start) * (double(i) / kSteps);
-        accumulated = renderer.render(scene, temporal);
+        accumulated = temporal_frame(renderer, scene, temporal);
     }
     Renderer plain(context());
     const RenderResult point = plain.render(scene, options(false));

@@ -11,6 +11,8 @@
 #include "tools/reference/reference_renderer.hpp"
 
 #include <filesystem>
+#include <string>
+#include <utility>
 
 namespace vkw::test {
 namespace {
@@ -18,23 +20,30 @@ namespace {
 constexpr uint32_t kWidth = 64;
 constexpr uint32_t kHeight = 48;
 
+// Where the real-time shading has no approximation left (flat water), the real-time image against
+// the reference's differs by fp32 rounding alone. The shader chain (frame constants rounded to fp32,
+// Fresnel, refraction, exp and the in-scatter series) costs at most a few hundred fp32 roundings,
+// i.e. a relative error per value below 1e-5 (its derivation: tests/optics bound each piece near
+// 1e-6): relMSE <= (1e-5)^2 = 1e-10, and |bias| <= 1e-5.
+void expect_fp32_rounding_apart(const ImageRGBA32F& real_time, const ImageRGBA32F& reference, const std::string& what) {
+    const auto pixels = metrics::counted_pixels(kWidth, kHeight, nullptr);
+    EXPECT_LT(metrics::rel_mse(metrics::rgb_view(real_time), metrics::rgb_view(reference), pixels), 1e-10) << what;
+    EXPECT_LT(std::abs(metrics::mean_bias(metrics::rgb_view(real_time), metrics::rgb_view(reference), pixels)), 1e-5)
+        << what;
+}
+
+// The real-time frame and the reference of `scene`, at kWidth x kHeight, point-sampled.
+std::pair<ImageRGBA32F, ImageRGBA32F> both_renderers(Renderer& renderer, const Scene& scene) {
+    return {renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None}).image,
+            ref::render_reference(scene, {kWidth, kHeight, 0, {}})};
+}
+
 class WaterAgainstReference : public GpuTest, public ::testing::WithParamInterface<const char*> {};
 
 TEST_P(WaterAgainstReference, FlatWaterMatchesToFp32Rounding) {
-    const Scene scene = builtin_scene(GetParam());
     Renderer renderer(context());
-    const RenderResult real_time = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
-    const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
-    const double rel_mse = metrics::rel_mse(metrics::rgb_view(real_time.image), metrics::rgb_view(reference),
-                                            metrics::counted_pixels(kWidth, kHeight, nullptr));
-    const double bias = metrics::mean_bias(metrics::rgb_view(real_time.image), metrics::rgb_view(reference),
-                                           metrics::counted_pixels(kWidth, kHeight, nullptr));
-    // The shader chain (frame constants rounded to fp32, Fresnel, refraction, exp and the
-    // in-scatter series) costs at most a few hundred fp32 roundings, i.e. a relative
-    // error per value below 1e-5 (its derivation: tests/optics bound each piece near 1e-6):
-    // relMSE <= (1e-5)^2 = 1e-10, and |bias| <= 1e-5.
-    EXPECT_LT(rel_mse, 1e-10) << GetParam();
-    EXPECT_LT(std::abs(bias), 1e-5) << GetParam();
+    const auto [real_time, reference] = both_renderers(renderer, builtin_scene(GetParam()));
+    expect_fp32_rounding_apart(real_time, reference, GetParam());
 }
 
 // A box-filtered frame (4 sub-frames) against the mean of four reference images whose cameras are
@@ -181,12 +190,9 @@ TEST_F(WaterBody, InfiniteFlatWaterMatchesToFp32Rounding) {
     const Scene scene = builtin_scene("calm.json", {"water.half_extent=\"infinite\"", "floor.half_extent=2"});
     ASSERT_TRUE(scene.water->infinite);
     Renderer renderer(context());
-    const RenderResult real_time = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
-    const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
+    const auto [real_time, reference] = both_renderers(renderer, scene);
+    expect_fp32_rounding_apart(real_time, reference, "infinite flat water");
     const auto pixels = metrics::counted_pixels(kWidth, kHeight, nullptr);
-    EXPECT_LT(metrics::rel_mse(metrics::rgb_view(real_time.image), metrics::rgb_view(reference), pixels), 1e-10);
-    EXPECT_LT(std::abs(metrics::mean_bias(metrics::rgb_view(real_time.image), metrics::rgb_view(reference), pixels)),
-              1e-5);
     // Not the water of a 20 m square either: calm's own image differs.
     const RenderResult finite = renderer.render(builtin_scene("calm.json", {"floor.half_extent=2"}),
                                                 {kWidth, kHeight, true, fg::TimingMode::None});
@@ -203,15 +209,11 @@ TEST_F(WaterBody, CameraUnderInfiniteWaterSeesTheRunToTheBottom) {
         "calm.json", {"water.half_extent=\"infinite\"", "floor.half_extent=2", "camera.position=[0, -1, 0]",
                       "camera.direction=[0, -0.3, -1]", "camera.far=100000"});
     Renderer renderer(context());
-    const RenderResult real_time = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
-    const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
-    const auto pixels = metrics::counted_pixels(kWidth, kHeight, nullptr);
-    EXPECT_LT(metrics::rel_mse(metrics::rgb_view(real_time.image), metrics::rgb_view(reference), pixels), 1e-10);
-    EXPECT_LT(std::abs(metrics::mean_bias(metrics::rgb_view(real_time.image), metrics::rgb_view(reference), pixels)),
-              1e-5);
+    const auto [real_time, reference] = both_renderers(renderer, scene);
+    expect_fp32_rounding_apart(real_time, reference, "camera under infinite water");
     uint32_t dark = 0;
     for (uint32_t y = 0; y < kHeight; ++y) {
-        for (uint32_t x = 0; x < kWidth; ++x) dark += real_time.image.pixel(x, y)[2] > 0.0f ? 0 : 1;
+        for (uint32_t x = 0; x < kWidth; ++x) dark += real_time.pixel(x, y)[2] > 0.0f ? 0 : 1;
     }
     EXPECT_EQ(dark, 0u);
 }

@@ -146,6 +146,8 @@ int run_render_sequence(const RenderArgs& args) {
             const int64_t frame = to_render[done];
             const double water_time = water_time_at_frame_0 + static_cast<double>(frame) / args.fps;
             if (scene.water) scene.water->time = water_time;
+            if (args.temporal)
+                scene.camera.image_shift_ndc = renderer.next_temporal_shift(options.width, options.height);
             RenderResult result = render_filtered(renderer, scene, options, filter);
             const std::string what = "frame " + std::to_string(frame);
             require_finite_image(result.image, what + " (--check-finite names the first pass that made one)");

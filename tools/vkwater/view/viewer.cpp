@@ -502,6 +502,9 @@ fg::FrameExecutor& Viewer::prepare_scene_frame(uint32_t sub_frame) {
         options.caustic_map_carry = sub_frame == 0 ? CausticMapCarry::Keep : CausticMapCarry::Reuse;
         scene_->camera.image_shift_ndc = options.sub_frame_shifts[sub_frame];
     }
+    if (options.temporal.enabled) {
+        scene_->camera.image_shift_ndc = renderer_->next_temporal_shift(options.width, options.height);
+    }
     try {
         scene_executor_ = &renderer_->prepare_frame(*scene_, options, output);
     } catch (const UserError& error) {
@@ -512,6 +515,9 @@ fg::FrameExecutor& Viewer::prepare_scene_frame(uint32_t sub_frame) {
         before_panel_->restore(*scene_);
         message_ = std::string("refused: ") + error.what();
         if (filter_.is_box()) scene_->camera.image_shift_ndc = options.sub_frame_shifts[sub_frame];
+        if (options.temporal.enabled) {
+            scene_->camera.image_shift_ndc = renderer_->next_temporal_shift(options.width, options.height);
+        }
         scene_executor_ = &renderer_->prepare_frame(*scene_, options, output);
     }
     scene_->camera.image_shift_ndc = centre_shift;  // the frame's declaration has read it
