@@ -2,11 +2,12 @@
 #extension GL_GOOGLE_include_directive : require
 // Test kernel: evaluates shaders/water/glitter_lobe.glsl over a grid of eye directions o and writes
 // L(o) o_y times the grid cell's solid angle, so that the host's sum is the integral of L o_y over
-// the eye's hemisphere (tests/optics/glitter_test.cpp). Mode 0: a grid over (cos theta, phi) of the
-// whole hemisphere; mode 1: a grid over the plane tangent to `centre` at unit distance, o =
+// the eye's hemisphere (tests/optics/glitter_test.cpp). Mode bit 0 clear: a grid over (cos theta,
+// phi) of the whole hemisphere; set: a grid over the plane tangent to `centre` at unit distance, o =
 // normalize(centre + a t1 + b t2) with |a|, |b| <= half_width, where d(omega) = da db / (1 + a^2 +
-// b^2)^(3/2), for narrow lobes. Fresnel: the exact form at dot(o, h). Per sample: that value, and
-// o (3 floats), for the lobe's centroid.
+// b^2)^(3/2), for narrow lobes. Mode bit 1: the transmission lobe toward an eye in the water (the
+// lower hemisphere, |o_y| in place of o_y), else the reflection lobe. Fresnel: the exact form at the
+// facet's cosine. Per sample: that value, and o (3 floats), for the lobe's centroid.
 #include "common/fresnel.glsl"
 #include "water/glitter_lobe.glsl"
 
@@ -28,10 +29,11 @@ void main() {
     const float j = (float(index / params.n) + 0.5) / float(params.n);
     vec3 o;
     float solid_angle;
-    if (params.mode == 0u) {
+    const bool transmitted = (params.mode & 2u) != 0u;
+    if ((params.mode & 1u) == 0u) {
         const float u = i, phi = 2.0 * GLITTER_PI * j;
         const float s = sqrt(max(0.0, 1.0 - u * u));
-        o = vec3(s * cos(phi), u, s * sin(phi));
+        o = vec3(s * cos(phi), transmitted ? -u : u, s * sin(phi));
         solid_angle = 2.0 * GLITTER_PI / float(params.n * params.n);
     } else {
         const vec3 c = params.centre.xyz;
@@ -44,10 +46,16 @@ void main() {
         solid_angle = (2.0 * w / float(params.n)) * (2.0 * w / float(params.n)) / (r2 * sqrt(r2));
     }
     const vec3 l = params.to_source.xyz;
+    const float n = params.covariance.w;
     float value = 0.0;
-    if (o.y > 0.0) {
+    if (transmitted && o.y < 0.0) {
+        const float cos_h = max(0.0, dot(l, glitter_refraction_half_vector(o, l, n)));
+        const float transmittance = fresnel_exact(cos_h, 1.0, n).T;
+        value = glitter_transmission_lobe(o, l, n, params.mean_slope, params.covariance.xyz, transmittance) * -o.y *
+                solid_angle;
+    } else if (!transmitted && o.y > 0.0) {
         const float cos_h = max(0.0, dot(o, glitter_half_vector(o, l)));
-        const float reflectance = fresnel_exact(cos_h, 1.0, params.covariance.w).R;
+        const float reflectance = fresnel_exact(cos_h, 1.0, n).R;
         value = glitter_lobe(o, l, params.mean_slope, params.covariance.xyz, reflectance) * o.y * solid_angle;
     }
     results.values[4u * index] = value;

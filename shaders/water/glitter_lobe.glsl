@@ -35,19 +35,51 @@ float smith_lambda(vec3 direction, vec3 covariance) {
 // The half vector between the source and the eye (toward both).
 vec3 glitter_half_vector(vec3 to_eye, vec3 to_source) { return normalize(to_source + to_eye); }
 
-// L per unit source irradiance, without the visibility; `reflectance`: F at dot(to_eye, h).
-float glitter_lobe(vec3 to_eye, vec3 to_source, vec2 mean_slope, vec3 covariance, float reflectance) {
-    if (!(to_eye.y > 0.0) || !(to_source.y > 0.0)) return 0.0;
-    const vec3 h = glitter_half_vector(to_eye, to_source);
-    if (!(h.y > 0.0)) return 0.0;
+// The Gaussian density of the facets' slopes at z_h = -h.xz / h.y, the slope of the facet normal h
+// (per unit of slope, per unit of the horizontal plane); D(h) = p(z_h) / h_y^4 per solid angle.
+float glitter_slope_density(vec3 h, vec2 mean_slope, vec3 covariance) {
     const vec2 delta = -h.xz / h.y - mean_slope;
     const float det = covariance.x * covariance.z - covariance.y * covariance.y;
     const float q =
         (covariance.z * delta.x * delta.x - 2.0 * covariance.y * delta.x * delta.y + covariance.x * delta.y * delta.y) /
         det;
-    const float density = exp(-0.5 * q) / (2.0 * GLITTER_PI * sqrt(det));
+    return exp(-0.5 * q) / (2.0 * GLITTER_PI * sqrt(det));
+}
+
+// L per unit source irradiance, without the visibility; `reflectance`: F at dot(to_eye, h).
+float glitter_lobe(vec3 to_eye, vec3 to_source, vec2 mean_slope, vec3 covariance, float reflectance) {
+    if (!(to_eye.y > 0.0) || !(to_source.y > 0.0)) return 0.0;
+    const vec3 h = glitter_half_vector(to_eye, to_source);
+    if (!(h.y > 0.0)) return 0.0;
     const float h2 = h.y * h.y;
-    return reflectance * density / (4.0 * to_eye.y * h2 * h2);
+    return reflectance * glitter_slope_density(h, mean_slope, covariance) / (4.0 * to_eye.y * h2 * h2);
+}
+
+// The refraction's half vector (Walter et al. 2007): the facet normal, toward the
+// air, that bends the source's light (from direction `to_source`, in the air, index 1) toward an eye
+// in the water (index n) along `to_eye`, which points down.
+vec3 glitter_refraction_half_vector(vec3 to_eye, vec3 to_source, float n) {
+    return normalize(-(to_source + n * to_eye));
+}
+
+// The same facets seen from the water: L per unit source irradiance, transmitted toward an eye below
+// along `to_eye` (pointing down), without the visibility; `transmittance`: T at dot(to_source, h).
+//     L = T (l.h) |o.h| n^2 p(z_h) / (|o_y| h_y^4 |l + n o|^2)
+// (Walter et al. 2007's BTDF times l_y, with D(h) = p(z_h) / h_y^4 and the denominator
+// (l.h + n o.h)^2 = |l + n o|^2). The n^2 is the radiance's gain across the surface (docs/model.md
+// section 2). Without the visibility it transmits exactly the flux the facets let through: the
+// integral of L |o_y| over the eye's lower hemisphere is that of T(l.h) (l.h) / h_y p(z) over the
+// slopes (tests/optics/glitter_test.cpp).
+float glitter_transmission_lobe(vec3 to_eye, vec3 to_source, float n, vec2 mean_slope, vec3 covariance,
+                                float transmittance) {
+    if (!(to_eye.y < 0.0) || !(to_source.y > 0.0)) return 0.0;
+    const vec3 bent = to_source + n * to_eye;
+    const vec3 h = glitter_refraction_half_vector(to_eye, to_source, n);
+    const float lh = dot(to_source, h), oh = dot(to_eye, h);
+    if (!(h.y > 0.0) || !(lh > 0.0) || !(oh < 0.0)) return 0.0;
+    const float h2 = h.y * h.y;
+    return transmittance * lh * (-oh) * n * n * glitter_slope_density(h, mean_slope, covariance) /
+           (-to_eye.y * h2 * h2 * dot(bent, bent));
 }
 
 // Smith's visibility of the facets from the eye and the source together.

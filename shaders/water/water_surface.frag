@@ -201,7 +201,7 @@ void main() {
         }
         // The sun's glitter stands for its disk in reflections where the unresolved slopes spread it
         // more than the disk (water/sun_glitter.glsl); a reflected ray that meets a receiver hides it.
-        const bool glitter = GLITTER != 0u && glitter_replaces_disk(unresolved);
+        const bool glitter = GLITTER != 0u && glitter_replaces_disk(unresolved, false, n);
         vec3 reflected_direction = reflect(v, normal);
         bool met_object = false;
         vec3 reflected = reflected_direction.y < 0.0
@@ -225,16 +225,25 @@ void main() {
     vec3 reflected_caustic;  // not in the layer: the reference records the first receiver only
     vec3 at_surface =
         f.R * radiance_in_water(p, reflect(v, water_side), true, f.R, reflected_length, reflected_caustic);
+    // Through Snell's window the refracted sun glitters too: the lobe of the facets' transmission
+    // stands for the disk where the unresolved slopes spread it more (water/sun_glitter.glsl). It
+    // reaches the eye even where the pixel's own normal reflects the view ray totally.
+    const bool glitter = GLITTER != 0u && glitter_replaces_disk(unresolved, true, n);
+    bool met_object = false;
     vec3 to_air;
     if (!f.total_internal_reflection && refract_direction(v, water_side, n, to_air)) {
-        vec3 above = sky_radiance(to_air);
+        vec3 above = glitter ? sky_base_radiance(to_air) : sky_radiance(to_air);
         vec3 object;
         float distance_to_object;
         vec2 object_uv;
-        if (object_along(false, p, to_air, params.scene_size, f.T, object, distance_to_object, object_uv)) {
-            above = object;
-        }
+        met_object = object_along(false, p, to_air, params.scene_size, f.T, object, distance_to_object, object_uv);
+        if (met_object) above = object;
         at_surface += f.T * n * n * above;
+    }
+    if (glitter && !met_object) {
+        const vec3 to_sun = -frame.sun_direction.xyz;
+        const float facet_cos = max(0.0, dot(to_sun, glitter_refraction_half_vector(-v, to_sun, n)));
+        at_surface += refracted_sun_glitter_radiance(-v, normal, unresolved, n, surface_fresnel(facet_cos, 1.0, n).T);
     }
     float camera_depth = max(0.0, frame.water.x - eye.y);
     out_radiance = vec4(water_path_radiance(analytic_inscatter_sigma_s(), frame.medium_sigma_t.rgb,
