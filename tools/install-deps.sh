@@ -35,6 +35,9 @@ packages=(
   clang-14 libclang-rt-14-dev
   # the frame graph diagram in docs/architecture.md (docs/images/frame_graph.sh, a test)
   graphviz
+  # the peer demo's browser (tools/benchmarks/peer_demo.sh): WebGL in headless Chromium on the
+  # SwiftShader it ships, the CPU device a peer's web demo meets on this machine
+  chromium
   # the bundle that carries the build to a machine without these packages (tools/gpu-bundle.sh)
   xz-utils
   # the batch scheduler test (tests/slurm): a single-node Slurm started in a temporary folder
