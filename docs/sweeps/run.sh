@@ -21,18 +21,26 @@ vkwater="$build/tools/vkwater/vkwater"
 [ -x "$vkwater" ] || { echo "run.sh: $vkwater not found (build the vkwater target first)" >&2; exit 1; }
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
+source tools/benchmarks/provenance.sh
 
 godrays='effects.godrays.mode=off|effects.godrays.grid=32|effects.godrays.grid=128'
 caustics='effects.caustics.mode=off|effects.caustics.kernel=bilinear|effects.caustics.kernel=adaptive|effects.caustics.kernel=footprint|effects.caustics.method=procedural|effects.caustics.splat=camera-space'
 
 godray_methods='effects.godrays.method=lines effects.godrays.grid=32|effects.godrays.method=lines effects.godrays.grid=64|effects.godrays.method=lines effects.godrays.grid=128|effects.godrays.method=lines effects.godrays.grid=256|effects.godrays.method=marched effects.godrays.march_steps=8|effects.godrays.method=marched effects.godrays.march_steps=16|effects.godrays.method=marched effects.godrays.march_steps=32|effects.godrays.method=marched effects.godrays.march_steps=64'
 
+# Each CSV's first line says where its figures come from: the date, the commit, the device, the CPU
+# count and the load average before and after its sweep (tools/benchmarks/provenance.sh); `vkwater
+# bench merge` and the tests read past lines that begin with #.
 bench_into() {  # output name, scene, then bench's sweep arguments
     local name=$1 scene=$2
     shift 2
+    provenance_start
     "$vkwater" bench "scenes/$scene.json" --reference "tests/references/$scene.exr" --frames "$frames" \
         --out-dir "$scratch/$name" "$@"
-    cp "$scratch/$name/sweep.csv" "docs/sweeps/$name.csv"
+    {
+        echo "# $(provenance_line "$vkwater" "$frames timed frames per setting")"
+        cat "$scratch/$name/sweep.csv"
+    } >"docs/sweeps/$name.csv"
     cp "$scratch/$name/sweep.svg" "docs/sweeps/$name.svg"
 }
 

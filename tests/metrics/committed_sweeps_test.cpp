@@ -34,7 +34,9 @@ double smallest_rel_mse(const std::filesystem::path& csv_file) {
     std::ifstream csv(csv_file);
     EXPECT_TRUE(csv) << "cannot read " << csv_file << " (regenerate it with docs/sweeps/run.sh)";
     std::string line;
-    std::getline(csv, line);
+    while (std::getline(csv, line) && line.rfind('#', 0) == 0) {
+        // where the figures come from (docs/sweeps/run.sh), before the header
+    }
     std::vector<std::string> header;
     for (std::stringstream columns(line); std::getline(columns, line, ',');) header.push_back(line);
     const auto column = std::find(header.begin(), header.end(), "rel_mse");

@@ -96,6 +96,30 @@ TEST(metrics_sweep_report, CsvRefusesWhatItDidNotWrite) {
                    "column index: '2' is not below the column settings (2)");
     expect_refused(header + "\"a\",1,1,0.5\n", "line 2: 4 fields where the header has 17");
     expect_refused(header + "\"a,1,1\n", "line 2: 1 fields where the header has 17");
+    // Below lines of metadata, the lines are still counted from the file's first.
+    expect_refused("# Measured here\n# and now\n" + header + "\"a\",1,1,0.5\n",
+                   "line 4: 4 fields where the header has 17");
+    expect_refused("# Measured here\nsetting,median_ms\n", "line 2: not the header of vkwater bench's sweep.csv");
+}
+
+// The committed sweeps begin with where their figures come from (docs/sweeps/run.sh writes it as
+// `# Measured ...` lines): read_csv reads past them to the same rows.
+TEST(metrics_sweep_report, CsvReadsPastItsMetadataLines) {
+    const fs::path file = fs::path(::testing::TempDir()) / "metrics_sweep_metadata.csv";
+    bench::write_csv(file, two_rows(), 4);
+    const std::string plain = read_text(file);
+    const bench::SweepTable without = bench::read_csv(file);
+    std::ofstream(file) << "# Measured 2026-12-06 at abc1234 on llvmpipe, 2 CPUs; load average 1.0 before\n"
+                           "# a second line\n"
+                        << plain;
+    const bench::SweepTable with = bench::read_csv(file);
+    ASSERT_EQ(with.rows.size(), without.rows.size());
+    EXPECT_EQ(with.downsample_factor, without.downsample_factor);
+    for (size_t i = 0; i < with.rows.size(); ++i) {
+        EXPECT_EQ(with.rows[i].setting, without.rows[i].setting);
+        EXPECT_EQ(with.rows[i].median_ms, without.rows[i].median_ms);
+        EXPECT_EQ(with.rows[i].rel_mse, without.rows[i].rel_mse);
+    }
 }
 
 bench::SweepTable shard(std::vector<bench::SweepRow> rows) { return {std::move(rows), 4}; }

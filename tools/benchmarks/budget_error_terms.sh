@@ -9,13 +9,16 @@
 # (tools/vkwater/budget/quality.hpp): the resolution scale; the photon grid as a fraction of the
 # scene's; the water mesh's cells per side; the godray grid (0: godrays off); and, where the water
 # looks the scene up (`vkwater passes` says reflection or refraction: on), the lookups' steps. Writes
-# docs/sweeps/budget_error_terms.csv. About 4 min on 2 cores.
+# docs/sweeps/budget_error_terms.csv, under a first line that says where it comes from. About 4 min on
+# 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 vk=${VKWATER:-build/tools/vkwater/vkwater}
 scenes=("$@")
 [ ${#scenes[@]} -gt 0 ] || scenes=(pool lake ocean showcase/pool showcase/lagoon)
 csv=docs/sweeps/budget_error_terms.csv
+source tools/benchmarks/provenance.sh
+provenance_start
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
@@ -75,5 +78,10 @@ PY
         fi
     done
 done
-mv "$csv.tmp" "$csv"
+# The file's first line says where its figures come from (the readers skip lines that begin with #).
+{
+    echo "# $(provenance_line "$vk" "errors only, which the machine's load does not change")"
+    cat "$csv.tmp"
+} >"$csv"
+rm "$csv.tmp"
 cat "$csv"

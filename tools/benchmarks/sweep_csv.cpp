@@ -126,18 +126,23 @@ SweepTable read_csv(const std::filesystem::path& file) {
     std::string line;
     SweepTable table;
     std::vector<std::string> names;
-    if (!std::getline(in, line) || !split_fields(line, names) || names.size() < 7 ||
-        names[6].rfind("rel_mse_", 0) != 0) {
-        throw UserError(quoted_path(file) + ": line 1: not the header of vkwater bench's sweep.csv (" + header(4) +
+    // Lines of metadata before the header (`# Measured ... at COMMIT ...`: docs/sweeps/run.sh writes
+    // where the figures come from) are read past.
+    size_t header_number = 1;
+    bool has_header = false;
+    while ((has_header = static_cast<bool>(std::getline(in, line))) && line.rfind('#', 0) == 0) ++header_number;
+    const std::string header_line = quoted_path(file) + ": line " + std::to_string(header_number);
+    if (!has_header || !split_fields(line, names) || names.size() < 7 || names[6].rfind("rel_mse_", 0) != 0) {
+        throw UserError(header_line + ": not the header of vkwater bench's sweep.csv (" + header(4) +
                         ", with the downsampling factor in place of 4)");
     }
     table.downsample_factor = std::atoi(names[6].c_str() + std::string("rel_mse_").size());
     if (table.downsample_factor < 1 || line != header(table.downsample_factor)) {
-        throw UserError(quoted_path(file) + ": line 1: not the columns of this vkwater's bench (" +
-                        header(table.downsample_factor) + "); run the bench again");
+        throw UserError(header_line + ": not the columns of this vkwater's bench (" + header(table.downsample_factor) +
+                        "); run the bench again");
     }
     std::vector<std::string> fields;
-    for (size_t number = 2; std::getline(in, line); ++number) {
+    for (size_t number = header_number + 1; std::getline(in, line); ++number) {
         if (line.empty()) continue;
         if (!split_fields(line, fields) || fields.size() != names.size()) {
             throw UserError(quoted_path(file) + ": line " + std::to_string(number) + ": " +
