@@ -11,6 +11,9 @@
 #   the caustic layer's relMSE, from one render (a render is deterministic).
 # The first line says where the figures come from: the date, the commit (marked when the tree has
 # uncommitted changes), the device, the CPU count and the load average before and after.
+# - on a GPU, where one has been measured: the frame at 1920x1080 from the committed CSV of
+#   tools/benchmarks/scene_times.sh (GPU_CSV, default docs/sweeps/gpu-scene-times.csv; "-" for a
+#   scene it lacks), whose first line the second line printed here repeats.
 # Uses this tree's build (build/tools/vkwater/vkwater, or VKWATER=PATH); SCENES="pool lake" for
 # fewer scenes.
 set -euo pipefail
@@ -43,10 +46,19 @@ done
 number() { if [[ $1 =~ ^[-+0-9.eE]+$ ]]; then printf '%.3g' "$1"; else printf '%s' "$1"; fi; }
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
+gpu_csv=${GPU_CSV:-docs/sweeps/gpu-scene-times.csv}
+# The GPU's frame of SCENE at 1920x1080, from the CSV, or "-".
+gpu_frame() {
+  [ -f "$gpu_csv" ] || { echo "-"; return; }
+  awk -F, -v scene="$1" '!/^#/ && $1 == scene && $2 == "1920x1080" { printf "%.1f", $3; found = 1 }
+    END { if (!found) printf "-" }' "$gpu_csv"
+}
+
 provenance_line "$vk" "median of $rounds rounds"
+[ ! -f "$gpu_csv" ] || echo "The GPU column: $gpu_csv, $(head -1 "$gpu_csv" | sed 's/^# *//')"
 echo
-echo "| scene | frame at 800x600, ms | frame, calibration passes | relMSE at 400x300 | caustic-layer relMSE |"
-echo "| --- | --- | --- | --- | --- |"
+echo "| scene | frame at 800x600, ms | frame, calibration passes | relMSE at 400x300 | caustic-layer relMSE | GPU frame at 1920x1080, ms |"
+echo "| --- | --- | --- | --- | --- | --- |"
 for scene in "${scenes[@]}"; do
   name=$(echo "$scene" | tr / _)
   ms=$(cat "$work/$name".*.times | awk '{ print $1 }' | median)
@@ -55,5 +67,6 @@ for scene in "${scenes[@]}"; do
     --reference "tests/references/$scene.exr" > "$work/error.txt" 2>&1
   errors=$(sed -n 's/^error against [^:]*: relMSE \([^,]*\),.* caustic relMSE \([^,]*\),.*/\1 \2/p' "$work/error.txt")
   read -r relmse caustic <<< "${errors:-n/a n/a}"
-  printf '| `%s` | %.0f | %.0f | %s | %s |\n' "$scene" "$ms" "$passes" "$(number "$relmse")" "$(number "$caustic")"
+  printf '| `%s` | %.0f | %.0f | %s | %s | %s |\n' "$scene" "$ms" "$passes" "$(number "$relmse")" "$(number "$caustic")" \
+    "$(gpu_frame "$scene")"
 done

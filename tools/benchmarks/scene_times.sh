@@ -11,7 +11,10 @@
 # readback of the image included), the sum of the passes, the calibration pass (a constant
 # shader over every pixel: the cheapest full-screen pass, the unit that makes two machines
 # comparable), the graph's CPU declare + compile, and the three costliest passes; then every
-# pass of every scene at the last size. docs/performance.md keeps the tables.
+# pass of every scene at the last size. docs/performance.md keeps the tables. With CSV=FILE, also
+# writes per scene and size the frame, the passes' sum, the calibration pass and the graph's CPU time
+# (ms) to FILE, under a first line that says where they come from (docs/sweeps/gpu-scene-times.csv,
+# which the README's headline table reads, is such a file).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source "$(dirname "$0")/provenance.sh"
@@ -51,7 +54,14 @@ done > "$work/times.tsv"
 provenance_line "$vk"
 echo "device: $(cat "$work/device.txt"); timing: $(cat "$work/method.txt"); frame $frames of \`--repeat $frames\`, median of $rounds rounds"
 echo
-awk -F'\t' -v last_size="${sizes[${#sizes[@]}-1]}" -v scene_list="${scenes[*]}" -v size_list="${sizes[*]}" '
+csv=${CSV:-}
+if [ -n "$csv" ]; then
+  {
+    echo "# $(provenance_line "$vk" "device: $(cat "$work/device.txt"); timing: $(cat "$work/method.txt"); frame $frames of --repeat $frames, median of $rounds rounds")"
+    echo "scene,size,frame_ms,passes_ms,calibration_ms,graph_cpu_ms"
+  } > "$csv"
+fi
+awk -F'\t' -v last_size="${sizes[${#sizes[@]}-1]}" -v scene_list="${scenes[*]}" -v size_list="${sizes[*]}" -v csv="$csv" '
   { ms[$1, $2, $3, $4] = $5; rounds[$3] = 1
     if (!(($1, $4) in seen)) { seen[$1, $4] = 1; order[$1, ++count[$1]] = $4 } }
   function median(values, n,    i, j, t) {
@@ -86,6 +96,8 @@ awk -F'\t' -v last_size="${sizes[${#sizes[@]}-1]}" -v scene_list="${scenes[*]}" 
       print "| " scene " | " size " | " fmt(frame) " | " (frame > 0 ? sprintf("%.0f", 1000 / frame) : "-") " | " \
             fmt(pass_sum(scene, size)) " | " fmt(med(scene, size, "calibration")) " | " \
             fmt(med(scene, size, "declare + compile graph")) " | " top " |"
+      if (csv != "") print scene "," size "," frame "," pass_sum(scene, size) "," med(scene, size, "calibration") "," \
+                           med(scene, size, "declare + compile graph") >> csv
     }
     print ""
     print "| scene | pass | ms at " last_size " |"
