@@ -81,8 +81,8 @@ vec3 sun_glitter_radiance(vec3 to_eye, vec3 normal, vec3 covariance, float refle
 
 // The sun's radiance transmitted toward an eye in the water (`to_eye` points down) around the
 // pixel's `normal`, for water of index n; `transmittance` gives T at a cosine as the surface's
-// Fresnel form does. The visibility takes the eye's direction mirrored upward: a Gaussian
-// heightfield seen from below hides its facets as it does from above.
+// Fresnel form does. The visibility takes the eye's direction reversed, pointing up: a Gaussian
+// heightfield of zero-mean slopes seen from below hides its facets as it does from above.
 vec3 refracted_sun_glitter_radiance(vec3 to_eye, vec3 normal, vec3 covariance, float n, float transmittance) {
     if (frame.sun_direction.w < 0.5 || !(normal.y > 0.0)) return vec3(0.0);
     const vec3 to_sun = -frame.sun_direction.xyz;
