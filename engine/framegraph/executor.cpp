@@ -206,6 +206,13 @@ VkAttachmentLoadOp vk_load_op(LoadOp load) {
 
 bool is_color_attachment(Use use) { return use == Use::ColorAttachmentWrite || use == Use::ColorAttachmentBlend; }
 
+// A read-only depth-stencil attachment stores nothing (VK_ATTACHMENT_STORE_OP_NONE, core in Vulkan
+// 1.3): with STORE its end of pass counts as a write, which the graph's barriers, made for a read,
+// do not cover (synchronization validation reports a later sampled read as a hazard).
+VkAttachmentStoreOp store_op(Use use) {
+    return use == Use::DepthStencilReadOnly ? VK_ATTACHMENT_STORE_OP_NONE : VK_ATTACHMENT_STORE_OP_STORE;
+}
+
 // Attachments of a graphics pass: colours in declaration order, then the depth-stencil.
 std::vector<const ResourceUse*> attachments_of(const PassDecl& pass) {
     std::vector<const ResourceUse*> colors, depth;
@@ -241,11 +248,11 @@ void FrameExecutor::create_render_passes() {
             description.format = resource.image.format;
             description.samples = VK_SAMPLE_COUNT_1_BIT;
             description.loadOp = vk_load_op(use->load);
-            description.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+            description.storeOp = store_op(use->use);
             description.stencilLoadOp =
                 format_has_stencil(resource.image.format) ? vk_load_op(use->load) : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-            description.stencilStoreOp = format_has_stencil(resource.image.format) ? VK_ATTACHMENT_STORE_OP_STORE
-                                                                                   : VK_ATTACHMENT_STORE_OP_DONT_CARE;
+            description.stencilStoreOp =
+                format_has_stencil(resource.image.format) ? store_op(use->use) : VK_ATTACHMENT_STORE_OP_DONT_CARE;
             description.initialLayout = description.finalLayout = layout;
             const VkAttachmentReference reference{static_cast<uint32_t>(descriptions.size()), layout};
             if (is_color_attachment(use->use)) {
@@ -357,7 +364,7 @@ void FrameExecutor::begin_rendering(VkCommandBuffer cmd, uint32_t pass) {
             info.imageView = view(use->resource);
             info.imageLayout = layout_in_pass(pass, use->resource);
             info.loadOp = vk_load_op(use->load);
-            info.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+            info.storeOp = store_op(use->use);
             info.clearValue = clears[i];
             if (is_color_attachment(use->use)) {
                 colors.push_back(info);

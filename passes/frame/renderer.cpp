@@ -260,9 +260,6 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
             }
         }
     }
-    // The sky after the camera-medium split: a ray from the water that meets nothing sees nothing,
-    // or under infinite water the in-scatter of its run to the bottom.
-    passes::add_sky_pass(graph, scene.water && scene.water->infinite);
     // The water before the floor and the receiver meshes: none of them blends, so the depth test
     // alone decides each pixel, and the floor's pixels behind the surface (all of pool's) fail it
     // before their fragments are shaded.
@@ -273,6 +270,10 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
     }
     passes::add_floor_pass(graph, caustic_layer);
     if (receivers && !receivers->empty()) passes::add_receivers_pass(graph, *receivers);
+    // The sky last of the opaque passes, over only the pixels they left (so none is shaded twice),
+    // and after the camera-medium split: a ray from the water that meets nothing sees nothing, or
+    // under infinite water the in-scatter of its run to the bottom.
+    passes::add_sky_pass(graph, scene.water && scene.water->infinite);
     // Godrays only with a decision, as the frame constants' analytic in-scatter switch has it.
     const fg::EffectDecision* godrays = graph.needs().find(Effect::VolumeCaustics);
     if (surface && godrays && godrays->needed) {

@@ -19,7 +19,7 @@ void add_floor_pass(fg::FrameGraph& graph, bool caustic_layer) {
     const auto& data = graph.add_pass<Data>(
         "floor", fg::PassKind::Graphics,
         [&](fg::PassBuilder& builder, Data& d) {
-            d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
+            d.hdr = hdr_colour_attachment(builder, graph.blackboard());
             d.layer.create_or_load(builder, graph.blackboard(), caustic_layer);
             d.depth = scene_depth_attachment(builder, graph.blackboard());
             d.lighting.declare(builder, graph.blackboard());

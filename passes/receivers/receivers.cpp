@@ -3,6 +3,7 @@
 #include "engine/framegraph/pass_context.hpp"
 #include "passes/caustics/caustic_layer.hpp"
 #include "passes/common/frame_keys.hpp"
+#include "passes/common/scene_depth.hpp"
 #include "passes/receivers/receiver_draws.hpp"
 
 namespace vkw::passes {
@@ -19,7 +20,7 @@ void add_receivers_pass(fg::FrameGraph& graph, const ReceiverMeshes& meshes) {
         [&](fg::PassBuilder& builder, Data& d) {
             d.vertices = builder.vertex_buffer(meshes.import_vertices(graph));
             d.indices = builder.index_buffer(meshes.import_indices(graph));
-            d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
+            d.hdr = hdr_colour_attachment(builder, graph.blackboard());
             d.layer.load(builder, graph.blackboard());
             d.depth = builder.depth_stencil_attachment(graph.blackboard().get(keys::kSceneDepth), fg::LoadOp::Load);
             d.lighting.declare(builder, graph.blackboard());

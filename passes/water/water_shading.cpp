@@ -52,7 +52,7 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
             builder.serves(Effect::Water);
             d.surface.declare(builder, surface);
             constexpr VkPipelineStageFlags2 fragment = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
-            d.hdr = builder.color_attachment(graph.blackboard().get(keys::kHdrColor), fg::LoadOp::Load);
+            d.hdr = hdr_colour_attachment(builder, graph.blackboard());
             d.depth = scene_depth_attachment(builder, graph.blackboard());
             d.layer.create_or_load(builder, graph.blackboard(), caustic_layer);
             d.lighting.declare(builder, graph.blackboard());
