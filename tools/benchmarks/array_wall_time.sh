@@ -57,11 +57,11 @@ for ((round = 0; round < rounds; ++round)); do
   fi
 done
 
-median() { printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+source tools/benchmarks/median.sh
 provenance_line "$vk"
 echo "| scene | size | frames | one process, s | array of $tasks tasks, s | array / one | rounds | CPUs |"
 echo "| --- | --- | --- | --- | --- | --- | --- | --- |"
-awk -v scene="$scene" -v frames="$frames" -v one="$(median "${one[@]}")" -v arr="$(median "${arr[@]}")" \
+awk -v scene="$scene" -v frames="$frames" -v one="$(printf '%s\n' "${one[@]}" | median)" -v arr="$(printf '%s\n' "${arr[@]}" | median)" \
   -v rounds="$rounds" -v cpus="$(nproc)" 'BEGIN {
   printf "| %s | 400x300 | %d | %.1f | %.1f | %.2f | %d | %d |\n", scene, frames, one, arr, arr / one, rounds, cpus
 }'

@@ -44,7 +44,7 @@ for round in $(seq "$rounds"); do
 done
 # A number to three significant digits; anything else (n/a) as it is.
 number() { if [[ $1 =~ ^[-+0-9.eE]+$ ]]; then printf '%.3g' "$1"; else printf '%s' "$1"; fi; }
-median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+source tools/benchmarks/median.sh
 
 gpu_csv=${GPU_CSV:-docs/sweeps/gpu-scene-times.csv}
 # The GPU's frame of SCENE at 1920x1080, from the CSV, or "-".

@@ -125,13 +125,14 @@ for round in $(seq "$rounds"); do
   view_fps 12 >> "$work/own.fps"
 done
 
-median() { sort -g | awk '{ v[NR] = $1 } END { printf "%.1f\n", (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+source tools/benchmarks/median.sh
+median_of() { printf '%.1f' "$(median < "$1")"; }
 rates() { awk '{ printf "%s%.1f", (NR > 1 ? ", " : ""), $1 } END { print "" }' "$1"; }
 
 provenance_line "$vk" "median of $rounds rounds; the demo's WebGL: $renderer"
 echo
 echo "| at ${width}x${height} | fps, median | fps, each round |"
 echo "| --- | --- | --- |"
-echo "| WebGL Water (2011), Chromium on SwiftShader | $(median < "$work/demo.fps") | $(rates "$work/demo.fps") |"
-echo "| \`vkwater view scenes/pool.json\`, budget 66 ms | $(median < "$work/budget.fps") | $(rates "$work/budget.fps") |"
-echo "| \`vkwater view scenes/pool.json\`, its own settings | $(median < "$work/own.fps") | $(rates "$work/own.fps") |"
+echo "| WebGL Water (2011), Chromium on SwiftShader | $(median_of "$work/demo.fps") | $(rates "$work/demo.fps") |"
+echo "| \`vkwater view scenes/pool.json\`, budget 66 ms | $(median_of "$work/budget.fps") | $(rates "$work/budget.fps") |"
+echo "| \`vkwater view scenes/pool.json\`, its own settings | $(median_of "$work/own.fps") | $(rates "$work/own.fps") |"

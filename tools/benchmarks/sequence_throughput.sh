@@ -58,9 +58,9 @@ for ((round = 0; round < rounds; ++round)); do
   fi
 done
 
-median() { printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
-one_s=$(median "${one[@]}")
-each_s=$(median "${each[@]}")
+source tools/benchmarks/median.sh
+one_s=$(printf '%s\n' "${one[@]}" | median)
+each_s=$(printf '%s\n' "${each[@]}" | median)
 device=$("$vk" render "scenes/calm.json" --width 8 --height 8 --out "$scratch/probe.exr" | sed -n 's/^device: \(.*\) (instance.*/\1/p')
 provenance_line "$vk"
 echo "| scene | size | one process, $frames frames: s per frame (fps) | one process per frame, $((frames / 10)) frames: s per frame (fps) | ratio | rounds | device |"
