@@ -37,8 +37,7 @@ void add_godray_passes(fg::FrameGraph& graph, const GodrayInputs& inputs) {
     const fg::BufferHandle counters =
         add_godray_lines_passes(graph, {beams, settings.grid, view_depth, width, height, inputs.max_amplitude});
     const fg::ImageHandle radiance = add_godray_resolve_pass(graph, counters, view_depth, scale, width, height);
-    const fg::ImageHandle blurred_x = add_godray_blur_pass(graph, radiance, view_depth, scale, BlurAxis::X);
-    add_godray_composite_pass(graph, add_godray_blur_pass(graph, blurred_x, view_depth, scale, BlurAxis::Y), view_depth,
+    add_godray_composite_pass(graph, add_godray_blur(graph, radiance, view_depth, scale), view_depth,
                               inputs.inscatter_layer);
 }
 

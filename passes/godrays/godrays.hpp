@@ -3,7 +3,7 @@
 // (the renderer clears frame.medium_options.x while these passes run: counted once). Two methods
 // (effects.godrays.method):
 //   lines    add_godray_beams_pass -> add_godray_depth_pass -> add_godray_lines_passes ->
-//            add_godray_resolve_pass -> add_godray_blur_pass (x, y) -> add_godray_composite_pass
+//            add_godray_resolve_pass -> add_godray_blur (x, y) -> add_godray_composite_pass
 //   marched  add_godray_depth_pass -> add_godray_march_pass -> add_godray_composite_pass
 // at the godray resolution (the output's, or half of it per side), added to the HDR colour.
 // Every pass serves Effect::VolumeCaustics.
