@@ -80,12 +80,32 @@ bool projective_lookup(sampler2D view, bool mirrored, vec3 p, vec3 d, float max_
     vec4 texel = vec4(0.0);
     float s;
     if (!projective_start(view, mirrored, p, d, max_distance, s)) return false;
+    // The previous step's texel, its centre and the estimate it gave, and the centre of the texel
+    // two steps back. A ray that meets a receiver at a slant can alternate between two texels and
+    // never converge (about a sixth of lake's refracted rays did, each running all max_steps
+    // steps). Once a step's texel is the one of two steps before, every later step repeats the
+    // pair and none converges, so the texel the last of the max_steps steps would end on is known
+    // and taken at once: the same hit, bit for bit, without the steps.
+    vec4 previous_texel = vec4(0.0);
+    vec2 previous_uv = vec2(-1.0), uv_two_back = vec2(-1.0);
+    float previous_s = 0.0;
     for (int i = 0; i < max_steps; ++i) {
         if (!scene_view_uv(p + s * d, mirrored, uv)) return false;
         texel = scene_view_texel(view, uv, texel_uv);
         if (texel.a <= 0.0) return false;
         float next = max(0.0, dot(scene_view_point(texel_uv, texel.a, mirrored) - p, d));
         bool converged = abs(next - s) <= 1e-4 * next;
+        if (!converged && texel_uv == uv_two_back) {
+            const bool ends_on_previous = (max_steps - 1 - i) % 2 == 1;
+            texel = ends_on_previous ? previous_texel : texel;
+            texel_uv = ends_on_previous ? previous_uv : texel_uv;
+            s = ends_on_previous ? previous_s : next;
+            break;
+        }
+        uv_two_back = previous_uv;
+        previous_texel = texel;
+        previous_uv = texel_uv;
+        previous_s = next;
         s = next;
         if (converged) break;
     }
