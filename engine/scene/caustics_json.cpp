@@ -27,6 +27,13 @@ constexpr std::array<Named<CausticMethod>, 2> kMethods = {{
 
 }  // namespace
 
+const char* caustic_kernel_name(CausticKernel kernel) {
+    for (const auto& named : kKernels) {
+        if (named.value == kernel) return named.name.data();  // a literal: terminated
+    }
+    return "";
+}
+
 CausticSettings read_caustic_settings(FieldReader& fields) {
     const CausticSettings defaults;
     CausticSettings caustics;

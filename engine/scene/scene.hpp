@@ -187,6 +187,9 @@ enum class CausticKernel : uint8_t {
     Footprint,  // the photon's sub-cell's footprint, by area (Tipprasert 2006's area ratio; up to 8 texels per axis)
 };
 
+// The kernel's name in scene files (effects.caustics.kernel).
+const char* caustic_kernel_name(CausticKernel kernel);
+
 // effects.caustics.method: what produces the caustic map.
 enum class CausticMethod : uint8_t {
     Photons,  // the photon grid (passes/caustics/caustics_photons.hpp)

@@ -35,11 +35,11 @@ TEST(BudgetErrorModel, TableIsTheLargestMeasuredExcessOfEachKnob) {
         largest[key] = std::max(largest[key], std::stod(excess));
     }
     ASSERT_GE(largest.size(), 15u);
-    const std::map<std::string, Knob> knobs = {{"render_scale", Knob::RenderScale},
-                                               {"photon_grid_fraction", Knob::PhotonGridFraction},
-                                               {"mesh_resolution", Knob::MeshResolution},
-                                               {"godray_grid", Knob::GodrayGrid},
-                                               {"lookup_steps", Knob::LookupSteps}};
+    const std::map<std::string, Knob> knobs = {
+        {"render_scale", Knob::RenderScale},           {"photon_grid_fraction", Knob::PhotonGridFraction},
+        {"mesh_resolution", Knob::MeshResolution},     {"godray_grid", Knob::GodrayGrid},
+        {"lookup_steps", Knob::LookupSteps},           {"bilinear_kernel", Knob::BilinearKernel},
+        {"map_scale_fraction", Knob::MapScaleFraction}};
     for (const auto& [key, excess] : largest) {
         ASSERT_TRUE(knobs.count(key.first)) << key.first;
         if (key.first == "godray_grid" && key.second > 64) continue;  // finer than the table: 0 by definition
@@ -70,6 +70,24 @@ TEST(BudgetErrorModel, TermsAddAndTheLargestIsNamed) {
     EXPECT_GT(error_term(Knob::RenderScale, 0.5), error_term(Knob::RenderScale, 0.75));
     EXPECT_GT(error_term(Knob::PhotonGridFraction, 0.125), error_term(Knob::PhotonGridFraction, 0.5));
     EXPECT_GT(error_term(Knob::MeshResolution, 64), error_term(Knob::MeshResolution, 128));
+}
+
+// The kernel's term counts only where the scene's own kernel is not already the bilinear one; the
+// map scale's follows the fraction of the scene's.
+TEST(BudgetErrorModel, TheCausticKnobsAddTheirTerms) {
+    const Quality top{1.0, 1024, 256, 64, 0, 0, CausticKernel::Adaptive, 1.0};
+    Quality bilinear = top;
+    bilinear.caustic_kernel = CausticKernel::Bilinear;
+    EXPECT_GT(error_term(Knob::BilinearKernel, 1.0), 0.0) << "the measured scenes lose accuracy with it";
+    EXPECT_DOUBLE_EQ(predict_error(bilinear, top).excess, error_term(Knob::BilinearKernel, 1.0));
+    EXPECT_EQ(predict_error(bilinear, top).dominant, "caustic kernel");
+    Quality coarser = bilinear;
+    coarser.map_scale = 0.5;
+    EXPECT_DOUBLE_EQ(predict_error(coarser, top).excess,
+                     error_term(Knob::BilinearKernel, 1.0) + error_term(Knob::MapScaleFraction, 0.5));
+    Quality own_bilinear = top;
+    own_bilinear.caustic_kernel = CausticKernel::Bilinear;
+    EXPECT_EQ(predict_error(own_bilinear, own_bilinear).excess, 0.0);
 }
 
 }  // namespace

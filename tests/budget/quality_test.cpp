@@ -24,18 +24,41 @@ TEST(BudgetQuality, CandidatesNeverExceedTheScenesOwnSettings) {
     EXPECT_EQ(top.mesh_resolution, 256u);
     EXPECT_EQ(top.godray_grid, 64u);
     EXPECT_EQ(top.lookup_steps, 0u) << "pool's water looks up no scene view";
+    EXPECT_EQ(top.caustic_kernel, CausticKernel::Adaptive);
+    EXPECT_EQ(top.map_scale, 1.0);
     const std::vector<Quality> candidates = quality_candidates(top);
     // 5 scales x 4 godray settings x (grids 1024, 512, 256 with meshes 256, 128, 64, and grid 128
-    // with meshes 128 and 64: its mesh has at most 128 cells), all distinct.
-    EXPECT_EQ(candidates.size(), 5u * 4u * (3u * 3u + 2u));
+    // with meshes 128 and 64: its mesh has at most 128 cells) x 2 kernels x 2 map scales, all
+    // distinct.
+    EXPECT_EQ(candidates.size(), 5u * 4u * (3u * 3u + 2u) * 2u * 2u);
     EXPECT_NE(std::find(candidates.begin(), candidates.end(), top), candidates.end());
     for (const Quality& q : candidates) {
         EXPECT_LE(q.render_scale, top.render_scale);
         EXPECT_LE(q.photon_grid, top.photon_grid);
         EXPECT_LE(q.mesh_resolution, q.photon_grid);
         EXPECT_LE(q.godray_grid, top.godray_grid);
+        EXPECT_TRUE(q.caustic_kernel == top.caustic_kernel || q.caustic_kernel == CausticKernel::Bilinear);
+        EXPECT_TRUE(q.map_scale == top.map_scale || q.map_scale == 0.5) << q.map_scale;
         EXPECT_EQ(std::count(candidates.begin(), candidates.end(), q), 1);
     }
+}
+
+// The kernel and the map's scale are knobs only where photons are splatted into the light-space
+// map: a scene already on the bilinear kernel keeps it, and at the lowest map scale there is no
+// lower one; the camera-space splats have neither knob.
+TEST(BudgetQuality, TheCausticKnobsTurnOnlyWhatTheSceneHas) {
+    Scene scene = load_scene(kPool);
+    scene.effects.caustics.kernel = CausticKernel::Bilinear;
+    scene.effects.caustics.map_scale = kMinMapScale;
+    Quality top = scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0));
+    for (const Quality& q : quality_candidates(top)) {
+        EXPECT_EQ(q.caustic_kernel, CausticKernel::Bilinear);
+        EXPECT_EQ(q.map_scale, kMinMapScale);
+    }
+    scene.effects.caustics.splat = CausticSplat::CameraSpace;
+    top = scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0));
+    EXPECT_EQ(top.map_scale, 0.0);
+    EXPECT_EQ(quality_candidates(top).size(), 5u * 4u * (3u * 3u + 2u));
 }
 
 TEST(BudgetQuality, ASceneWithoutWaterTurnsOnlyTheResolution) {
@@ -72,8 +95,11 @@ TEST(BudgetQuality, ItsOptionsGiveTheSceneApplyQualityMakes) {
     ASSERT_EQ(top.scene_lookups, 2u) << "lake looks up both scene views";
     ASSERT_EQ(top.lookup_steps, 64u);
     ASSERT_EQ(top.godray_grid, 64u);
-    for (const Quality& q :
-         {Quality{0.5, 128, 128, 0, 8, 2}, Quality{1.0, 256, 256, 32, 64, 2}, Quality{0.35, 64, 64, 16, 16, 2}, top}) {
+    ASSERT_GT(top.map_scale, 0.0) << "lake splats photons into the light-space map";
+    const double half_map = std::max(kMinMapScale, 0.5 * top.map_scale);
+    for (const Quality& q : {Quality{0.5, 128, 128, 0, 8, 2, CausticKernel::Bilinear, half_map},
+                             Quality{1.0, 256, 256, 32, 64, 2, top.caustic_kernel, half_map},
+                             Quality{0.35, 64, 64, 16, 16, 2, CausticKernel::Bilinear, top.map_scale}, top}) {
         Scene applied = original;
         apply_quality(q, top, applied);
         std::vector<std::string> overrides;
@@ -93,6 +119,8 @@ TEST(BudgetQuality, ItsOptionsGiveTheSceneApplyQualityMakes) {
         EXPECT_EQ(given.effects.godrays.grid, applied.effects.godrays.grid);
         EXPECT_EQ(given.effects[Effect::Reflection].max_steps, applied.effects[Effect::Reflection].max_steps);
         EXPECT_EQ(given.effects[Effect::Refraction].max_steps, applied.effects[Effect::Refraction].max_steps);
+        EXPECT_EQ(given.effects.caustics.kernel, applied.effects.caustics.kernel);
+        EXPECT_EQ(given.effects.caustics.map_scale, applied.effects.caustics.map_scale);
         Quality in_the_scene = q;  // the resolution scale is the renderer's option, not the scene's
         in_the_scene.render_scale = 1.0;
         EXPECT_EQ(scene_quality(given, decide_frame_needs(given, 4.0 / 3.0)), in_the_scene);

@@ -7,8 +7,11 @@
 # knob, its value, the relMSE against the scene's box reference, and the excess over the
 # scene's own settings. The knobs and their values are the budget's candidates
 # (tools/vkwater/budget/quality.hpp): the resolution scale; the photon grid as a fraction of the
-# scene's; the water mesh's cells per side; the godray grid (0: godrays off); and, where the water
-# looks the scene up (`vkwater passes` says reflection or refraction: on), the lookups' steps. Writes
+# scene's; the water mesh's cells per side; the godray grid (0: godrays off); where the water
+# looks the scene up (`vkwater passes` says reflection or refraction: on), the lookups' steps; and,
+# where photons are splatted into the light-space map (`caustic photons` among the passes), the
+# bilinear kernel in place of the scene's (value 1) and the map's scale as a fraction of the
+# scene's. Writes
 # docs/sweeps/budget_error_terms.csv, under a first line that says where it comes from. About 4 min on
 # 2 cores.
 set -euo pipefail
@@ -37,14 +40,16 @@ relmse() {  # SCENE ARGS...: the relMSE of one render against the scene's refere
 echo "scene,knob,value,rel_mse,excess" >"$csv.tmp"
 for scene in "${scenes[@]}"; do
     # The scene's own settings: its photon grid, the mesh it draws, its godray grid.
-    read -r grid mesh godrays < <(python3 - "scenes/$scene.json" <<'PY'
+    read -r grid mesh godrays kernel map_scale < <(python3 - "scenes/$scene.json" <<'PY'
 import json, sys
 scene = json.load(open(sys.argv[1]))
 water = scene.get("water", {})
 grid = water.get("grid_resolution", 256)
 mesh = water.get("mesh_resolution", min(256, grid))
-godrays = scene.get("effects", {}).get("godrays", {}).get("grid", 64)
-print(grid, mesh, godrays)
+effects = scene.get("effects", {})
+godrays = effects.get("godrays", {}).get("grid", 64)
+caustics = effects.get("caustics", {})
+print(grid, mesh, godrays, caustics.get("kernel", "adaptive"), caustics.get("map_scale", 1.0))
 PY
     )
     base=$(relmse "$scene")
@@ -67,6 +72,15 @@ PY
         for steps in 16 8; do
             row lookup_steps "$steps" "$(relmse "$scene" --set "effects.reflection.max_steps=$steps" \
                 --set "effects.refraction.max_steps=$steps")"
+        done
+    fi
+    if grep -qE '^ +[0-9]+\. caustic photons ' <<<"$needs"; then
+        if [ "$kernel" != bilinear ]; then
+            row bilinear_kernel 1 "$(relmse "$scene" --set effects.caustics.kernel=bilinear)"
+        fi
+        for fraction in 0.5; do
+            scale=$(python3 -c "print(max(0.25, $map_scale * $fraction))")
+            row map_scale_fraction "$fraction" "$(relmse "$scene" --set "effects.caustics.map_scale=$scale")"
         done
     fi
     for g in 64 32 16 0; do

@@ -19,7 +19,8 @@ struct KnownPass {
 
 // Prior rates on lavapipe (Mesa 22.3, 2 cores), from `vkwater render scenes/pool.json --repeat 2`
 // at 800x600 and 400x300 with mesh resolutions 256 and 64; the lookup steps from lake's water
-// pass at max_steps 64, 16 and 8 (docs/performance.md "The frame-time budget"). Only their
+// pass at max_steps 64, 16 and 8; the photons' from pool with the adaptive kernel at map scales
+// 0.5, 1 and 2 and the bilinear one at 1 (docs/performance.md "The frame-time budget"). Only their
 // ratios matter once a frame has been timed; a GPU refits every factor.
 const std::vector<KnownPass>& known_passes() {
     using D = Driver;
@@ -36,7 +37,7 @@ const std::vector<KnownPass>& known_passes() {
         {"water surface (ocean grid)", {{{D::SurfaceVertices, 20.0}}}},
         {"water mesh (wave sum)", {{{D::MeshVertices, 21.0}}}},
         {"water mesh (ocean grid)", {{{D::MeshVertices, 21.0}}}},
-        {"caustic photons", {{{D::Photons, 250.0}}}},
+        {"caustic photons", {{{D::Photons, 10.0}, {D::HatPhotons, 95.0}, {D::PhotonTaps, 16.0}}}},
         {"caustic flux clear", {{{D::MapTexels, 2.3}}}},
         {"caustic resolve", {{{D::MapTexels, 18.0}}}},
         {"caustic blur x", {{{D::MapTexels, 5.0}}}},
@@ -80,8 +81,19 @@ CostDrivers cost_drivers(const Scene& scene, const Quality& quality, uint32_t wi
         at(drivers, Driver::MeshTriangles) = 2.0 * mesh * mesh;
         const double photons_per_side = grid * scene.effects.caustics.sub_photons;
         at(drivers, Driver::Photons) = photons_per_side * photons_per_side;
-        const double texels_per_side = std::max(1.0, std::round(grid * scene.effects.caustics.map_scale));
+        const double map_scale = quality.map_scale > 0.0 ? quality.map_scale : scene.effects.caustics.map_scale;
+        const double texels_per_side = std::max(1.0, std::round(grid * map_scale));
         at(drivers, Driver::MapTexels) = texels_per_side * texels_per_side;
+        // The bilinear tent adds to 2 x 2 texels. The adaptive hat reaches its neighbours' landing
+        // points, s = map_scale / S texels apart under flat water, so it spans about 2 s + 1 texels
+        // per axis (the footprint kernel is costed as the hat).
+        if (quality.map_scale > 0.0 && quality.caustic_kernel == CausticKernel::Bilinear) {
+            at(drivers, Driver::PhotonTaps) = 4.0 * at(drivers, Driver::Photons);
+        } else {
+            const double span = 2.0 * map_scale / scene.effects.caustics.sub_photons + 1.0;
+            at(drivers, Driver::HatPhotons) = at(drivers, Driver::Photons);
+            at(drivers, Driver::PhotonTaps) = span * span * at(drivers, Driver::Photons);
+        }
     }
     at(drivers, Driver::LookupSteps) = at(drivers, Driver::Pixels) * quality.scene_lookups * quality.lookup_steps;
     if (quality.godray_grid > 0) {

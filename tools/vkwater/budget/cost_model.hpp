@@ -31,6 +31,8 @@ enum class Driver : uint8_t {
     MeshVertices,     // the water mesh's vertices
     MeshTriangles,    // the water mesh's triangles
     Photons,          // photons traced
+    HatPhotons,       // photons whose kernel is shaped by their 4 neighbours, traced too (not the bilinear tent)
+    PhotonTaps,       // photons times the texels each one's kernel adds to (about; see cost_drivers)
     MapTexels,        // the light-space caustic map's texels
     Beams,            // godray beams
     BeamColumns,      // godray beams times the godray image's columns (a beam's walk)

@@ -25,12 +25,16 @@ const std::vector<Entry>& table(Knob knob) {
     static const std::vector<Entry> godray_grid = {
         {64, 0.00216019}, {32, 0.00337094}, {16, 0.00301504}, {0, 0.00357104}};
     static const std::vector<Entry> lookup_steps = {{64, 0.0}, {16, 0.0}, {8, 0.0025276}};
+    static const std::vector<Entry> bilinear_kernel = {{0, 0.0}, {1, 0.0}};
+    static const std::vector<Entry> map_scale_fraction = {{1.0, 0.0}, {0.5, 0.0}};
     switch (knob) {
         case Knob::LookupSteps: return lookup_steps;
         case Knob::RenderScale: return render_scale;
         case Knob::PhotonGridFraction: return photon_grid_fraction;
         case Knob::MeshResolution: return mesh_resolution;
         case Knob::GodrayGrid: return godray_grid;
+        case Knob::BilinearKernel: return bilinear_kernel;
+        case Knob::MapScaleFraction: return map_scale_fraction;
     }
     return render_scale;
 }
@@ -44,6 +48,8 @@ const char* knob_name(Knob knob) {
         case Knob::MeshResolution: return "mesh_resolution";
         case Knob::GodrayGrid: return "godray_grid";
         case Knob::LookupSteps: return "lookup_steps";
+        case Knob::BilinearKernel: return "bilinear_kernel";
+        case Knob::MapScaleFraction: return "map_scale_fraction";
     }
     return "";
 }
@@ -51,8 +57,10 @@ const char* knob_name(Knob knob) {
 double error_term(Knob knob, double value) {
     const std::vector<Entry>& entries = table(knob);
     // Above the table's first (finest) step nothing is lost: the measured scenes' own settings.
+    // The kernel's entries are 0 (the scene's) and 1 (bilinear): no step is finer than another.
+    const bool ordered = knob != Knob::BilinearKernel;
     const bool finer = knob == Knob::GodrayGrid ? value > entries.front().value : value >= entries.front().value;
-    if (finer && value != 0.0) return knob == Knob::GodrayGrid ? 0.0 : entries.front().excess;
+    if (ordered && finer && value != 0.0) return knob == Knob::GodrayGrid ? 0.0 : entries.front().excess;
     const Entry* nearest = &entries.front();
     for (const Entry& entry : entries) {
         if (std::abs(entry.value - value) < std::abs(nearest->value - value)) nearest = &entry;
@@ -74,6 +82,13 @@ ErrorPrediction predict_error(const Quality& quality, const Quality& top) {
     if (top.lookup_steps > 0) {
         terms.push_back({"scene lookup steps", error_term(Knob::LookupSteps, quality.lookup_steps) -
                                                    error_term(Knob::LookupSteps, top.lookup_steps)});
+    }
+    if (top.map_scale > 0.0) {
+        const bool bilinear = quality.caustic_kernel == CausticKernel::Bilinear;
+        terms.push_back({"caustic kernel", bilinear && top.caustic_kernel != CausticKernel::Bilinear
+                                               ? error_term(Knob::BilinearKernel, 1.0)
+                                               : 0.0});
+        terms.push_back({"caustic map scale", error_term(Knob::MapScaleFraction, quality.map_scale / top.map_scale)});
     }
     if (top.godray_grid > 0) {
         terms.push_back({"godrays", error_term(Knob::GodrayGrid, quality.godray_grid) -

@@ -24,8 +24,17 @@ struct ErrorPrediction {
 ErrorPrediction predict_error(const Quality& quality, const Quality& top);
 
 // One knob's term: the table's excess at `value` (a resolution scale, a photon grid fraction, a
-// mesh resolution, a godray grid, lookup steps), the nearest step's where the table has no such value.
-enum class Knob : uint8_t { RenderScale, PhotonGridFraction, MeshResolution, GodrayGrid, LookupSteps };
+// mesh resolution, a godray grid, lookup steps, 1 for the bilinear kernel in place of the scene's,
+// the map scale as a fraction of the scene's), the nearest step's where the table has no such value.
+enum class Knob : uint8_t {
+    RenderScale,
+    PhotonGridFraction,
+    MeshResolution,
+    GodrayGrid,
+    LookupSteps,
+    BilinearKernel,
+    MapScaleFraction
+};
 double error_term(Knob knob, double value);
 const char* knob_name(Knob knob);  // its name in docs/sweeps/budget_error_terms.csv
 

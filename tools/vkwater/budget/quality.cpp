@@ -36,6 +36,15 @@ Quality scene_quality(const Scene& scene, const fg::FrameNeeds& needs) {
             ++quality.scene_lookups;
             quality.lookup_steps = std::max<uint32_t>(quality.lookup_steps, scene.effects[lookup].max_steps);
         }
+        // The kernel and the map's scale are knobs only where photons are splatted into the
+        // light-space map (not the procedural caustics, not the camera-space splats).
+        const fg::EffectDecision* caustics = needs.find(Effect::SurfaceCaustics);
+        const CausticSettings& settings = scene.effects.caustics;
+        if (caustics && caustics->needed && settings.method == CausticMethod::Photons &&
+            settings.splat == CausticSplat::LightSpace) {
+            quality.caustic_kernel = settings.kernel;
+            quality.map_scale = settings.map_scale;
+        }
     }
     return quality;
 }
@@ -57,6 +66,15 @@ std::vector<Quality> quality_candidates(const Quality& top) {
     const std::vector<uint32_t> lookups = top.lookup_steps > 0
                                               ? steps_below(top.lookup_steps, kLookupSteps, std::size(kLookupSteps))
                                               : std::vector<uint32_t>{0};
+    std::vector<CausticKernel> kernels = {top.caustic_kernel};
+    std::vector<double> map_scales = {top.map_scale};
+    if (top.map_scale > 0.0) {
+        if (top.caustic_kernel != CausticKernel::Bilinear) kernels.push_back(CausticKernel::Bilinear);
+        for (double fraction : kMapScaleFractions) {
+            const double scale = std::max(kMinMapScale, top.map_scale * fraction);
+            if (scale < top.map_scale) map_scales.push_back(scale);
+        }
+    }
     std::vector<Quality> candidates;
     for (double scale : kRenderScales) {
         for (uint32_t grid : grids) {
@@ -65,9 +83,14 @@ std::vector<Quality> quality_candidates(const Quality& top) {
                 const uint32_t drawn = std::min(mesh, grid);
                 for (uint32_t godray : godrays) {
                     for (uint32_t steps : lookups) {
-                        const Quality candidate{scale, grid, drawn, godray, steps, top.scene_lookups};
-                        if (std::find(candidates.begin(), candidates.end(), candidate) == candidates.end()) {
-                            candidates.push_back(candidate);
+                        for (CausticKernel kernel : kernels) {
+                            for (double map_scale : map_scales) {
+                                const Quality candidate{scale,  grid,     drawn, godray, steps, top.scene_lookups,
+                                                        kernel, map_scale};
+                                if (std::find(candidates.begin(), candidates.end(), candidate) == candidates.end()) {
+                                    candidates.push_back(candidate);
+                                }
+                            }
                         }
                     }
                 }
@@ -100,6 +123,10 @@ void apply_quality(const Quality& quality, const Quality& top, Scene& scene) {
             scene.effects[lookup].max_steps = static_cast<int>(quality.lookup_steps);
         }
     }
+    if (top.map_scale > 0.0) {
+        scene.effects.caustics.kernel = quality.caustic_kernel;
+        scene.effects.caustics.map_scale = quality.map_scale;
+    }
 }
 
 std::vector<std::string> quality_arguments(const Quality& quality, const Quality& top) {
@@ -125,6 +152,13 @@ std::vector<std::string> quality_arguments(const Quality& quality, const Quality
                                 ".max_steps=" + std::to_string(quality.lookup_steps));
         }
     }
+    if (quality.caustic_kernel != top.caustic_kernel) {
+        arguments.push_back(std::string("--set effects.caustics.kernel=") +
+                            caustic_kernel_name(quality.caustic_kernel));
+    }
+    if (quality.map_scale != top.map_scale) {
+        arguments.push_back("--set effects.caustics.map_scale=" + format_number(quality.map_scale));
+    }
     return arguments;
 }
 
@@ -142,6 +176,10 @@ std::string describe_quality(const Quality& quality) {
     }
     if (quality.godray_grid > 0) text += ", godrays " + std::to_string(quality.godray_grid) + "^2";
     if (quality.lookup_steps > 0) text += ", lookup steps " + std::to_string(quality.lookup_steps);
+    if (quality.map_scale > 0.0) {
+        text += std::string(", kernel ") + caustic_kernel_name(quality.caustic_kernel) + ", map scale " +
+                format_number(quality.map_scale);
+    }
     return text;
 }
 

@@ -9,6 +9,10 @@
 //   godray_grid      effects.godrays.grid, the beams walked; 0 turns the godrays off
 //   lookup_steps     effects.reflection/refraction.max_steps: each pixel's refinement or march
 //                    steps through the scene views, where the water looks the scene up
+//   caustic_kernel   effects.caustics.kernel: the bilinear tent's 4 taps a photon against the
+//                    adaptive hat's 9 (and its 4 neighbours traced), where the light-space map is made
+//   map_scale        effects.caustics.map_scale: the map's texels (clear, resolve, blur) and the
+//                    hat's taps, which span the photons' spacing in texels
 #pragma once
 
 #include "engine/framegraph/frame_needs.hpp"
@@ -27,6 +31,8 @@ struct Quality {
     uint32_t godray_grid = 0;      // 0: no godrays (the scene's decision, or turned off)
     uint32_t lookup_steps = 0;     // 0: the water looks no scene view up
     uint32_t scene_lookups = 0;    // how many of reflection and refraction look the scene up (0 to 2)
+    CausticKernel caustic_kernel = CausticKernel::Adaptive;  // the light-space map's splat kernel
+    double map_scale = 0.0;  // the light-space map's texels per water cell; 0: the frame makes no photon map
     bool operator==(const Quality&) const = default;
 };
 
@@ -58,5 +64,7 @@ inline constexpr double kPhotonGridFractions[] = {1.0, 0.5, 0.25, 0.125};
 inline constexpr uint32_t kMeshResolutions[] = {256, 128, 64};
 inline constexpr uint32_t kGodrayGrids[] = {64, 32, 16, 0};
 inline constexpr uint32_t kLookupSteps[] = {16, 8};
+inline constexpr double kMapScaleFractions[] = {1.0, 0.5};  // of the scene's, at least kMinMapScale
+inline constexpr double kMinMapScale = 0.25;                // effects.caustics.map_scale's lower limit
 
 }  // namespace vkw::budget
