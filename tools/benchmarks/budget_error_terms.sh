@@ -37,7 +37,7 @@ relmse() {  # SCENE ARGS...: the relMSE of one render against the scene's refere
         tr -d ,
 }
 
-echo "scene,knob,value,rel_mse,excess" >"$csv.tmp"
+echo "scene,knob,value,rel_mse,excess" >"$out/rows.csv"
 for scene in "${scenes[@]}"; do
     # The scene's own settings: its photon grid, the mesh it draws, its godray grid.
     read -r grid mesh godrays kernel map_scale < <(python3 - "scenes/$scene.json" <<'PY'
@@ -45,7 +45,8 @@ import json, sys
 scene = json.load(open(sys.argv[1]))
 water = scene.get("water", {})
 grid = water.get("grid_resolution", 256)
-mesh = water.get("mesh_resolution", min(256, grid))
+# Infinite water is drawn from the screen's grid: no uniform mesh to turn (0).
+mesh = 0 if water.get("half_extent") == "infinite" else water.get("mesh_resolution", min(256, grid))
 effects = scene.get("effects", {})
 godrays = effects.get("godrays", {}).get("grid", 64)
 caustics = effects.get("caustics", {})
@@ -53,18 +54,22 @@ print(grid, mesh, godrays, caustics.get("kernel", "adaptive"), caustics.get("map
 PY
     )
     base=$(relmse "$scene")
-    row() { echo "$scene,$1,$2,$3,$(python3 -c "print(f'{max(0.0, $3 - $base):.6g}')")" >>"$csv.tmp"; }
+    row() {
+        [ -n "$3" ] || { echo "budget_error_terms.sh: $scene, $1 = $2 gave no relMSE (the render failed)" >&2; exit 1; }
+        echo "$scene,$1,$2,$3,$(python3 -c "print(f'{max(0.0, $3 - $base):.6g}')")" >>"$out/rows.csv"
+    }
     for scale in 1 0.75 0.5 0.35 0.25; do
         row render_scale "$scale" "$(relmse "$scene" --render-scale "$scale")"
     done
     for fraction in 1 0.5 0.25 0.125; do
         g=$(python3 -c "print(max(2, round($grid * $fraction)))")
         m=$((mesh < g ? mesh : g))
-        row photon_grid_fraction "$fraction" \
-            "$(relmse "$scene" --set "water.grid_resolution=$g" --set "water.mesh_resolution=$m")"
+        mesh_option=()
+        [ "$mesh" = 0 ] || mesh_option=(--set "water.mesh_resolution=$m")
+        row photon_grid_fraction "$fraction" "$(relmse "$scene" --set "water.grid_resolution=$g" "${mesh_option[@]}")"
     done
     for m in 256 128 64; do
-        [ "$m" -le "$mesh" ] || continue
+        [ "$mesh" != 0 ] && [ "$m" -le "$mesh" ] || continue
         row mesh_resolution "$m" "$(relmse "$scene" --set "water.mesh_resolution=$m")"
     done
     needs=$("$vk" passes "scenes/$scene.json" --width 400 --height 300)
@@ -92,10 +97,11 @@ PY
         fi
     done
 done
-# The file's first line says where its figures come from (the readers skip lines that begin with #).
+# The file's first line says where its figures come from (the readers skip lines that begin with #);
+# made before the tracked file is rewritten, so that it names the tree as it was measured.
+line=$(provenance_line "$vk" "errors only, which the machine's load does not change")
 {
-    echo "# $(provenance_line "$vk" "errors only, which the machine's load does not change")"
-    cat "$csv.tmp"
+    echo "# $line"
+    cat "$out/rows.csv"
 } >"$csv"
-rm "$csv.tmp"
 cat "$csv"
