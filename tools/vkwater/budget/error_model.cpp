@@ -18,15 +18,15 @@ struct Entry {
 // (tests/budget/error_model_test.cpp checks that this table is that file's).
 const std::vector<Entry>& table(Knob knob) {
     static const std::vector<Entry> render_scale = {
-        {1.0, 0.0}, {0.75, 0.0132873}, {0.5, 0.0481425}, {0.35, 0.0834085}, {0.25, 0.119518}};
+        {1.0, 0.0}, {0.75, 0.0132873}, {0.5, 0.0481425}, {0.35, 0.0834085}, {0.25, 0.11952}};
     static const std::vector<Entry> photon_grid_fraction = {
-        {1.0, 0.0}, {0.5, 0.0188401}, {0.25, 0.0226672}, {0.125, 0.0612845}};
-    static const std::vector<Entry> mesh_resolution = {{256, 0.0}, {128, 0.0022011}, {64, 0.0150635}};
+        {1.0, 0.0}, {0.5, 0.01884}, {0.25, 0.0226672}, {0.125, 0.0612895}};
+    static const std::vector<Entry> mesh_resolution = {{256, 0.0}, {128, 0.0006656}, {64, 0.0150687}};
     static const std::vector<Entry> godray_grid = {
         {64, 0.00216019}, {32, 0.00337094}, {16, 0.00301504}, {0, 0.00357104}};
     static const std::vector<Entry> lookup_steps = {{64, 0.0}, {16, 0.0}, {8, 0.0025276}};
-    static const std::vector<Entry> bilinear_kernel = {{0, 0.0}, {1, 0.0}};
-    static const std::vector<Entry> map_scale_fraction = {{1.0, 0.0}, {0.5, 0.0}};
+    static const std::vector<Entry> bilinear_kernel = {{0, 0.0}, {1, 0.009364}};
+    static const std::vector<Entry> map_scale_fraction = {{1.0, 0.0}, {0.5, 0.0255253}};
     switch (knob) {
         case Knob::LookupSteps: return lookup_steps;
         case Knob::RenderScale: return render_scale;
