@@ -102,8 +102,9 @@ struct BudgetRun {
 BudgetRun run_budget(double budget_ms, uint32_t frames, const std::function<double(uint32_t)>& load_at) {
     static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
     ScriptedDevice device(scene);
-    BudgetController controller(budget_ms, scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0)),
-                                [](const Quality& q) { return cost_drivers(scene, q, kWidth, kHeight); });
+    BudgetController controller(
+        budget_ms, scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0)),
+        [](const Quality& q) { return cost_drivers(scene, q, kWidth, kHeight); }, [] { return double(kHeight); });
     BudgetRun run;
     uint64_t timing_due = 3;  // after the warm-up frames, as the viewer
     for (uint32_t frame = 0; frame < frames; ++frame) {
@@ -160,7 +161,9 @@ TEST(BudgetController, NeverPicksASettingTheTableRanksWorseAtEqualCost) {
     static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
     ScriptedDevice device(scene);
     const Quality top = scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0));
-    BudgetController controller(100.0, top, [](const Quality& q) { return cost_drivers(scene, q, kWidth, kHeight); });
+    BudgetController controller(
+        100.0, top, [](const Quality& q) { return cost_drivers(scene, q, kWidth, kHeight); },
+        [] { return double(kHeight); });
     controller.add_pass_times(device.pass_times(top));
     const std::vector<Quality> candidates = quality_candidates(top);
     for (double limit : {20.0, 50.0, 100.0, 200.0, 400.0}) {

@@ -6,7 +6,9 @@
 # knob changed at a time from the scene's own settings, and prints one CSV row per render: the
 # knob, its value, the relMSE against the scene's box reference, and the excess over the
 # scene's own settings. The knobs and their values are the budget's candidates
-# (tools/vkwater/budget/quality.hpp): the resolution scale; the photon grid as a fraction of the
+# (tools/vkwater/budget/quality.hpp): the resolution scale (and, as render_scale 2, the scene
+# rendered at 800x600 and box-averaged to 400x300, whose signed excess is the gain of twice the
+# rows, for the error model's resolution term); the photon grid as a fraction of the
 # scene's; the water mesh's cells per side; the godray grid (0: godrays off); where the water
 # looks the scene up (`vkwater passes` says reflection or refraction: on), the lookups' steps; and,
 # where photons are splatted into the light-space map (`caustic photons` among the passes), the
@@ -37,6 +39,15 @@ relmse() {  # SCENE ARGS...: the relMSE of one render against the scene's refere
         tr -d ,
 }
 
+# The same at twice the size (800x600), box-averaged down to 400x300 (oiiotool --resize:filter=box)
+# before the comparison: the error of rendering twice the reference's rows (render_scale 2 below).
+relmse_twice() {  # SCENE
+    "$vk" render "scenes/$1.json" --width 800 --height 600 --no-caustic-layer --no-inscatter-layer \
+        --out "$out/twice.exr" -q
+    oiiotool "$out/twice.exr" --ch R,G,B,A --resize:filter=box 400x300 -o "$out/twice-small.exr"
+    "$vk" compare "$out/twice-small.exr" "$(reference "$1")" | awk '/^relMSE/ {print $2; exit}'
+}
+
 echo "scene,knob,value,rel_mse,excess" >"$out/rows.csv"
 for scene in "${scenes[@]}"; do
     # The scene's own settings: its photon grid, the mesh it draws, its godray grid.
@@ -54,10 +65,15 @@ print(grid, mesh, godrays, caustics.get("kernel", "adaptive"), caustics.get("map
 PY
     )
     base=$(relmse "$scene")
+    # KNOB VALUE RELMSE [signed]: the excess over the scene's own settings, at least 0 unless signed
+    # (twice the rows: a gain, which the resolution term needs).
     row() {
         [ -n "$3" ] || { echo "budget_error_terms.sh: $scene, $1 = $2 gave no relMSE (the render failed)" >&2; exit 1; }
-        echo "$scene,$1,$2,$3,$(python3 -c "print(f'{max(0.0, $3 - $base):.6g}')")" >>"$out/rows.csv"
+        local floor=0.0
+        [ "${4:-}" != signed ] || floor=-1.0
+        echo "$scene,$1,$2,$3,$(python3 -c "print(f'{max($floor, $3 - $base):.6g}')")" >>"$out/rows.csv"
     }
+    row render_scale 2 "$(relmse_twice "$scene")" signed
     for scale in 1 0.75 0.5 0.35 0.25; do
         row render_scale "$scale" "$(relmse "$scene" --render-scale "$scale")"
     done

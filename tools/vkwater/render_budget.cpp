@@ -31,9 +31,12 @@ BudgetedSettings choose_budgeted_settings(Renderer& renderer, Scene& scene, Rend
     const fg::FrameNeeds needs = decide_frame_needs(scene, double(options.width) / double(options.height));
     const budget::Quality top = budget::scene_quality(scene, needs);
     const uint32_t width = options.width, height = options.height;
-    budget::BudgetController controller(budget_ms, top, [&original, width, height](const budget::Quality& q) {
-        return budget::cost_drivers(original, q, width, height);
-    });
+    budget::BudgetController controller(
+        budget_ms, top,
+        [&original, width, height](const budget::Quality& q) {
+            return budget::cost_drivers(original, q, width, height);
+        },
+        [height] { return double(height); });
 
     struct Tried {
         budget::Quality quality;
@@ -68,7 +71,8 @@ BudgetedSettings choose_budgeted_settings(Renderer& renderer, Scene& scene, Rend
     for (const Tried& t : tried) {
         if (t.measured_ms < cheapest->measured_ms) cheapest = &t;
         if (t.measured_ms > budget_ms) continue;
-        if (!best || budget::predict_error(t.quality, top).excess < budget::predict_error(best->quality, top).excess)
+        if (!best || budget::predict_error(t.quality, top, height).excess <
+                         budget::predict_error(best->quality, top, height).excess)
             best = t;
     }
     const Tried chosen = best ? *best : *cheapest;
@@ -82,7 +86,7 @@ BudgetedSettings choose_budgeted_settings(Renderer& renderer, Scene& scene, Rend
     settings.measured_ms = chosen.measured_ms;
     // The prediction made before it ran (the scene's own settings ran first, unpredicted).
     settings.predicted_ms = chosen.predicted_ms > 0.0 ? chosen.predicted_ms : chosen.measured_ms;
-    settings.error = budget::predict_error(chosen.quality, top);
+    settings.error = budget::predict_error(chosen.quality, top, height);
     settings.fits = chosen.measured_ms <= budget_ms;
     return settings;
 }

@@ -17,10 +17,12 @@ double median_of(std::vector<double> values) {
 }  // namespace
 
 BudgetController::BudgetController(double budget_ms, const Quality& top,
-                                   std::function<CostDrivers(const Quality&)> drivers)
+                                   std::function<CostDrivers(const Quality&)> drivers,
+                                   std::function<double()> output_rows)
     : budget_ms_(budget_ms),
       top_(top),
       drivers_(std::move(drivers)),
+      output_rows_(std::move(output_rows)),
       candidates_(quality_candidates(top)),
       current_(top) {}
 
@@ -28,7 +30,7 @@ Choice BudgetController::describe(const Quality& quality) const {
     Choice choice;
     choice.quality = quality;
     choice.predicted_ms = model_.predict_ms(drivers_(quality), quality.godray_grid > 0, quality.render_scale < 1.0);
-    choice.error = predict_error(quality, top_);
+    choice.error = predict_error(quality, top_, output_rows_());
     return choice;
 }
 
@@ -89,7 +91,7 @@ bool BudgetController::add_frame(double ms) {
     }
     if (measured < kUpgradeFraction * budget_ms_ && frames_at_current_.size() >= kUpgradeFrames) {
         const Choice next = choose(kTargetFraction * budget_ms_);
-        if (next.error.excess >= predict_error(current_, top_).excess) return false;
+        if (next.error.excess >= predict_error(current_, top_, output_rows_()).excess) return false;
         change_to(next.quality);
         return true;
     }

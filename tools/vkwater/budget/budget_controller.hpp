@@ -46,8 +46,10 @@ public:
     static constexpr double kTargetFraction = 0.85;
     static constexpr double kUpgradeFraction = 0.7;
 
-    // `drivers` gives a candidate's cost drivers (cost_drivers() for the scene and output size).
-    BudgetController(double budget_ms, const Quality& top, std::function<CostDrivers(const Quality&)> drivers);
+    // `drivers` gives a candidate's cost drivers (cost_drivers() for the scene and output size),
+    // `output_rows` the output's height in pixels (the error model's resolution term follows it).
+    BudgetController(double budget_ms, const Quality& top, std::function<CostDrivers(const Quality&)> drivers,
+                     std::function<double()> output_rows);
 
     double budget_ms() const { return budget_ms_; }
     const Quality& current() const { return current_; }
@@ -80,6 +82,7 @@ private:
     double budget_ms_;
     Quality top_;
     std::function<CostDrivers(const Quality&)> drivers_;
+    std::function<double()> output_rows_;
     std::vector<Quality> candidates_;
     CostModel model_;
     Quality current_;

@@ -17,8 +17,10 @@ struct Entry {
 // docs/sweeps/budget_error_terms.csv, the largest excess of each knob's value over its scenes
 // (tests/budget/error_model_test.cpp checks that this table is that file's).
 const std::vector<Entry>& table(Knob knob) {
-    static const std::vector<Entry> render_scale = {
-        {1.0, 0.0}, {0.75, 0.0132873}, {0.5, 0.0481425}, {0.35, 0.0834085}, {0.25, 0.11952}};
+    // Above 1, the smallest (most negative) change of any scene, so that going down from there
+    // is not underestimated.
+    static const std::vector<Entry> render_scale = {{2.0, 0.0},       {1.0, 0.0},        {0.75, 0.0132873},
+                                                    {0.5, 0.0481425}, {0.35, 0.0834085}, {0.25, 0.11952}};
     static const std::vector<Entry> photon_grid_fraction = {
         {1.0, 0.0}, {0.5, 0.01884}, {0.25, 0.0226672}, {0.125, 0.0612895}};
     static const std::vector<Entry> mesh_resolution = {{256, 0.0}, {128, 0.0006656}, {64, 0.0150687}};
@@ -68,10 +70,23 @@ double error_term(Knob knob, double value) {
     return nearest->excess;
 }
 
-ErrorPrediction predict_error(const Quality& quality, const Quality& top) {
+double resolution_error(double rows_fraction) {
+    const std::vector<Entry>& entries = table(Knob::RenderScale);  // from 2 down to 0.25
+    const double f = std::clamp(rows_fraction, entries.back().value, entries.front().value);
+    for (size_t i = 1; i < entries.size(); ++i) {
+        const Entry &above = entries[i - 1], &below = entries[i];
+        if (f < below.value) continue;
+        const double t = std::log2(above.value / f) / std::log2(above.value / below.value);
+        return above.excess + t * (below.excess - above.excess);
+    }
+    return entries.back().excess;
+}
+
+ErrorPrediction predict_error(const Quality& quality, const Quality& top, double output_rows) {
+    const double output = output_rows / kErrorTableRows;
     std::vector<std::pair<const char*, double>> terms = {
         {"resolution scale",
-         error_term(Knob::RenderScale, quality.render_scale) - error_term(Knob::RenderScale, top.render_scale)},
+         resolution_error(quality.render_scale * output) - resolution_error(top.render_scale * output)},
     };
     if (top.photon_grid > 0) {
         terms.push_back(

@@ -21,7 +21,19 @@ struct ErrorPrediction {
     std::string dominant;  // the knob whose term is largest ("" when none adds any)
 };
 
-ErrorPrediction predict_error(const Quality& quality, const Quality& top);
+// The table's figures are for images of kErrorTableRows rows (400x300, against references of that
+// size). The resolution scale's term follows the rows actually rendered: at an output of
+// `output_rows`, scale s renders s * output_rows rows, and its term is the table's error at that
+// many rows over the error at the output's own (both as fractions of kErrorTableRows,
+// interpolated in log2 between the table's steps, which run from 2x down to 0.25x). An output
+// larger than the table's averages more samples per reference pixel, so a given scale costs
+// less error there.
+inline constexpr double kErrorTableRows = 300.0;
+ErrorPrediction predict_error(const Quality& quality, const Quality& top, double output_rows = kErrorTableRows);
+
+// The table's relMSE at `rows_fraction` times kErrorTableRows rendered rows, relative to rendering
+// kErrorTableRows (0 at 1, negative above it).
+double resolution_error(double rows_fraction);
 
 // One knob's term: the table's excess at `value` (a resolution scale, a photon grid fraction, a
 // mesh resolution, a godray grid, lookup steps, 1 for the bilinear kernel in place of the scene's,

@@ -114,6 +114,10 @@ private:
     void note_pass_list(const fg::FrameGraph& graph);
     double choose_budget_ms() const;
     void start_budget();
+    // The frame's size: the window's, or the options' before it has one.
+    VkExtent2D output_extent() const {
+        return swapchain_ ? swapchain_->extent() : VkExtent2D{options_.width, options_.height};
+    }
     void apply_budget(RenderOptions& options);
     void feed_budget(double interval_ms);
 
@@ -270,10 +274,12 @@ void Viewer::start_budget() {
     refraction_steps_at_load_ = scene_->effects[Effect::Refraction].max_steps;
     const fg::FrameNeeds needs = decide_frame_needs(*scene_, double(options_.width) / double(options_.height));
     budget_ = std::make_unique<budget::BudgetController>(
-        budget_ms_, budget::scene_quality(*scene_, needs), [this](const budget::Quality& q) {
-            const VkExtent2D extent = swapchain_ ? swapchain_->extent() : VkExtent2D{options_.width, options_.height};
+        budget_ms_, budget::scene_quality(*scene_, needs),
+        [this](const budget::Quality& q) {
+            const VkExtent2D extent = output_extent();
             return budget::cost_drivers(*scene_, q, extent.width, extent.height);
-        });
+        },
+        [this] { return double(output_extent().height); });
 }
 
 void Viewer::apply_budget(RenderOptions& options) {
