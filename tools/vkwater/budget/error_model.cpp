@@ -19,8 +19,8 @@ struct Entry {
 const std::vector<Entry>& table(Knob knob) {
     // Above 1, the smallest (most negative) change of any scene, so that going down from there
     // is not underestimated.
-    static const std::vector<Entry> render_scale = {{2.0, 0.0},       {1.0, 0.0},        {0.75, 0.0132873},
-                                                    {0.5, 0.0481425}, {0.35, 0.0834085}, {0.25, 0.11952}};
+    static const std::vector<Entry> render_scale = {{2.0, -0.0172189}, {1.0, 0.0},        {0.75, 0.0132873},
+                                                    {0.5, 0.0481425},  {0.35, 0.0834085}, {0.25, 0.11952}};
     static const std::vector<Entry> photon_grid_fraction = {
         {1.0, 0.0}, {0.5, 0.01884}, {0.25, 0.0226672}, {0.125, 0.0612895}};
     static const std::vector<Entry> mesh_resolution = {{256, 0.0}, {128, 0.0006656}, {64, 0.0150687}};
