@@ -111,6 +111,11 @@ TEST(BudgetErrorModel, TheCausticKnobsAddTheirTerms) {
     coarser.map_scale = 0.5;
     EXPECT_DOUBLE_EQ(predict_error(coarser, top).excess,
                      error_term(Knob::BilinearKernel, 1.0) + error_term(Knob::MapScaleFraction, 0.5));
+    // At a coarser photon grid, the kernel's excess measured there.
+    Quality coarse_grid = bilinear;
+    coarse_grid.photon_grid = 256;
+    EXPECT_DOUBLE_EQ(predict_error(coarse_grid, top).excess,
+                     error_term(Knob::PhotonGridFraction, 0.25) + error_term(Knob::BilinearKernel, 0.25));
     Quality own_bilinear = top;
     own_bilinear.caustic_kernel = CausticKernel::Bilinear;
     EXPECT_EQ(predict_error(own_bilinear, own_bilinear).excess, 0.0);

@@ -12,7 +12,8 @@
 # scene's; the water mesh's cells per side; the godray grid (0: godrays off); where the water
 # looks the scene up (`vkwater passes` says reflection or refraction: on), the lookups' steps; and,
 # where photons are splatted into the light-space map (`caustic photons` among the passes), the
-# bilinear kernel in place of the scene's (value 1) and the map's scale as a fraction of the
+# bilinear kernel in place of the scene's (the value: the photon grid fraction it is measured at,
+# the excess over the scene's kernel at that grid) and the map's scale as a fraction of the
 # scene's. Writes
 # docs/sweeps/budget_error_terms.csv, under a first line that says where it comes from. About 4 min on
 # 2 cores.
@@ -65,15 +66,22 @@ print(grid, mesh, godrays, caustics.get("kernel", "adaptive"), caustics.get("map
 PY
     )
     base=$(relmse "$scene")
-    # KNOB VALUE RELMSE [signed]: the excess over the scene's own settings, at least 0 unless signed
-    # (twice the rows: a gain, which the resolution term needs).
+    # KNOB VALUE RELMSE [AGAINST] [signed]: the excess over AGAINST (default the scene's own
+    # settings' relMSE), at least 0 unless signed (twice the rows: a gain, which the resolution term
+    # needs).
     row() {
         [ -n "$3" ] || { echo "budget_error_terms.sh: $scene, $1 = $2 gave no relMSE (the render failed)" >&2; exit 1; }
-        local floor=0.0
-        [ "${4:-}" != signed ] || floor=-1.0
-        echo "$scene,$1,$2,$3,$(python3 -c "print(f'{max($floor, $3 - $base):.6g}')")" >>"$out/rows.csv"
+        local against=${4:-$base} floor=0.0
+        [ "${5:-}" != signed ] || floor=-1.0
+        echo "$scene,$1,$2,$3,$(python3 -c "print(f'{max($floor, $3 - $against):.6g}')")" >>"$out/rows.csv"
     }
-    row render_scale 2 "$(relmse_twice "$scene")" signed
+    needs=$("$vk" passes "scenes/$scene.json" --width 400 --height 300)
+    # The bilinear kernel's rows: where photons are splatted into the light-space map with another
+    # kernel, at each photon grid, against the scene's kernel at that grid (its excess grows as the
+    # grid coarsens, so one figure at the scene's grid would understate it).
+    bilinear_rows=false
+    if grep -qE '^ +[0-9]+\. caustic photons ' <<<"$needs" && [ "$kernel" != bilinear ]; then bilinear_rows=true; fi
+    row render_scale 2 "$(relmse_twice "$scene")" "$base" signed
     for scale in 1 0.75 0.5 0.35 0.25; do
         row render_scale "$scale" "$(relmse "$scene" --render-scale "$scale")"
     done
@@ -82,13 +90,17 @@ PY
         m=$((mesh < g ? mesh : g))
         mesh_option=()
         [ "$mesh" = 0 ] || mesh_option=(--set "water.mesh_resolution=$m")
-        row photon_grid_fraction "$fraction" "$(relmse "$scene" --set "water.grid_resolution=$g" "${mesh_option[@]}")"
+        at_grid=$(relmse "$scene" --set "water.grid_resolution=$g" "${mesh_option[@]}")
+        row photon_grid_fraction "$fraction" "$at_grid"
+        if $bilinear_rows; then
+            row bilinear_kernel "$fraction" "$(relmse "$scene" --set "water.grid_resolution=$g" "${mesh_option[@]}" \
+                --set effects.caustics.kernel=bilinear)" "$at_grid"
+        fi
     done
     for m in 256 128 64; do
         [ "$mesh" != 0 ] && [ "$m" -le "$mesh" ] || continue
         row mesh_resolution "$m" "$(relmse "$scene" --set "water.mesh_resolution=$m")"
     done
-    needs=$("$vk" passes "scenes/$scene.json" --width 400 --height 300)
     if grep -qE '^  (reflection|refraction): on' <<<"$needs"; then
         for steps in 16 8; do
             row lookup_steps "$steps" "$(relmse "$scene" --set "effects.reflection.max_steps=$steps" \
@@ -96,9 +108,6 @@ PY
         done
     fi
     if grep -qE '^ +[0-9]+\. caustic photons ' <<<"$needs"; then
-        if [ "$kernel" != bilinear ]; then
-            row bilinear_kernel 1 "$(relmse "$scene" --set effects.caustics.kernel=bilinear)"
-        fi
         for fraction in 0.5; do
             scale=$(python3 -c "print(max(0.25, $map_scale * $fraction))")
             row map_scale_fraction "$fraction" "$(relmse "$scene" --set "effects.caustics.map_scale=$scale")"

@@ -27,7 +27,7 @@ const std::vector<Entry>& table(Knob knob) {
     static const std::vector<Entry> godray_grid = {
         {64, 0.00216019}, {32, 0.00337094}, {16, 0.00301504}, {0, 0.00357104}};
     static const std::vector<Entry> lookup_steps = {{64, 0.0}, {16, 0.0}, {8, 0.0025276}};
-    static const std::vector<Entry> bilinear_kernel = {{0, 0.0}, {1, 0.009364}};
+    static const std::vector<Entry> bilinear_kernel = {{1.0, 0.009364}, {0.5, 0.0}, {0.25, 0.0}, {0.125, 0.0}};
     static const std::vector<Entry> map_scale_fraction = {{1.0, 0.0}, {0.5, 0.0255253}};
     switch (knob) {
         case Knob::LookupSteps: return lookup_steps;
@@ -59,7 +59,8 @@ const char* knob_name(Knob knob) {
 double error_term(Knob knob, double value) {
     const std::vector<Entry>& entries = table(knob);
     // Above the table's first (finest) step nothing is lost: the measured scenes' own settings.
-    // The kernel's entries are 0 (the scene's) and 1 (bilinear): no step is finer than another.
+    // The kernel's entries are photon grid fractions, each the bilinear kernel's excess over the
+    // scene's kernel at that grid: no step is finer than another.
     const bool ordered = knob != Knob::BilinearKernel;
     const bool finer = knob == Knob::GodrayGrid ? value > entries.front().value : value >= entries.front().value;
     if (ordered && finer && value != 0.0) return knob == Knob::GodrayGrid ? 0.0 : entries.front().excess;
@@ -100,8 +101,10 @@ ErrorPrediction predict_error(const Quality& quality, const Quality& top, double
     }
     if (top.map_scale > 0.0) {
         const bool bilinear = quality.caustic_kernel == CausticKernel::Bilinear;
+        // Measured against the scene's kernel at each photon grid: it grows as the grid coarsens.
+        const double grid_fraction = top.photon_grid > 0 ? double(quality.photon_grid) / top.photon_grid : 1.0;
         terms.push_back({"caustic kernel", bilinear && top.caustic_kernel != CausticKernel::Bilinear
-                                               ? error_term(Knob::BilinearKernel, 1.0)
+                                               ? error_term(Knob::BilinearKernel, grid_fraction)
                                                : 0.0});
         terms.push_back({"caustic map scale", error_term(Knob::MapScaleFraction, quality.map_scale / top.map_scale)});
     }

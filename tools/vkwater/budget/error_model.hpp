@@ -36,8 +36,9 @@ ErrorPrediction predict_error(const Quality& quality, const Quality& top, double
 double resolution_error(double rows_fraction);
 
 // One knob's term: the table's excess at `value` (a resolution scale, a photon grid fraction, a
-// mesh resolution, a godray grid, lookup steps, 1 for the bilinear kernel in place of the scene's,
-// the map scale as a fraction of the scene's), the nearest step's where the table has no such value.
+// mesh resolution, a godray grid, lookup steps, the photon grid fraction at which the bilinear
+// kernel replaces the scene's, the map scale as a fraction of the scene's), the nearest step's
+// where the table has no such value.
 enum class Knob : uint8_t {
     RenderScale,
     PhotonGridFraction,
