@@ -27,7 +27,8 @@ const std::vector<Entry>& table(Knob knob) {
     static const std::vector<Entry> godray_grid = {
         {64, 0.00216019}, {32, 0.00337094}, {16, 0.00301504}, {0, 0.00357104}};
     static const std::vector<Entry> lookup_steps = {{64, 0.0}, {16, 0.0}, {8, 0.0025276}};
-    static const std::vector<Entry> bilinear_kernel = {{1.0, 0.009364}, {0.5, 0.0}, {0.25, 0.0}, {0.125, 0.0}};
+    static const std::vector<Entry> bilinear_kernel = {
+        {1.0, 0.009364}, {0.5, 0.008887}, {0.25, 0.0202336}, {0.125, 0.0}};
     static const std::vector<Entry> map_scale_fraction = {{1.0, 0.0}, {0.5, 0.0255253}};
     switch (knob) {
         case Knob::LookupSteps: return lookup_steps;
