@@ -5,6 +5,10 @@
 // showed with that knob alone at that value, so the table errs towards overestimating. Terms add
 // up: docs/performance.md "The frame-time budget" checks that against combined settings.
 //
+// Two terms are more than one figure per knob value: the resolution scale's follows the rows
+// actually rendered (predict_error below), and the bilinear kernel's is measured at each photon
+// grid, since the tent's excess over the hat grows as the grid coarsens.
+//
 // What it is not yet: the error bounds derived per effect (the mesh's sag in pixels, the photons
 // seen per texel) with fitted weights, which would follow a scene's wavelengths and depths
 // instead of the measured scenes' worst case.
