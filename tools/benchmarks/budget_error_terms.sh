@@ -15,8 +15,8 @@
 # bilinear kernel in place of the scene's (the value: the photon grid fraction it is measured at,
 # the excess over the scene's kernel at that grid) and the map's scale as a fraction of the
 # scene's. Writes
-# docs/sweeps/budget_error_terms.csv, under a first line that says where it comes from. About 4 min on
-# 2 cores.
+# docs/sweeps/budget_error_terms.csv, under a first line that says where it comes from. About 10 min
+# on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 vk=${VKWATER:-build/tools/vkwater/vkwater}
@@ -24,6 +24,7 @@ scenes=("$@")
 [ ${#scenes[@]} -gt 0 ] || scenes=(pool lake ocean showcase/pool showcase/lagoon)
 csv=docs/sweeps/budget_error_terms.csv
 source tools/benchmarks/provenance.sh
+source tools/benchmarks/box_averaged.sh
 provenance_start
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
@@ -40,13 +41,10 @@ relmse() {  # SCENE ARGS...: the relMSE of one render against the scene's refere
         tr -d ,
 }
 
-# The same at twice the size (800x600), box-averaged down to 400x300 (oiiotool --resize:filter=box)
-# before the comparison: the error of rendering twice the reference's rows (render_scale 2 below).
+# The same at twice the size (800x600), box-averaged down to 400x300 before the comparison: the
+# error of rendering twice the reference's rows (render_scale 2 below).
 relmse_twice() {  # SCENE
-    "$vk" render "scenes/$1.json" --width 800 --height 600 --no-caustic-layer --no-inscatter-layer \
-        --out "$out/twice.exr" -q
-    oiiotool "$out/twice.exr" --ch R,G,B,A --resize:filter=box 400x300 -o "$out/twice-small.exr"
-    "$vk" compare "$out/twice-small.exr" "$(reference "$1")" | awk '/^relMSE/ {print $2; exit}'
+    box_averaged_relmse "$vk" "scenes/$1.json" "$(reference "$1")" 800 600 "$out"
 }
 
 echo "scene,knob,value,rel_mse,excess" >"$out/rows.csv"
@@ -79,8 +77,9 @@ PY
     # The bilinear kernel's rows: where photons are splatted into the light-space map with another
     # kernel, at each photon grid, against the scene's kernel at that grid (its excess grows as the
     # grid coarsens, so one figure at the scene's grid would understate it).
-    bilinear_rows=false
-    if grep -qE '^ +[0-9]+\. caustic photons ' <<<"$needs" && [ "$kernel" != bilinear ]; then bilinear_rows=true; fi
+    photon_map=false bilinear_rows=false
+    if grep -qE '^ +[0-9]+\. caustic photons ' <<<"$needs"; then photon_map=true; fi
+    if $photon_map && [ "$kernel" != bilinear ]; then bilinear_rows=true; fi
     row render_scale 2 "$(relmse_twice "$scene")" "$base" signed
     for scale in 1 0.75 0.5 0.35 0.25; do
         row render_scale "$scale" "$(relmse "$scene" --render-scale "$scale")"
@@ -107,11 +106,9 @@ PY
                 --set "effects.refraction.max_steps=$steps")"
         done
     fi
-    if grep -qE '^ +[0-9]+\. caustic photons ' <<<"$needs"; then
-        for fraction in 0.5; do
-            scale=$(python3 -c "print(max(0.25, $map_scale * $fraction))")
-            row map_scale_fraction "$fraction" "$(relmse "$scene" --set "effects.caustics.map_scale=$scale")"
-        done
+    if $photon_map; then
+        half_map=$(python3 -c "print(max(0.25, $map_scale * 0.5))")
+        row map_scale_fraction 0.5 "$(relmse "$scene" --set "effects.caustics.map_scale=$half_map")"
     fi
     for g in 64 32 16 0; do
         [ "$g" -le "$godrays" ] || continue

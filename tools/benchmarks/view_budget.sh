@@ -11,6 +11,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source "$(dirname "$0")/provenance.sh"
+source "$(dirname "$0")/box_averaged.sh"
 provenance_start
 budget=${1:-66}
 frames=${2:-200}
@@ -29,10 +30,7 @@ relmse_at_reference_size() {  # SCENE ARGS...: relMSE against the box reference,
     shift
     local reference="tests/references/box/$scene.exr"
     [ -f "$reference" ] || { echo "-"; return; }
-    "$vk" render "scenes/$scene.json" --width "$width" --height "$height" --no-caustic-layer \
-        --no-inscatter-layer --out "$out/full.exr" -q "$@"
-    oiiotool "$out/full.exr" --ch R,G,B,A --resize:filter=box 400x300 -o "$out/small.exr"
-    "$vk" compare "$out/small.exr" "$reference" | awk '/^relMSE/ {print $2; exit}'
+    box_averaged_relmse "$vk" "scenes/$scene.json" "$reference" "$width" "$height" "$out" "$@"
 }
 
 provenance_line "$vk"
