@@ -8,14 +8,15 @@
 # scene's own settings. The knobs and their values are the budget's candidates
 # (tools/vkwater/budget/quality.hpp): the resolution scale (and, as render_scale 2, the scene
 # rendered at 800x600 and box-averaged to 400x300, whose signed excess is the gain of twice the
-# rows, for the error model's resolution term); the photon grid as a fraction of the
+# rows, for the error model's resolution term); where the scene has a box reference, 4, 9 and 16
+# samples per pixel (signed gains too: k^2 samples are k times the rows); the photon grid as a fraction of the
 # scene's; the water mesh's cells per side; the godray grid (0: godrays off); where the water
 # looks the scene up (`vkwater passes` says reflection or refraction: on), the lookups' steps; and,
 # where photons are splatted into the light-space map (`caustic photons` among the passes), the
 # bilinear kernel in place of the scene's (the value: the photon grid fraction it is measured at,
 # the excess over the scene's kernel at that grid) and the map's scale as a fraction of the
 # scene's. Writes
-# docs/sweeps/budget_error_terms.csv, under a first line that says where it comes from. About 10 min
+# docs/sweeps/budget_error_terms.csv, under a first line that says where it comes from. About 12 min
 # on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -84,6 +85,14 @@ PY
     for scale in 1 0.75 0.5 0.35 0.25; do
         row render_scale "$scale" "$(relmse "$scene" --render-scale "$scale")"
     done
+    # k^2 samples per pixel sample the pixel as k times the rows would (the strata's centres are a
+    # k-times finer image's pixel centres): signed gains, against the box reference only (a
+    # point-sampled one would count the filter as error).
+    if [ -f "tests/references/box/$scene.exr" ]; then
+        for spp in 4 9 16; do
+            row samples_per_pixel "$spp" "$(relmse "$scene" --spp "$spp")" "$base" signed
+        done
+    fi
     for fraction in 1 0.5 0.25 0.125; do
         g=$(python3 -c "print(max(2, round($grid * $fraction)))")
         m=$((mesh < g ? mesh : g))
