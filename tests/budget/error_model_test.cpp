@@ -33,20 +33,23 @@ TEST(BudgetErrorModel, TableIsTheLargestMeasuredExcessOfEachKnob) {
         std::getline(fields, rel_mse, ',');
         std::getline(fields, excess, ',');
         const auto key = std::make_pair(knob, std::stod(value));
-        // Twice the rows is a gain: the table keeps the largest one (the most negative), so that
-        // a lower scale's term is not underestimated.
-        const bool gain = knob == "render_scale" && key.second > 1.0;
+        // Twice the rows and more samples are gains: the table keeps the largest one (the most
+        // negative), so that a lower scale's term is not underestimated.
+        const bool gain = (knob == "render_scale" && key.second > 1.0) || knob == "samples_per_pixel";
         const bool first = !largest.count(key);
         largest[key] = first  ? std::stod(excess)
                        : gain ? std::min(largest[key], std::stod(excess))
                               : std::max(largest[key], std::stod(excess));
     }
     ASSERT_GE(largest.size(), 15u);
-    const std::map<std::string, Knob> knobs = {
-        {"render_scale", Knob::RenderScale},           {"photon_grid_fraction", Knob::PhotonGridFraction},
-        {"mesh_resolution", Knob::MeshResolution},     {"godray_grid", Knob::GodrayGrid},
-        {"lookup_steps", Knob::LookupSteps},           {"bilinear_kernel", Knob::BilinearKernel},
-        {"map_scale_fraction", Knob::MapScaleFraction}};
+    const std::map<std::string, Knob> knobs = {{"render_scale", Knob::RenderScale},
+                                               {"photon_grid_fraction", Knob::PhotonGridFraction},
+                                               {"mesh_resolution", Knob::MeshResolution},
+                                               {"godray_grid", Knob::GodrayGrid},
+                                               {"lookup_steps", Knob::LookupSteps},
+                                               {"bilinear_kernel", Knob::BilinearKernel},
+                                               {"map_scale_fraction", Knob::MapScaleFraction},
+                                               {"samples_per_pixel", Knob::SamplesPerPixel}};
     for (const auto& [key, excess] : largest) {
         ASSERT_TRUE(knobs.count(key.first)) << key.first;
         if (key.first == "godray_grid" && key.second > 64) continue;  // finer than the table: 0 by definition
@@ -86,7 +89,13 @@ TEST(BudgetErrorModel, TheResolutionTermFollowsTheRowsRendered) {
     EXPECT_EQ(resolution_error(1.0), 0.0);
     EXPECT_LT(resolution_error(2.0), 0.0) << "twice the rows, box-averaged, is closer to the reference";
     EXPECT_DOUBLE_EQ(resolution_error(0.5), error_term(Knob::RenderScale, 0.5));
-    EXPECT_DOUBLE_EQ(resolution_error(4.0), resolution_error(2.0));  // clamped to the table
+    // k^2 samples count as k times the rows, where the table's gains end (the larger of twice the
+    // rows' and 4 samples' at 2).
+    EXPECT_DOUBLE_EQ(resolution_error(2.0),
+                     std::min(error_term(Knob::RenderScale, 2.0), error_term(Knob::SamplesPerPixel, 4)));
+    EXPECT_DOUBLE_EQ(resolution_error(3.0), error_term(Knob::SamplesPerPixel, 9));
+    EXPECT_DOUBLE_EQ(resolution_error(4.0), error_term(Knob::SamplesPerPixel, 16));
+    EXPECT_DOUBLE_EQ(resolution_error(8.0), resolution_error(4.0));  // clamped to the table
     const double between = resolution_error(std::sqrt(0.75));        // halfway in log2 from 1 to 0.75
     EXPECT_NEAR(between, 0.5 * error_term(Knob::RenderScale, 0.75), 1e-12);
     const Quality top{1.0, 1024, 256, 64};
@@ -96,6 +105,23 @@ TEST(BudgetErrorModel, TheResolutionTermFollowsTheRowsRendered) {
     const double at_600 = predict_error(half, top, 600.0).excess;
     EXPECT_DOUBLE_EQ(at_600, -resolution_error(2.0));
     EXPECT_LT(at_600, predict_error(half, top).excess);
+}
+
+// Fewer samples than the command asked for cost what the table says the rows they stand for do;
+// the term is named for them when the resolution scale stays.
+TEST(BudgetErrorModel, FewerSamplesCostTheRowsTheyStandFor) {
+    Quality top{1.0, 1024, 256, 64};
+    top.samples = 16;
+    Quality four = top;
+    four.samples = 4;
+    const ErrorPrediction prediction = predict_error(four, top);
+    EXPECT_DOUBLE_EQ(prediction.excess, resolution_error(2.0) - resolution_error(4.0));
+    EXPECT_GT(prediction.excess, 0.0) << "16 samples measured closer to the box references than 4";
+    EXPECT_EQ(prediction.dominant, "samples per pixel");
+    Quality half = four;
+    half.render_scale = 0.5;
+    EXPECT_DOUBLE_EQ(predict_error(half, top).excess, resolution_error(1.0) - resolution_error(4.0));
+    EXPECT_EQ(predict_error(half, top).dominant, "resolution scale");
 }
 
 // The kernel's term counts only where the scene's own kernel is not already the bilinear one; the

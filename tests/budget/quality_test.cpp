@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <set>
 #include <sstream>
 
 namespace vkw::budget {
@@ -59,6 +60,28 @@ TEST(BudgetQuality, TheCausticKnobsTurnOnlyWhatTheSceneHas) {
     top = scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0));
     EXPECT_EQ(top.map_scale, 0.0);
     EXPECT_EQ(quality_candidates(top).size(), 5u * 4u * (3u * 3u + 2u));
+}
+
+// The samples per pixel are the command's (--spp N), not the scene's: the candidates take every
+// square up to N, each with every other knob's combinations, and the options name them whenever
+// they are above one.
+TEST(BudgetQuality, TheSamplesAreSquaresUpToTheCommands) {
+    const Scene scene = load_scene(kPool);
+    const fg::FrameNeeds needs = decide_frame_needs(scene, 4.0 / 3.0);
+    const Quality one = scene_quality(scene, needs);
+    EXPECT_EQ(one.samples, 1u);
+    const Quality nine = scene_quality(scene, needs, 9);
+    const std::vector<Quality> candidates = quality_candidates(nine);
+    EXPECT_EQ(candidates.size(), 3u * quality_candidates(one).size());
+    std::set<uint32_t> samples;
+    for (const Quality& q : candidates) samples.insert(q.samples);
+    EXPECT_EQ(samples, (std::set<uint32_t>{1, 4, 9}));
+    EXPECT_TRUE(quality_arguments(one, one).empty());
+    EXPECT_EQ(describe_arguments(quality_arguments(nine, nine)), "--spp 9");
+    Quality four = nine;
+    four.samples = 4;
+    four.render_scale = 0.5;
+    EXPECT_EQ(describe_arguments(quality_arguments(four, nine)), "--render-scale 0.5 --spp 4");
 }
 
 TEST(BudgetQuality, ASceneWithoutWaterTurnsOnlyTheResolution) {

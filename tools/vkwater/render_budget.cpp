@@ -2,6 +2,7 @@
 #include "tools/vkwater/render_budget.hpp"
 
 #include "passes/frame/frame_needs.hpp"
+#include "passes/frame/supersampled_frame.hpp"
 #include "tools/vkwater/budget/budget_controller.hpp"
 #include "tools/vkwater/console.hpp"
 
@@ -26,10 +27,11 @@ std::string BudgetedSettings::describe(double budget_ms) const {
     return text;
 }
 
-BudgetedSettings choose_budgeted_settings(Renderer& renderer, Scene& scene, RenderOptions& options, double budget_ms) {
+BudgetedSettings choose_budgeted_settings(Renderer& renderer, Scene& scene, RenderOptions& options, double budget_ms,
+                                          uint32_t samples) {
     const Scene original = scene;
     const fg::FrameNeeds needs = decide_frame_needs(scene, double(options.width) / double(options.height));
-    const budget::Quality top = budget::scene_quality(scene, needs);
+    const budget::Quality top = budget::scene_quality(scene, needs, samples);
     const uint32_t width = options.width, height = options.height;
     budget::BudgetController controller(
         budget_ms, top,
@@ -50,8 +52,8 @@ BudgetedSettings choose_budgeted_settings(Renderer& renderer, Scene& scene, Rend
         budget::apply_quality(next, top, scene);
         options.render_scale = next.render_scale;
         const double predicted = attempt == 0 ? 0.0 : controller.describe(next).predicted_ms;
-        (void)renderer.render(scene, options);  // warm-up
-        const RenderResult timed = renderer.render(scene, options);
+        (void)renderer.render(scene, options);  // warm-up: one sub-frame compiles what all of them use
+        const RenderResult timed = render_filtered(renderer, scene, options, pixel_filter_from_spp(next.samples));
         controller.set_current(next);
         controller.add_timed_frame(timed.timing.passes, timed.timing.total_ms);
         tried.push_back({next, timed.timing.total_ms, predicted});

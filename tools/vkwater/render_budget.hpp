@@ -1,5 +1,6 @@
 // vkwater render --budget-ms B: the settings the frame-time budget chooses for one image
-// (tools/vkwater/budget/). A timed frame at the scene's own settings fits the cost model; the
+// (tools/vkwater/budget/), at most the samples per pixel the command asked for (--spp N: a
+// box-filtered frame of N sub-frames, each timed in full). A timed frame at the scene's own settings fits the cost model; the
 // plan's candidate is rendered and timed in turn, until the plan stays or four settings have been
 // tried; the answer is the best-ranked setting measured within the budget (the cheapest measured
 // if none was). Each setting's first frame is a warm-up (llvmpipe compiles shader variants on first
@@ -10,6 +11,7 @@
 #include "tools/vkwater/budget/error_model.hpp"
 #include "tools/vkwater/budget/quality.hpp"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -28,7 +30,9 @@ struct BudgetedSettings {
 };
 
 // Chooses, then leaves `scene` and `options.render_scale` at the choice (the scene's own
-// settings are what `scene` holds on entry).
-BudgetedSettings choose_budgeted_settings(Renderer& renderer, Scene& scene, RenderOptions& options, double budget_ms);
+// settings are what `scene` holds on entry); the chosen samples per pixel are `quality.samples`, at
+// most `samples`.
+BudgetedSettings choose_budgeted_settings(Renderer& renderer, Scene& scene, RenderOptions& options, double budget_ms,
+                                          uint32_t samples = 1);
 
 }  // namespace vkw::cli

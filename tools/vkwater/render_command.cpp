@@ -59,15 +59,11 @@ std::string inscatter_text(const Scene& scene, const RenderOptions& options, con
     return error.text(true);
 }
 
-// The budget chooses the resolution scale, at one sample per pixel, for one image.
+// The budget chooses the resolution scale (and at most --spp's samples) for one image.
 void require_budget_alone(const RenderArgs& args) {
     if (args.render_scale != 1.0) {
         throw UserError("--render-scale " + format_number(args.render_scale) +
                         ": --budget-ms chooses the resolution scale itself (accepted: one of the two)");
-    }
-    if (args.spp != 1) {
-        throw UserError("--spp " + std::to_string(args.spp) +
-                        ": --budget-ms chooses its settings at one sample per pixel (accepted: --spp 1 with it)");
     }
 }
 
@@ -89,7 +85,7 @@ int run_render(const RenderArgs& args) {
     const std::vector<std::string> overrides = applied_overrides(args);
     Scene scene = load_command_scene(args.scene, overrides, args.allow_outside_paths);
     if (args.budget_ms > 0.0) require_budget_alone(args);
-    const PixelFilter filter = pixel_filter_from_spp(args.spp);
+    PixelFilter filter = pixel_filter_from_spp(args.spp);  // with --budget-ms, at most this many samples
     // Fail on an unwritable output before spending time on the render. Without --out, the scene's
     // name with .exr, in the current folder.
     const std::filesystem::path out = args.out.empty()
@@ -126,7 +122,9 @@ int run_render(const RenderArgs& args) {
         Renderer renderer(*context);  // its pipelines must go before the device
         if (args.budget_ms > 0.0) {
             // The budget's choice leaves the scene and the resolution scale at its settings.
-            const BudgetedSettings chosen = choose_budgeted_settings(renderer, scene, options, args.budget_ms);
+            const BudgetedSettings chosen =
+                choose_budgeted_settings(renderer, scene, options, args.budget_ms, filter.samples);
+            filter = pixel_filter_from_spp(chosen.quality.samples);
             std::printf("%s\n", chosen.describe(args.budget_ms).c_str());
             budget_record = chosen.describe(args.budget_ms) + " on " + context->device_name();
         }
@@ -240,8 +238,8 @@ Run add_render_command(CLI::App& app) {
     add_render_scale_option(*command, args->render_scale);
     command
         ->add_option("--budget-ms", args->budget_ms,
-                     "Choose the settings (resolution scale, photon grid, water mesh, godrays, scene lookup steps) "
-                     "with the lowest "
+                     "Choose the settings (resolution scale, photon grid, water mesh, godrays, scene lookup steps, "
+                     "caustic kernel and map scale, and with --spp N up to N samples per pixel) with the lowest "
                      "expected error whose measured frame time fits this many milliseconds; prints them and "
                      "records them in the EXR (given explicitly they give the same image)")
         ->check(finite_number() & positive_number());

@@ -20,8 +20,16 @@ struct KnownPass {
 // Prior rates on lavapipe (Mesa 22.3, 2 cores), from `vkwater render scenes/pool.json --repeat 2`
 // at 800x600 and 400x300 with mesh resolutions 256 and 64; the lookup steps from lake's water
 // pass at max_steps 64, 16 and 8; the photons' from pool with the adaptive kernel at map scales
-// 0.5, 1 and 2 and the bilinear one at 1 (docs/performance.md "The frame-time budget"). Only their
+// 0.5, 1 and 2 and the bilinear one at 1; the kept map's copy from pool at --spp 4
+// (docs/performance.md "The frame-time budget"). Only their
 // ratios matter once a frame has been timed; a GPU refits every factor.
+// A pass of the light-space photon map, which the first sub-frame makes for all of them.
+PassFormula once(std::vector<std::pair<Driver, double>> ns_per_unit) {
+    PassFormula formula{std::move(ns_per_unit)};
+    formula.once_per_frame = true;
+    return formula;
+}
+
 const std::vector<KnownPass>& known_passes() {
     using D = Driver;
     static const std::vector<KnownPass> table = {
@@ -37,11 +45,12 @@ const std::vector<KnownPass>& known_passes() {
         {"water surface (ocean grid)", {{{D::SurfaceVertices, 20.0}}}},
         {"water mesh (wave sum)", {{{D::MeshVertices, 21.0}}}},
         {"water mesh (ocean grid)", {{{D::MeshVertices, 21.0}}}},
-        {"caustic photons", {{{D::Photons, 10.0}, {D::HatPhotons, 95.0}, {D::PhotonTaps, 16.0}}}},
-        {"caustic flux clear", {{{D::MapTexels, 2.3}}}},
-        {"caustic resolve", {{{D::MapTexels, 18.0}}}},
-        {"caustic blur x", {{{D::MapTexels, 5.0}}}},
-        {"caustic blur y", {{{D::MapTexels, 5.0}}}},
+        {"caustic photons", once({{D::Photons, 10.0}, {D::HatPhotons, 95.0}, {D::PhotonTaps, 16.0}})},
+        {"caustic flux clear", once({{D::MapTexels, 2.3}})},
+        {"caustic resolve", once({{D::MapTexels, 18.0}})},
+        {"caustic blur x", once({{D::MapTexels, 5.0}})},
+        {"caustic blur y", once({{D::MapTexels, 5.0}})},
+        {"keep caustic map", {{{D::MapTexels, 10.0}}, false, false, true, true}},
         {"godray lines", {{{D::BeamColumns, 46.0}}, true}},
         {"godray beams", {{{D::Beams, 190.0}}, true}},
         {"godray depth", {{{D::GodrayPixels, 34.0}}, true}},
@@ -61,14 +70,16 @@ const std::vector<KnownPass>& known_passes() {
     return table;
 }
 
-bool runs(const PassFormula& formula, bool godrays, bool upscale) {
-    return (godrays || !formula.godray) && (upscale || !formula.upscale);
+bool runs(const PassFormula& formula, const CostDrivers& drivers, bool godrays, bool upscale) {
+    return (godrays || !formula.godray) && (upscale || !formula.upscale) &&
+           (at(drivers, Driver::SubFrames) > 1.0 || !formula.supersampled);
 }
 
 }  // namespace
 
 CostDrivers cost_drivers(const Scene& scene, const Quality& quality, uint32_t width, uint32_t height) {
     CostDrivers drivers{};
+    at(drivers, Driver::SubFrames) = quality.samples;
     const double scaled_width = passes::scaled_size(width, quality.render_scale);
     const double scaled_height = passes::scaled_size(height, quality.render_scale);
     at(drivers, Driver::Pixels) = scaled_width * scaled_height;
@@ -106,10 +117,14 @@ CostDrivers cost_drivers(const Scene& scene, const Quality& quality, uint32_t wi
     return drivers;
 }
 
+double PassFormula::runs_per_frame(const CostDrivers& drivers) const {
+    return once_per_frame ? 1.0 : std::max(1.0, at(drivers, Driver::SubFrames));
+}
+
 double PassFormula::prior_ms(const CostDrivers& drivers) const {
     double ns = 0.0;
     for (const auto& [driver, rate] : ns_per_unit) ns += rate * at(drivers, driver);
-    return ns * 1e-6;
+    return ns * 1e-6 * runs_per_frame(drivers);
 }
 
 PassFormula pass_formula(const std::string& pass) {
@@ -128,8 +143,9 @@ void CostModel::observe_passes(const std::vector<fg::PassTime>& passes, const Co
         if (prior > 0.0) {
             fitted.factor = pass.ms / prior;
         } else {
+            // Taken to run in every sub-frame, as every pass but the photon map's does.
             fitted.formula = {};
-            fitted.fixed_ms = pass.ms;
+            fitted.fixed_ms = pass.ms / fitted.formula.runs_per_frame(drivers);
         }
         passes_[pass.pass] = fitted;
     }
@@ -157,21 +173,25 @@ double CostModel::typical_factor() const {
 
 double CostModel::predict_passes_ms(const CostDrivers& drivers, bool godrays, bool upscale) const {
     double ms = 0.0;
-    bool has_godrays = false, has_upscale = false;
+    bool has_godrays = false, has_upscale = false, has_supersampled = false;
     for (const auto& [name, pass] : passes_) {
         has_godrays = has_godrays || pass.formula.godray;
         has_upscale = has_upscale || pass.formula.upscale;
-        if (!runs(pass.formula, godrays, upscale)) continue;
-        ms += pass.formula.ns_per_unit.empty() ? pass.fixed_ms : pass.factor * pass.formula.prior_ms(drivers);
+        has_supersampled = has_supersampled || pass.formula.supersampled;
+        if (!runs(pass.formula, drivers, godrays, upscale)) continue;
+        ms += pass.formula.ns_per_unit.empty() ? pass.fixed_ms * pass.formula.runs_per_frame(drivers)
+                                               : pass.factor * pass.formula.prior_ms(drivers);
     }
     // Passes the timed frame did not run (godrays it had turned off, the upscale at full
-    // resolution): their priors, at the factor typical of this device.
-    if ((godrays && !has_godrays) || (upscale && !has_upscale)) {
+    // resolution, the kept photon map at one sample): their priors, at the factor typical of this device.
+    const bool supersampled = at(drivers, Driver::SubFrames) > 1.0;
+    if ((godrays && !has_godrays) || (upscale && !has_upscale) || (supersampled && !has_supersampled)) {
         const double factor = typical_factor();
         for (const KnownPass& known : known_passes()) {
             const bool missing =
                 (godrays && !has_godrays && known.formula.godray) ||
-                (upscale && !has_upscale && known.formula.upscale && std::string(known.name) == "upscale");
+                (upscale && !has_upscale && known.formula.upscale && std::string(known.name) == "upscale") ||
+                (supersampled && !has_supersampled && known.formula.supersampled);
             if (missing) ms += factor * known.formula.prior_ms(drivers);
         }
     }

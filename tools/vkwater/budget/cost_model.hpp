@@ -38,6 +38,8 @@ enum class Driver : uint8_t {
     BeamColumns,      // godray beams times the godray image's columns (a beam's walk)
     GodrayPixels,     // the godray image's pixels
     LookupSteps,      // pixels times scene lookups times their most steps
+    SubFrames,        // the frame's sub-frames (its samples per pixel): every pass runs in each, but
+                      // the light-space photon map's, made once by the first
     Count
 };
 
@@ -50,9 +52,13 @@ CostDrivers cost_drivers(const Scene& scene, const Quality& quality, uint32_t wi
 // the table does not know the pass.
 struct PassFormula {
     std::vector<std::pair<Driver, double>> ns_per_unit;
-    bool godray = false;   // runs only with the godrays
-    bool upscale = false;  // runs only below resolution scale 1
+    bool godray = false;          // runs only with the godrays
+    bool upscale = false;         // runs only below resolution scale 1
+    bool once_per_frame = false;  // the photon map's: in the first sub-frame only
+    bool supersampled = false;    // runs only with more than one sub-frame (keeps the photon map for the others)
+    // Over all of the frame's sub-frames.
     double prior_ms(const CostDrivers& drivers) const;
+    double runs_per_frame(const CostDrivers& drivers) const;
 };
 PassFormula pass_formula(const std::string& pass);
 
@@ -74,7 +80,7 @@ private:
     struct FittedPass {
         PassFormula formula;
         double factor = 1.0;    // measured over prior, at the last timing
-        double fixed_ms = 0.0;  // a pass without a formula: its measured time
+        double fixed_ms = 0.0;  // a pass without a formula: its measured time per sub-frame
     };
     double typical_factor() const;  // for passes never timed: the median of the fitted ones
     std::map<std::string, FittedPass> passes_;

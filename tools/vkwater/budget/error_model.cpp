@@ -26,6 +26,8 @@ const std::vector<Entry>& table(Knob knob) {
     static const std::vector<Entry> mesh_resolution = {{256, 0.0}, {128, 0.0006656}, {64, 0.0150687}};
     static const std::vector<Entry> godray_grid = {
         {64, 0.00216019}, {32, 0.00337094}, {16, 0.00301504}, {0, 0.00357104}};
+    // Below one sample's 0 (the gains), the smallest change of any scene with a box reference.
+    static const std::vector<Entry> samples_per_pixel = {{1, 0.0}, {4, -0.0171892}, {9, -0.0219511}, {16, -0.0233395}};
     static const std::vector<Entry> lookup_steps = {{64, 0.0}, {16, 0.0}, {8, 0.0025276}};
     static const std::vector<Entry> bilinear_kernel = {
         {1.0, 0.009364}, {0.5, 0.008887}, {0.25, 0.0202336}, {0.125, 0.0}};
@@ -33,6 +35,7 @@ const std::vector<Entry>& table(Knob knob) {
     switch (knob) {
         case Knob::LookupSteps: return lookup_steps;
         case Knob::RenderScale: return render_scale;
+        case Knob::SamplesPerPixel: return samples_per_pixel;
         case Knob::PhotonGridFraction: return photon_grid_fraction;
         case Knob::MeshResolution: return mesh_resolution;
         case Knob::GodrayGrid: return godray_grid;
@@ -47,6 +50,7 @@ const std::vector<Entry>& table(Knob knob) {
 const char* knob_name(Knob knob) {
     switch (knob) {
         case Knob::RenderScale: return "render_scale";
+        case Knob::SamplesPerPixel: return "samples_per_pixel";
         case Knob::PhotonGridFraction: return "photon_grid_fraction";
         case Knob::MeshResolution: return "mesh_resolution";
         case Knob::GodrayGrid: return "godray_grid";
@@ -62,7 +66,7 @@ double error_term(Knob knob, double value) {
     // Above the table's first (finest) step nothing is lost: the measured scenes' own settings.
     // The kernel's entries are photon grid fractions, each the bilinear kernel's excess over the
     // scene's kernel at that grid: no step is finer than another.
-    const bool ordered = knob != Knob::BilinearKernel;
+    const bool ordered = knob != Knob::BilinearKernel && knob != Knob::SamplesPerPixel;
     const bool finer = knob == Knob::GodrayGrid ? value > entries.front().value : value >= entries.front().value;
     if (ordered && finer && value != 0.0) return knob == Knob::GodrayGrid ? 0.0 : entries.front().excess;
     const Entry* nearest = &entries.front();
@@ -72,8 +76,30 @@ double error_term(Knob knob, double value) {
     return nearest->excess;
 }
 
+// The sampled rows' table, from the most rows down: k^2 samples per pixel as k times the rows
+// (where both measured twice the rows, the larger gain), then the resolution scales below 2.
+const std::vector<Entry>& sampling_table() {
+    static const std::vector<Entry> entries = [] {
+        std::vector<Entry> rows;
+        for (auto it = table(Knob::SamplesPerPixel).rbegin(); it != table(Knob::SamplesPerPixel).rend(); ++it) {
+            if (it->value > 1.0) rows.push_back({std::sqrt(it->value), it->excess});
+        }
+        for (const Entry& scale : table(Knob::RenderScale)) {
+            const auto same =
+                std::find_if(rows.begin(), rows.end(), [&](const Entry& e) { return e.value == scale.value; });
+            if (same != rows.end()) {
+                same->excess = std::min(same->excess, scale.excess);
+            } else {
+                rows.push_back(scale);
+            }
+        }
+        return rows;
+    }();
+    return entries;
+}
+
 double resolution_error(double rows_fraction) {
-    const std::vector<Entry>& entries = table(Knob::RenderScale);  // from 2 down to 0.25
+    const std::vector<Entry>& entries = sampling_table();  // from 4 down to 0.25
     const double f = std::clamp(rows_fraction, entries.back().value, entries.front().value);
     for (size_t i = 1; i < entries.size(); ++i) {
         const Entry &above = entries[i - 1], &below = entries[i];
@@ -86,9 +112,13 @@ double resolution_error(double rows_fraction) {
 
 ErrorPrediction predict_error(const Quality& quality, const Quality& top, double output_rows) {
     const double output = output_rows / kErrorTableRows;
+    const auto sampled_rows = [output](const Quality& q) {
+        return q.render_scale * std::sqrt(double(q.samples)) * output;
+    };
+    const bool fewer_samples_alone = quality.samples != top.samples && quality.render_scale == top.render_scale;
     std::vector<std::pair<const char*, double>> terms = {
-        {"resolution scale",
-         resolution_error(quality.render_scale * output) - resolution_error(top.render_scale * output)},
+        {fewer_samples_alone ? "samples per pixel" : "resolution scale",
+         resolution_error(sampled_rows(quality)) - resolution_error(sampled_rows(top))},
     };
     if (top.photon_grid > 0) {
         terms.push_back(

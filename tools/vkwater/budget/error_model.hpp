@@ -6,7 +6,7 @@
 // up: docs/performance.md "The frame-time budget" checks that against combined settings.
 //
 // Two terms are more than one figure per knob value: the resolution scale's follows the rows
-// actually rendered (predict_error below), and the bilinear kernel's is measured at each photon
+// actually sampled, samples per pixel counted as rows (predict_error below), and the bilinear kernel's is measured at each photon
 // grid, since the tent's excess over the hat grows as the grid coarsens.
 //
 // What it is not yet: the error bounds derived per effect (the mesh's sag in pixels, the photons
@@ -26,25 +26,27 @@ struct ErrorPrediction {
 };
 
 // The table's figures are for images of kErrorTableRows rows (400x300, against references of that
-// size). The resolution scale's term follows the rows actually rendered: at an output of
-// `output_rows`, scale s renders s * output_rows rows, and its term is the table's error at that
-// many rows over the error at the output's own (both as fractions of kErrorTableRows,
-// interpolated in log2 between the table's steps, which run from 2x down to 0.25x). An output
-// larger than the table's averages more samples per reference pixel, so a given scale costs
-// less error there.
+// size). The resolution scale's term follows the rows actually sampled: at an output of
+// `output_rows`, scale s with k^2 samples per pixel samples the image as s * k * output_rows rows
+// would (the strata's centres are a k-times finer image's pixel centres), and its term is the
+// table's error at that many rows over the error at the top's (both as fractions of
+// kErrorTableRows, interpolated in log2 between the table's steps: the resolution scales from 0.25x
+// up to 1x, twice the rows, and 3x and 4x from 9 and 16 samples per pixel). An output larger than
+// the table's averages more samples per reference pixel, so a given scale costs less error there.
 inline constexpr double kErrorTableRows = 300.0;
 ErrorPrediction predict_error(const Quality& quality, const Quality& top, double output_rows = kErrorTableRows);
 
-// The table's relMSE at `rows_fraction` times kErrorTableRows rendered rows, relative to rendering
-// kErrorTableRows (0 at 1, negative above it).
+// The table's relMSE at `rows_fraction` times kErrorTableRows sampled rows, relative to rendering
+// kErrorTableRows at one sample (0 at 1, negative above it).
 double resolution_error(double rows_fraction);
 
 // One knob's term: the table's excess at `value` (a resolution scale, a photon grid fraction, a
 // mesh resolution, a godray grid, lookup steps, the photon grid fraction at which the bilinear
-// kernel replaces the scene's, the map scale as a fraction of the scene's), the nearest step's
-// where the table has no such value.
+// kernel replaces the scene's, the map scale as a fraction of the scene's, samples per pixel), the
+// nearest step's where the table has no such value.
 enum class Knob : uint8_t {
     RenderScale,
+    SamplesPerPixel,  // gains (negative) over one sample, which resolution_error counts as rows
     PhotonGridFraction,
     MeshResolution,
     GodrayGrid,

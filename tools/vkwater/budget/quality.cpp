@@ -20,8 +20,9 @@ std::vector<uint32_t> steps_below(uint32_t own, const uint32_t* steps, size_t co
 
 }  // namespace
 
-Quality scene_quality(const Scene& scene, const fg::FrameNeeds& needs) {
+Quality scene_quality(const Scene& scene, const fg::FrameNeeds& needs, uint32_t samples) {
     Quality quality;
+    quality.samples = samples;
     if (scene.water) {
         quality.photon_grid = scene.water->grid_resolution;
         // Infinite water is drawn from the screen's grid at every setting: no uniform mesh to turn.
@@ -57,15 +58,9 @@ std::vector<Quality> quality_candidates(const Quality& top) {
             if (grid < top.photon_grid) grids.push_back(grid);
         }
     }
-    const std::vector<uint32_t> meshes =
-        top.mesh_resolution > 0 ? steps_below(top.mesh_resolution, kMeshResolutions, std::size(kMeshResolutions))
-                                : std::vector<uint32_t>{0};
-    const std::vector<uint32_t> godrays = top.godray_grid > 0
-                                              ? steps_below(top.godray_grid, kGodrayGrids, std::size(kGodrayGrids))
-                                              : std::vector<uint32_t>{0};
-    const std::vector<uint32_t> lookups = top.lookup_steps > 0
-                                              ? steps_below(top.lookup_steps, kLookupSteps, std::size(kLookupSteps))
-                                              : std::vector<uint32_t>{0};
+    const auto below = [](uint32_t own, const auto& steps) {
+        return own > 0 ? steps_below(own, std::data(steps), std::size(steps)) : std::vector<uint32_t>{0};
+    };
     std::vector<CausticKernel> kernels = {top.caustic_kernel};
     std::vector<double> map_scales = {top.map_scale};
     if (top.map_scale > 0.0) {
@@ -75,29 +70,34 @@ std::vector<Quality> quality_candidates(const Quality& top) {
             if (scale < top.map_scale) map_scales.push_back(scale);
         }
     }
-    std::vector<Quality> candidates;
-    for (double scale : kRenderScales) {
-        for (uint32_t grid : grids) {
-            for (uint32_t mesh : meshes) {
-                // The mesh is drawn from the surface grid: it has at most as many cells.
-                const uint32_t drawn = std::min(mesh, grid);
-                for (uint32_t godray : godrays) {
-                    for (uint32_t steps : lookups) {
-                        for (CausticKernel kernel : kernels) {
-                            for (double map_scale : map_scales) {
-                                const Quality candidate{scale,  grid,     drawn, godray, steps, top.scene_lookups,
-                                                        kernel, map_scale};
-                                if (std::find(candidates.begin(), candidates.end(), candidate) == candidates.end()) {
-                                    candidates.push_back(candidate);
-                                }
-                            }
-                        }
-                    }
-                }
+    // Every combination, the first knob outermost: each knob in turn multiplies the list by its values.
+    std::vector<Quality> candidates = {top};
+    const auto vary = [&candidates](const auto& values, auto set) {
+        std::vector<Quality> more;
+        for (const Quality& candidate : candidates) {
+            for (const auto& value : values) {
+                Quality varied = candidate;
+                set(varied, value);
+                more.push_back(varied);
             }
         }
+        candidates = std::move(more);
+    };
+    vary(below(top.samples, kSampleCounts), [](Quality& q, uint32_t v) { q.samples = v; });
+    vary(kRenderScales, [](Quality& q, double v) { q.render_scale = v; });
+    vary(grids, [](Quality& q, uint32_t v) { q.photon_grid = v; });
+    // The mesh is drawn from the surface grid: it has at most as many cells.
+    vary(below(top.mesh_resolution, kMeshResolutions),
+         [](Quality& q, uint32_t v) { q.mesh_resolution = std::min(v, q.photon_grid); });
+    vary(below(top.godray_grid, kGodrayGrids), [](Quality& q, uint32_t v) { q.godray_grid = v; });
+    vary(below(top.lookup_steps, kLookupSteps), [](Quality& q, uint32_t v) { q.lookup_steps = v; });
+    vary(kernels, [](Quality& q, CausticKernel v) { q.caustic_kernel = v; });
+    vary(map_scales, [](Quality& q, double v) { q.map_scale = v; });
+    std::vector<Quality> distinct;
+    for (const Quality& candidate : candidates) {
+        if (std::find(distinct.begin(), distinct.end(), candidate) == distinct.end()) distinct.push_back(candidate);
     }
-    return candidates;
+    return distinct;
 }
 
 void apply_quality(const Quality& quality, const Quality& top, Scene& scene) {
@@ -133,6 +133,8 @@ std::vector<std::string> quality_arguments(const Quality& quality, const Quality
     std::vector<std::string> arguments;
     if (quality.render_scale != top.render_scale)
         arguments.push_back("--render-scale " + format_number(quality.render_scale));
+    // A command option, not the scene's: stated whenever it is not the command's default of one.
+    if (quality.samples != 1) arguments.push_back("--spp " + std::to_string(quality.samples));
     if (quality.photon_grid != top.photon_grid) {
         arguments.push_back("--set water.grid_resolution=" + std::to_string(quality.photon_grid));
     }
@@ -180,6 +182,7 @@ std::string describe_quality(const Quality& quality) {
         text += std::string(", kernel ") + caustic_kernel_name(quality.caustic_kernel) + ", map scale " +
                 format_number(quality.map_scale);
     }
+    if (quality.samples > 1) text += ", " + std::to_string(quality.samples) + " spp";
     return text;
 }
 

@@ -13,6 +13,8 @@
 //                    adaptive hat's 9 (and its 4 neighbours traced), where the light-space map is made
 //   map_scale        effects.caustics.map_scale: the map's texels (clear, resolve, blur) and the
 //                    hat's taps, which span the photons' spacing in texels
+//   samples          render --spp: the sub-frames of a box-filtered frame, each one every camera
+//                    pass again (the photon map once); at most the samples the command asked for
 #pragma once
 
 #include "engine/framegraph/frame_needs.hpp"
@@ -33,29 +35,32 @@ struct Quality {
     uint32_t scene_lookups = 0;    // how many of reflection and refraction look the scene up (0 to 2)
     CausticKernel caustic_kernel = CausticKernel::Adaptive;  // the light-space map's splat kernel
     double map_scale = 0.0;  // the light-space map's texels per water cell; 0: the frame makes no photon map
+    uint32_t samples = 1;    // samples per pixel, k^2 (engine/scene/pixel_filter.hpp)
     bool operator==(const Quality&) const = default;
 };
 
-// The scene's own settings at full resolution, for the effects `needs` decides to run (a scene
-// without godrays or scene lookups has nothing to turn down there). Its lookup steps are the larger
-// of reflection's and refraction's.
-Quality scene_quality(const Scene& scene, const fg::FrameNeeds& needs);
+// The scene's own settings at full resolution and `samples` per pixel (the command's --spp), for
+// the effects `needs` decides to run (a scene without godrays or scene lookups has nothing to turn
+// down there). Its lookup steps are the larger of reflection's and refraction's.
+Quality scene_quality(const Scene& scene, const fg::FrameNeeds& needs, uint32_t samples = 1);
 
 // Every setting the budget may choose for a scene whose own settings are `top`: each knob at
 // its own value or one of the lower steps below, all combinations. `top` is among them.
 std::vector<Quality> quality_candidates(const Quality& top);
 
-// The scene with `quality`'s knobs (the resolution scale is the renderer's option, not the scene's).
+// The scene with `quality`'s knobs (the resolution scale and the samples are the renderer's
+// options, not the scene's).
 // Below the top's lookup steps both reflection and refraction take `quality.lookup_steps`.
 void apply_quality(const Quality& quality, const Quality& top, Scene& scene);
 
 // The command-line options that give `quality` explicitly, relative to the scene's own settings
-// `top`: "--render-scale 0.5 --set water.grid_resolution=256 ..." ("" when it is `top`). Given to
-// vkwater render, they reproduce the budget's image bit for bit.
+// `top`: "--render-scale 0.5 --set water.grid_resolution=256 ..." ("" when it is `top` at one
+// sample per pixel; --spp whenever it is above one). Given to vkwater render, they reproduce the
+// budget's image bit for bit.
 std::vector<std::string> quality_arguments(const Quality& quality, const Quality& top);
 std::string describe_arguments(const std::vector<std::string>& arguments);
 
-// A short line for the overlay: "scale 0.5, photons 256^2, mesh 128, godrays 32^2".
+// A short line for the overlay: "scale 0.5, photons 256^2, mesh 128, godrays 32^2" (", 4 spp" above one).
 std::string describe_quality(const Quality& quality);
 
 // The steps each knob may take (the error table, error_model.hpp, has a term for each).
@@ -66,5 +71,6 @@ inline constexpr uint32_t kGodrayGrids[] = {64, 32, 16, 0};
 inline constexpr uint32_t kLookupSteps[] = {16, 8};
 inline constexpr double kMapScaleFractions[] = {1.0, 0.5};  // of the scene's, at least kMinMapScale
 inline constexpr double kMinMapScale = 0.25;                // effects.caustics.map_scale's lower limit
+inline constexpr uint32_t kSampleCounts[] = {16, 9, 4, 1};  // k^2 strata, at most the command's --spp
 
 }  // namespace vkw::budget
