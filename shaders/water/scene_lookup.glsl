@@ -4,7 +4,8 @@
 //   - projective (de la Fuente 2011 and Optical Phenomena c. 2008): the hit is first estimated at the distance of what
 //     the view shows straight behind the surface point (Optical Phenomena c. 2008 eq. 1), then refined by
 //     fixed-point steps: look up where the estimate projects, move the estimate to the
-//     distance of what is there, until it moves by less than 1e-4 of itself;
+//     distance of what is there, until it moves by less than 1e-4 of itself; where the steps
+//     find nothing, the ray's crossing with what the view shows, bracketed and halved;
 //   - screen-space (Ojeda & Susín 2013 section 5): march the ray through the view's distances in
 //     steps of a few texels on the view, each no longer than the gap between the ray and
 //     what the view shows there (so a step cannot pass through the surface under that
@@ -73,8 +74,8 @@ bool projective_start(sampler2D view, bool mirrored, vec3 p, vec3 d, float max_d
     return true;
 }
 
-bool projective_lookup(sampler2D view, bool mirrored, vec3 p, vec3 d, float max_distance, int max_steps,
-                       out SceneHit hit) {
+bool fixed_point_lookup(sampler2D view, bool mirrored, vec3 p, vec3 d, float max_distance, int max_steps,
+                        out SceneHit hit) {
     hit = SceneHit(vec3(0.0), 0.0, vec2(0.0));
     vec2 uv, texel_uv;
     vec4 texel = vec4(0.0);
@@ -111,6 +112,56 @@ bool projective_lookup(sampler2D view, bool mirrored, vec3 p, vec3 d, float max_
     }
     hit = SceneHit(texel.rgb, s, texel_uv);
     return true;
+}
+
+// Halvings of the ray in the bracketed lookup: a ray of a few metres to about a millimetre, below
+// a texel of the view at any distance it is used at. (9 halvings ran slower on llvmpipe than 12.)
+const int SCENE_LOOKUP_BRACKET_HALVINGS = 12;
+
+// Where the fixed-point steps find nothing to converge on, the ray's crossing with what the view
+// shows, bracketed and halved: p lies in front of it, the ray's end (max_distance along d) must
+// lie behind what the view shows there, and each halving keeps the half whose ends are in front
+// and behind. A view seen at a grazing angle needs it: its straight rays through the far part of
+// a surface can pass beyond everything (lake's far shore), so the steps, which start from what
+// lies straight behind p, land on texels that show nothing, while the refracted rays, bent down,
+// meet the bed. The bracket is kept only where it closed on one surface: the texels either side of
+// it show that surface at about the same distance. Across a silhouette they do not (the far side
+// shows something farther, or nothing), and the hit, hidden in the view, is not known.
+bool bracketed_lookup(sampler2D view, bool mirrored, vec3 p, vec3 d, float max_distance, out SceneHit hit) {
+    hit = SceneHit(vec3(0.0), 0.0, vec2(0.0));
+    const vec3 eye = scene_view_eye(mirrored);
+    vec2 uv, texel_uv;
+    if (!scene_view_uv(p + max_distance * d, mirrored, uv)) return false;
+    vec4 texel = scene_view_texel(view, uv, texel_uv);
+    if (!(texel.a > 0.0) || distance(eye, p + max_distance * d) < texel.a) return false;
+    float front = 0.0, behind = max_distance;
+    vec4 front_texel = vec4(0.0), behind_texel = texel;
+    vec2 behind_uv = texel_uv;
+    for (int i = 0; i < SCENE_LOOKUP_BRACKET_HALVINGS; ++i) {
+        const float middle = 0.5 * (front + behind);
+        const vec3 q = p + middle * d;
+        if (!scene_view_uv(q, mirrored, uv)) return false;
+        texel = scene_view_texel(view, uv, texel_uv);
+        if (texel.a > 0.0 && distance(eye, q) >= texel.a) {
+            behind = middle;
+            behind_texel = texel;
+            behind_uv = texel_uv;
+        } else {
+            front = middle;
+            front_texel = texel;
+        }
+    }
+    if (!(front_texel.a > 0.0) || abs(front_texel.a - behind_texel.a) > SCENE_LOOKUP_THICKNESS * behind_texel.a) {
+        return false;
+    }
+    hit = SceneHit(behind_texel.rgb, behind, behind_uv);
+    return true;
+}
+
+bool projective_lookup(sampler2D view, bool mirrored, vec3 p, vec3 d, float max_distance, int max_steps,
+                       out SceneHit hit) {
+    return fixed_point_lookup(view, mirrored, p, d, max_distance, max_steps, hit) ||
+           bracketed_lookup(view, mirrored, p, d, max_distance, hit);
 }
 
 // The length along d from h that moves h's image in the view by about
