@@ -68,9 +68,9 @@ Run add_view_command(CLI::App& app) {
     command
         ->add_option("--budget-ms", args->viewer.budget_ms,
                      "Keep the frame time within this many milliseconds by choosing the settings (resolution "
-                     "scale, photon grid, water mesh, godrays, scene lookup steps) with the lowest expected error that "
-                     "fit; 0 turns it "
-                     "off (default: the display's refresh interval on a GPU, 66 on a CPU device; none with "
+                     "scale, photon grid, water mesh, godrays, scene lookup steps, caustic kernel and map scale, and "
+                     "with --spp N up to N samples per pixel) with the lowest expected error that fit; 0 turns it "
+                     "off (default: the display's refresh interval on a GPU, 66 on a CPU device; none by default with "
                      "--frames, --script, --render-scale or --spp)")
         ->check(finite_number() & CLI::NonNegativeNumber);
     command->add_option("--present", args->present, "Present mode: fifo, mailbox or immediate")

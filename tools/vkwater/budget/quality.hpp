@@ -13,8 +13,8 @@
 //                    adaptive hat's 9 (and its 4 neighbours traced), where the light-space map is made
 //   map_scale        effects.caustics.map_scale: the map's texels (clear, resolve, blur) and the
 //                    hat's taps, which span the photons' spacing in texels
-//   samples          render --spp: the sub-frames of a box-filtered frame, each one every camera
-//                    pass again (the photon map once); at most the samples the command asked for
+//   samples          --spp: the sub-frames of a box-filtered frame, each one every camera pass
+//                    again (the photon map once); at most the samples the command asked for
 #pragma once
 
 #include "engine/framegraph/frame_needs.hpp"

@@ -133,7 +133,8 @@ private:
     fg::PipelineStore present_pipelines_;
     std::unique_ptr<ImGuiLayer> imgui_;
     Image window_hdr_;             // the hand-off image: the frame's HDR colour, the swapchain's size
-    PixelFilter filter_;           // --spp
+    PixelFilter filter_;           // --spp, or under a budget the samples it chose (at most --spp's)
+    uint32_t most_samples_ = 1;    // --spp
     Image sub_frame_sum_;          // with a box filter: the sub-frames' running sum, window_hdr_'s size
     uint64_t hdr_generation_ = 0;  // names window_hdr_ in the renderer's configuration
     std::vector<std::unique_ptr<PresentGraph>> present_graphs_;  // one per swapchain image
@@ -176,6 +177,7 @@ private:
 Viewer::Viewer(const ViewerOptions& options) : options_(options) {
     scripted_ = options_.frames > 0 || !options_.script.empty();
     filter_ = pixel_filter_from_spp(options_.spp);
+    most_samples_ = filter_.samples;
     if (options_.temporal && filter_.is_box()) {
         throw UserError("--spp " + std::to_string(options_.spp) +
                         ": --temporal jitters its frames within the pixel itself (accepted: --spp 1 with it)");
@@ -254,11 +256,7 @@ double Viewer::choose_budget_ms() const {
             throw UserError("--render-scale " + format_number(options_.render_scale) +
                             ": --budget-ms chooses the resolution scale itself (accepted: one of the two)");
         }
-        if (*options_.budget_ms > 0.0 && filter_.is_box()) {
-            throw UserError("--spp " + std::to_string(options_.spp) +
-                            ": --budget-ms chooses its settings at one sample per pixel (accepted: --spp 1 with it)");
-        }
-        return *options_.budget_ms;
+        return *options_.budget_ms;  // with --spp N, up to N samples per pixel
     }
     // Scripted runs repeat exactly (a screenshot equals vkwater render's image); a chosen
     // resolution scale or sample count is the user's setting.
@@ -274,7 +272,7 @@ void Viewer::start_budget() {
     refraction_steps_at_load_ = scene_->effects[Effect::Refraction].max_steps;
     const fg::FrameNeeds needs = decide_frame_needs(*scene_, double(options_.width) / double(options_.height));
     budget_ = std::make_unique<budget::BudgetController>(
-        budget_ms_, budget::scene_quality(*scene_, needs),
+        budget_ms_, budget::scene_quality(*scene_, needs, most_samples_),
         [this](const budget::Quality& q) {
             const VkExtent2D extent = output_extent();
             return budget::cost_drivers(*scene_, q, extent.width, extent.height);
@@ -333,7 +331,7 @@ void Viewer::recreate_swapchain(VkExtent2D size) {
                    VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT},
                   "window HDR");
         ++hdr_generation_;
-        if (filter_.is_box()) {
+        if (most_samples_ > 1) {  // a budget may turn the box filter off and on again
             sub_frame_sum_ = Image(
                 *context_, {extent.width, extent.height, VK_FORMAT_R32G32B32A32_SFLOAT, passes::kSubFrameSumUsage},
                 "sub-frame sum");
@@ -555,6 +553,8 @@ bool Viewer::render_frame() {
     const Clock::time_point start = Clock::now();
     const bool screenshot = !screenshots_.empty();
     const bool timing = options_.timing_every > 0 && frame_ >= timing_due_ && frame_ >= FrameStats::kWarmupFrames;
+    // The frame's samples: the budget's choice holds for all of its sub-frames.
+    if (budget_) filter_ = pixel_filter_from_spp(budget_->current().samples);
     fg::FrameReport report = run_earlier_sub_frames(timing);
     fg::FrameExecutor& executor = prepare_scene_frame(filter_.samples - 1);
     note_pass_list(executor.graph());
