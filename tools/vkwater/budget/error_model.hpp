@@ -9,8 +9,15 @@
 // actually sampled, samples per pixel counted as rows (predict_error below), and the bilinear kernel's is measured at each photon
 // grid, since the tent's excess over the hat grows as the grid coarsens.
 //
-// What it is not yet: the error bounds derived per effect (the mesh's sag in pixels, the photons
-// seen per texel) with fitted weights, which would follow a scene's wavelengths and depths
+// One factor is derived per scene: the caustic knobs' terms (photon grid, kernel, map scale) are
+// weights per unit of caustic visibility (quality.hpp: the largest share of the sun's light that
+// can reach a receiver under the water and return to the camera), fitted as the largest of each
+// measured scene's excess over its visibility, and scaled by the scene's own. The ocean's floor,
+// 30 m down in coastal water (visibility 3e-4), makes its caustic knobs nearly free, as the sweep
+// measured them (no excess at any photon grid).
+//
+// What it is not yet: the other error bounds derived per effect (the mesh's sag in pixels, the
+// photons seen per texel) with fitted weights, which would follow a scene's wavelengths and depths
 // instead of the measured scenes' worst case.
 #pragma once
 

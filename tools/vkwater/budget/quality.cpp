@@ -2,6 +2,7 @@
 #include "tools/vkwater/budget/quality.hpp"
 
 #include "engine/scene/range.hpp"
+#include "passes/frame/frame_needs.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -20,9 +21,31 @@ std::vector<uint32_t> steps_below(uint32_t own, const uint32_t* steps, size_t co
 
 }  // namespace
 
+double caustic_visibility(const Scene& scene) {
+    if (!scene.water) return 1.0;
+    const double crest = water_bounds(scene).hi.y;
+    const double trough = 2.0 * scene.water->level - crest;
+    // The receivers the water can light: those that reach below the crests.
+    double highest = scene.floor.height;
+    for (const Receiver& receiver : scene.receivers) {
+        if (receiver.mesh.bounds_min.y < crest) highest = std::max(highest, receiver.mesh.bounds_max.y);
+    }
+    const double depth = trough - highest;
+    if (!(depth > 0.0)) return 1.0;
+    const glm::dvec3 sigma_t = scene.medium.sigma_t();
+    const double sigma = std::min({sigma_t.r, sigma_t.g, sigma_t.b});
+    const double sin_sun = std::sqrt(std::max(0.0, 1.0 - scene.sun.direction.y * scene.sun.direction.y));
+    const double sin_t = std::min(1.0, sin_sun / scene.water->ior);
+    const double cos_t = std::sqrt(1.0 - sin_t * sin_t);
+    const double camera_depth = scene.camera.position.y - highest;
+    const double view = scene.camera.position.y >= trough ? depth : std::max(0.0, camera_depth);
+    return std::exp(-sigma * (depth / std::max(cos_t, 1e-6) + view));
+}
+
 Quality scene_quality(const Scene& scene, const fg::FrameNeeds& needs, uint32_t samples) {
     Quality quality;
     quality.samples = samples;
+    quality.caustic_visibility = caustic_visibility(scene);
     if (scene.water) {
         quality.photon_grid = scene.water->grid_resolution;
         // Infinite water is drawn from the screen's grid at every setting: no uniform mesh to turn.

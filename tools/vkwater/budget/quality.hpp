@@ -36,6 +36,9 @@ struct Quality {
     CausticKernel caustic_kernel = CausticKernel::Adaptive;  // the light-space map's splat kernel
     double map_scale = 0.0;  // the light-space map's texels per water cell; 0: the frame makes no photon map
     uint32_t samples = 1;    // samples per pixel, k^2 (engine/scene/pixel_filter.hpp)
+    // Not a knob: the scene's caustic_visibility (below), the same in every candidate; the error
+    // model scales the caustic knobs' terms by it.
+    double caustic_visibility = 1.0;
     bool operator==(const Quality&) const = default;
 };
 
@@ -43,6 +46,15 @@ struct Quality {
 // the effects `needs` decides to run (a scene without godrays or scene lookups has nothing to turn
 // down there). Its lookup steps are the larger of reflection's and refraction's.
 Quality scene_quality(const Scene& scene, const fg::FrameNeeds& needs, uint32_t samples = 1);
+
+// At most the share of the sun's light that reaches a receiver under the water and comes back to
+// the camera: exp(-sigma (d / cos_t + d_view)), sigma the medium's smallest extinction over its
+// channels, d the shortest depth from the lowest trough down to the highest receiver point under
+// it (the floor, or a mesh that reaches below the crests), cos_t the cosine of the sun refracted by the flat surface, d_view
+// that depth again for a camera above the water (its own height over the receiver below it). 1
+// where a receiver reaches the troughs or the medium is clear; about 2e-5 for the ocean's floor,
+// 30 m down in coastal water. What the caustics can change in a pixel scales with it.
+double caustic_visibility(const Scene& scene);
 
 // Every setting the budget may choose for a scene whose own settings are `top`: each knob at
 // its own value or one of the lower steps below, all combinations. `top` is among them.
