@@ -5,6 +5,7 @@
 # 400x300): the image rendered at WxH, box-averaged to 400x300 (box_averaged.sh). Prints a Markdown
 # table under a provenance line: budget, most samples, the settings chosen, their measured time
 # (the budget's own timed frame) and the relMSE. About a minute per row for pool at 800x600.
+# SAMPLES="1" (default "1 16") for the most samples per pixel to try; VKWATER=PATH for another build.
 #
 #   tools/benchmarks/render_budget.sh pool 800x600 500 1000 2000
 set -euo pipefail
@@ -23,7 +24,7 @@ trap 'rm -rf "$out"' EXIT
 
 rows=()
 for budget in "$@"; do
-    for most in 1 16; do
+    for most in ${SAMPLES:-1 16}; do
         # The choice: its line names the settings (as options) and the time measured for them.
         line=$("$vk" render "scenes/$scene.json" --width "$width" --height "$height" --spp "$most" \
             --budget-ms "$budget" --out "$out/chosen.exr" 2>/dev/null |
