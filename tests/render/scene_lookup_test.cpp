@@ -85,6 +85,24 @@ EdgeReport compare_edges(const ImageRGBA32F& real_time, const ImageRGBA32F& refe
     return report;
 }
 
+// A frame of `scene` against the CPU ray trace of it, their edges compared: delta 1% of the ray
+// trace's brightest red and reach 2 pixels, as derived in the first test below.
+struct AgainstRayTrace {
+    ImageRGBA32F real_time, reference;
+    float delta = 0.0f;
+    int reach = 2;
+    EdgeReport report;
+};
+AgainstRayTrace render_against_ray_trace(Context& context, const Scene& scene) {
+    Renderer renderer(context);
+    AgainstRayTrace run;
+    run.real_time = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None}).image;
+    run.reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
+    run.delta = 0.01f * brightest_red(run.reference);
+    run.report = compare_edges(run.real_time, run.reference, run.delta, run.reach);
+    return run;
+}
+
 struct MethodCase {
     const char* name;
     const char* effects;
@@ -94,23 +112,20 @@ class SceneLookupEdges : public GpuTest, public ::testing::WithParamInterface<Me
 using SceneLookupGrazing = GpuTest;
 
 TEST_P(SceneLookupEdges, ReflectedAndRefractedBoxEdgesLandWhereTheRayTracePutsThem) {
-    const Scene scene = box_in_calm_water(kCameraAbove, GetParam().effects);
-    Renderer renderer(context());
-    const RenderResult real_time = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
-    const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
-    const float brightest = brightest_red(reference);
+    const AgainstRayTrace run =
+        render_against_ray_trace(context(), box_in_calm_water(kCameraAbove, GetParam().effects));
     // delta: 1% of the brightest red. Inside a face the lookups return the radiance of the
     // nearest view texel, whose hit point lies within one texel (about 1 cm here) of the
     // exact one; the face's radiance changes by under 0.1% over that (flat lit faces are
     // uniform; under the water the stand-in's exp(-sigma_t depth / cos) moves by
     // 0.1 m^-1 x 1 cm / 0.6 < 0.2%), so only edges can differ by more than 1%.
-    const float delta = 0.01f * brightest;
     // reach: 2 pixels. A view texel is one camera pixel wide (the guard band widens the
     // view and its target by the same 1.5), the nearest lookup rounds by half a texel and
     // the estimate is reconstructed at the texel's centre, another half: an edge can move
     // by one pixel each way from the ray trace's, two with the pixel's own rounding.
-    const int reach = 2;
-    const EdgeReport report = compare_edges(real_time.image, reference, delta, reach);
+    const float delta = run.delta;
+    const int reach = run.reach;
+    const EdgeReport& report = run.report;
     EXPECT_EQ(report.far_from_edges, 0) << GetParam().name << ": " << report.mismatched
                                         << " pixels differ by more than " << delta << ", " << report.far_from_edges
                                         << " of them more than " << reach
@@ -120,10 +135,11 @@ TEST_P(SceneLookupEdges, ReflectedAndRefractedBoxEdgesLandWhereTheRayTracePutsTh
     // at this size (98 measured), are missing; half of them is a safe floor.
     const Scene without =
         box_in_calm_water(kCameraAbove, R"({"reflection": {"mode": "off"}, "refraction": {"mode": "off"}})");
+    Renderer renderer(context());
     const RenderResult plain = renderer.render(without, {kWidth, kHeight, true, fg::TimingMode::None});
-    EXPECT_GT(compare_edges(plain.image, reference, delta, reach).far_from_edges, 50)
+    EXPECT_GT(compare_edges(plain.image, run.reference, delta, reach).far_from_edges, 50)
         << "the reflected and refracted box should be missing without the scene views";
-    const double rel_mse = metrics::rel_mse(metrics::rgb_view(real_time.image), metrics::rgb_view(reference),
+    const double rel_mse = metrics::rel_mse(metrics::rgb_view(run.real_time), metrics::rgb_view(run.reference),
                                             metrics::counted_pixels(kWidth, kHeight, nullptr));
     std::printf(
         "[ figures  ] %s: relMSE %.3g against the reference; %d pixels differ by > 1%% of the peak, "
@@ -140,12 +156,7 @@ TEST_P(SceneLookupEdges, AFloatingBoxUnderTheWaterLandsWhereTheRayTracePutsIt) {
     const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes" / "box.json",
                                    {"camera=" + std::string(kCameraAbove), "effects=" + std::string(GetParam().effects),
                                     "receivers[0].half_size=[0.5, 0.4, 0.5]", "receivers[0].translation=[0, -1.2, 0]"});
-    Renderer renderer(context());
-    const RenderResult real_time = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
-    const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
-    const float brightest = brightest_red(reference);
-    // delta and reach as in the test above, for the same reasons.
-    const EdgeReport report = compare_edges(real_time.image, reference, 0.01f * brightest, 2);
+    const EdgeReport report = render_against_ray_trace(context(), scene).report;
     EXPECT_EQ(report.far_from_edges, 0) << GetParam().name << ": " << report.mismatched << " pixels differ, "
                                         << report.far_from_edges << " of them away from edges:" << report.examples;
 }
@@ -163,14 +174,8 @@ TEST_F(SceneLookupGrazing, ASlabUnderTheWaterSeenAtAGrazingAngleShowsWholeThroug
                    {R"(camera={"position": [0, 0.8, 6], "target": [0, -0.5, -2], "fov_y_deg": 60})",
                     R"(effects={"reflection": {"method": "projective"}, "refraction": {"method": "projective"}})",
                     "receivers[0].half_size=[2, 0.2, 2]", "receivers[0].translation=[0, -1.2, 0]"});
-    Renderer renderer(context());
-    const RenderResult real_time = renderer.render(scene, {kWidth, kHeight, true, fg::TimingMode::None});
-    const ImageRGBA32F reference = ref::render_reference(scene, {kWidth, kHeight, 0, {}});
-    const float brightest = brightest_red(reference);
-    // delta and reach as in the tests above, for the same reasons.
-    const float delta = 0.01f * brightest;
-    const int reach = 2;
-    const EdgeReport report = compare_edges(real_time.image, reference, delta, reach);
+    const AgainstRayTrace run = render_against_ray_trace(context(), scene);
+    const EdgeReport& report = run.report;
     EXPECT_EQ(report.far_from_edges, 0) << report.mismatched << " pixels differ, " << report.far_from_edges
                                         << " of them away from edges:" << report.examples;
     // The slab's red summed over the image. Each column it covers has a near and a far edge, each of
@@ -181,13 +186,13 @@ TEST_F(SceneLookupGrazing, ASlabUnderTheWaterSeenAtAGrazingAngleShowsWholeThroug
     for (int x = 0; x < kWidth; ++x) {
         bool covered = false;
         for (int y = 0; y < kHeight; ++y) {
-            real_time_red += red(real_time.image, x, y);
-            reference_red += red(reference, x, y);
-            covered = covered || red(reference, x, y) > delta;
+            real_time_red += red(run.real_time, x, y);
+            reference_red += red(run.reference, x, y);
+            covered = covered || red(run.reference, x, y) > run.delta;
         }
         columns += covered;
     }
-    const double bound = 2.0 * reach * columns * brightest;
+    const double bound = 2.0 * run.reach * columns * brightest_red(run.reference);
     EXPECT_NEAR(real_time_red, reference_red, bound) << "the slab's red over " << columns << " columns";
     std::printf("[ figures  ] the slab's red %.4g against the ray trace's %.4g (%.2f; bound %.2f)\n", real_time_red,
                 reference_red, real_time_red / reference_red, bound / reference_red);
