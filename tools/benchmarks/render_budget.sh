@@ -32,8 +32,7 @@ for budget in "$@"; do
         chosen=$(sed -n 's/^budget [^:]*: chose \(.*\) (measured \([0-9.]*\) ms.*/\1/p' <<<"$line")
         measured=$(sed -n 's/^budget [^:]*: chose .* (measured \([0-9.]*\) ms.*/\1/p' <<<"$line")
         [ -n "$measured" ] || { echo "render_budget.sh: no choice in: $line" >&2; exit 1; }
-        oiiotool "$out/chosen.exr" --ch R,G,B,A --resize:filter=box 400x300 -o "$out/small.exr"
-        error=$("$vk" compare "$out/small.exr" "$reference" | awk '/^relMSE/ {print $2; exit}')
+        error=$(box_averaged_image_relmse "$vk" "$out/chosen.exr" "$reference" "$out")
         rows+=("| $budget | $most | $chosen | $measured | $error |")
     done
 done

@@ -25,9 +25,7 @@ struct KnownPass {
 // ratios matter once a frame has been timed; a GPU refits every factor.
 // A pass of the light-space photon map, which the first sub-frame makes for all of them.
 PassFormula once(std::vector<std::pair<Driver, double>> ns_per_unit) {
-    PassFormula formula{std::move(ns_per_unit)};
-    formula.once_per_frame = true;
-    return formula;
+    return {.ns_per_unit = std::move(ns_per_unit), .once_per_frame = true};
 }
 
 const std::vector<KnownPass>& known_passes() {
@@ -50,7 +48,7 @@ const std::vector<KnownPass>& known_passes() {
         {"caustic resolve", once({{D::MapTexels, 18.0}})},
         {"caustic blur x", once({{D::MapTexels, 5.0}})},
         {"caustic blur y", once({{D::MapTexels, 5.0}})},
-        {"keep caustic map", {{{D::MapTexels, 10.0}}, false, false, true, true}},
+        {"keep caustic map", {.ns_per_unit = {{D::MapTexels, 10.0}}, .once_per_frame = true, .supersampled = true}},
         {"godray lines", {{{D::BeamColumns, 46.0}}, true}},
         {"godray beams", {{{D::Beams, 190.0}}, true}},
         {"godray depth", {{{D::GodrayPixels, 34.0}}, true}},
@@ -70,9 +68,12 @@ const std::vector<KnownPass>& known_passes() {
     return table;
 }
 
+// The frame's sub-frames: every pass runs in each but the photon map's.
+double sub_frames(const CostDrivers& drivers) { return std::max(1.0, at(drivers, Driver::SubFrames)); }
+
 bool runs(const PassFormula& formula, const CostDrivers& drivers, bool godrays, bool upscale) {
     return (godrays || !formula.godray) && (upscale || !formula.upscale) &&
-           (at(drivers, Driver::SubFrames) > 1.0 || !formula.supersampled);
+           (sub_frames(drivers) > 1.0 || !formula.supersampled);
 }
 
 }  // namespace
@@ -118,7 +119,7 @@ CostDrivers cost_drivers(const Scene& scene, const Quality& quality, uint32_t wi
 }
 
 double PassFormula::runs_per_frame(const CostDrivers& drivers) const {
-    return once_per_frame ? 1.0 : std::max(1.0, at(drivers, Driver::SubFrames));
+    return once_per_frame ? 1.0 : sub_frames(drivers);
 }
 
 double PassFormula::prior_ms(const CostDrivers& drivers) const {
@@ -145,7 +146,7 @@ void CostModel::observe_passes(const std::vector<fg::PassTime>& passes, const Co
         } else {
             // Taken to run in every sub-frame, as every pass but the photon map's does.
             fitted.formula = {};
-            fitted.fixed_ms = pass.ms / fitted.formula.runs_per_frame(drivers);
+            fitted.fixed_ms = pass.ms / sub_frames(drivers);
         }
         passes_[pass.pass] = fitted;
     }
@@ -179,12 +180,12 @@ double CostModel::predict_passes_ms(const CostDrivers& drivers, bool godrays, bo
         has_upscale = has_upscale || pass.formula.upscale;
         has_supersampled = has_supersampled || pass.formula.supersampled;
         if (!runs(pass.formula, drivers, godrays, upscale)) continue;
-        ms += pass.formula.ns_per_unit.empty() ? pass.fixed_ms * pass.formula.runs_per_frame(drivers)
+        ms += pass.formula.ns_per_unit.empty() ? pass.fixed_ms * sub_frames(drivers)
                                                : pass.factor * pass.formula.prior_ms(drivers);
     }
     // Passes the timed frame did not run (godrays it had turned off, the upscale at full
     // resolution, the kept photon map at one sample): their priors, at the factor typical of this device.
-    const bool supersampled = at(drivers, Driver::SubFrames) > 1.0;
+    const bool supersampled = sub_frames(drivers) > 1.0;
     if ((godrays && !has_godrays) || (upscale && !has_upscale) || (supersampled && !has_supersampled)) {
         const double factor = typical_factor();
         for (const KnownPass& known : known_passes()) {

@@ -50,10 +50,11 @@ Quality scene_quality(const Scene& scene, const fg::FrameNeeds& needs, uint32_t 
 // At most the share of the sun's light that reaches a receiver under the water and comes back to
 // the camera: exp(-sigma (d / cos_t + d_view)), sigma the medium's smallest extinction over its
 // channels, d the shortest depth from the lowest trough down to the highest receiver point under
-// it (the floor, or a mesh that reaches below the crests), cos_t the cosine of the sun refracted by the flat surface, d_view
-// that depth again for a camera above the water (its own height over the receiver below it). 1
-// where a receiver reaches the troughs or the medium is clear; about 2e-5 for the ocean's floor,
-// 30 m down in coastal water. What the caustics can change in a pixel scales with it.
+// it (the floor, or a mesh that reaches below the crests), cos_t the cosine of the sun refracted
+// by the flat surface, d_view that depth again for a camera above the water (its own height over
+// the receiver below it). 1 where a receiver reaches the troughs or the medium is clear; 3.4e-4
+// for the ocean's floor, 30 m down in coastal water. What the caustics can change in a pixel
+// scales with it.
 double caustic_visibility(const Scene& scene);
 
 // Every setting the budget may choose for a scene whose own settings are `top`: each knob at
