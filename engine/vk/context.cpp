@@ -336,6 +336,13 @@ void Context::read_enabled_features(const VkPhysicalDeviceFeatures2& enabled) {
     features_.shared_int64_atomics = enabled12 && enabled12->shaderSharedInt64Atomics;
     features_.wide_lines = enabled.features.wideLines;
     features_.fill_mode_non_solid = enabled.features.fillModeNonSolid;
+    VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+    VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+    properties.pNext = &subgroup;
+    vkGetPhysicalDeviceProperties2(physical_device_, &properties);
+    features_.compute_subgroup_shuffle_relative =
+        (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) &&
+        (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_SHUFFLE_RELATIVE_BIT);
 }
 
 void Context::load_device_functions() {

@@ -79,13 +79,16 @@ struct CausticInputs {
     uint32_t sub_photons = 1;                        // S: S x S photons per cell (S = 1: one per cell)
     bool jitter = false;                             // photons leave from hashed points of their sub-cells
     CausticKernel kernel = CausticKernel::Bilinear;  // the splat (shaders/caustics/caustic_splat.glsl)
-    glm::dvec3 sun_direction{0.0, -1.0, 0.0};        // unit, the direction the sunlight travels
-    glm::dvec3 sun_irradiance{1.0};                  // E_s per RGB, W m^-2 normal to the beam
-    double ior = 1.333;                              // n of the water, [1, 2]
-    glm::dvec3 sigma_t{0.0};                         // extinction per RGB, 1/m
-    double floor_height = -2.0;                      // the receiver: the plane y = floor_height
-    double fit_margin = 0.0;                         // m added around the fitted map on each side
-    uint32_t map_width = 512, map_height = 512;      // W x H texels, 3..16384 each
+    // The adaptive kernel's lanes hand each other their photons' rays where the device has subgroup
+    // shuffles; false makes each lane trace its neighbours itself (the same map bit for bit).
+    bool share_rays_between_lanes = true;
+    glm::dvec3 sun_direction{0.0, -1.0, 0.0};    // unit, the direction the sunlight travels
+    glm::dvec3 sun_irradiance{1.0};              // E_s per RGB, W m^-2 normal to the beam
+    double ior = 1.333;                          // n of the water, [1, 2]
+    glm::dvec3 sigma_t{0.0};                     // extinction per RGB, 1/m
+    double floor_height = -2.0;                  // the receiver: the plane y = floor_height
+    double fit_margin = 0.0;                     // m added around the fitted map on each side
+    uint32_t map_width = 512, map_height = 512;  // W x H texels, 3..16384 each
     // The texels the frame can read (caustics_read_region.hpp): a photon whose kernel reaches none
     // of them is left out. Empty: every photon is kept. read_note says which, and why.
     std::optional<CausticReadTexels> read_texels;

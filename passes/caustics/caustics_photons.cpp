@@ -23,7 +23,10 @@
 namespace vkw::passes {
 namespace {
 
-constexpr uint32_t kGroupSide = 8;  // local_size of caustic_photons.comp
+// The photon rows one work group of caustic_photons.comp covers: 8 x 8 invocations, or with the
+// adaptive kernel 64 x 1, each walking kColumnRows photons down a column.
+constexpr uint32_t kGroupSide = 8;
+constexpr uint32_t kColumnRows = 8;  // kColumnRows in caustic_photons.comp
 constexpr uint32_t kMaxGroups = 65535;
 
 // The push constants of shaders/caustics/caustic_photons.comp, generated from its SPIR-V
@@ -179,7 +182,8 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
             d.shadow.declare(builder, shadow);
             if (!inputs.read_note.empty()) builder.note(inputs.read_note);
         },
-        [push, kernel_variant = inputs.kernel, first_cell_row, end_cell_row](const Data& d, fg::PassContext& context) {
+        [push, kernel_variant = inputs.kernel, share_rays = inputs.share_rays_between_lanes, first_cell_row,
+         end_cell_row](const Data& d, fg::PassContext& context) {
             ComputePipelineDesc desc;
             // The variant: the kernel, with the sun shadow map or without.
             const char* kernel = kernel_variant == CausticKernel::Bilinear   ? "VKWATER_SPLAT_BILINEAR"
@@ -188,6 +192,9 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
             desc.shader = ShaderVariant{"caustics/caustic_photons.comp"}
                               .define(kernel)
                               .define("VKWATER_SUN_SHADOW", static_cast<bool>(d.shadow))
+                              .define("VKWATER_LANES_SHARE_RAYS",
+                                      kernel_variant == CausticKernel::Adaptive && share_rays &&
+                                          context.context().features().compute_subgroup_shuffle_relative)
                               .file();
             const Pipeline& pipeline = context.pipeline(desc.shader, desc);
             const VkPhysicalDeviceLimits& limits = context.context().properties().limits;
@@ -220,7 +227,9 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
                     context.bind(pipeline,
                                  {surface, context.storage_buffer("Flux", d.flux, band.offset, band.bytes), lost});
                     context.push_constants(pipeline, p);
-                    context.dispatch(pipeline, r * s, chunk.rows * s);
+                    // The adaptive kernel's invocations walk kColumnRows photon rows each.
+                    const uint32_t rows_per_invocation = kernel_variant == CausticKernel::Adaptive ? kColumnRows : 1;
+                    context.dispatch(pipeline, r * s, (chunk.rows * s + rows_per_invocation - 1) / rows_per_invocation);
                 }
             }
         });

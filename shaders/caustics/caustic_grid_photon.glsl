@@ -81,13 +81,11 @@ struct GridPhoton {
 // True for a flux (LSB units) that uint64() converts exactly: finite, non-negative, below 2^63.
 bool caustic_flux_representable(vec3 q) { return all(greaterThanEqual(q, vec3(0.0))) && all(lessThan(q, vec3(9.0e18))); }
 
-// False for an invocation outside the chunk and for a photon that carries nothing or whose flux
-// is not finite (dropped here, at its producer: uint64() of it is undefined).
-bool trace_grid_photon(uvec2 g, CausticPhotonChunk chunk, CausticPhotonSource source, out GridPhoton p) {
-    const uint S = chunk.sub;
-    if (g.x >= chunk.resolution * S || g.y >= chunk.rows * S) return false;
-    p.index = uvec2(g.x, g.y + chunk.first_row * S);
-    const GridSubCell sub_cell = grid_sub_cell(p.index, chunk);
+// The photon `index` (its place in the whole grid) of the sub-cell read for it; false for a photon
+// that carries nothing or whose flux is not finite (dropped here, at its producer: uint64() of it
+// is undefined).
+bool trace_sub_cell_photon(GridSubCell sub_cell, uvec2 index, CausticPhotonSource source, out GridPhoton p) {
+    p.index = index;
     p.cell = sub_cell.cell;
     p.uv0 = sub_cell.uv0;
     p.uv1 = sub_cell.uv1;
@@ -102,6 +100,14 @@ bool trace_grid_photon(uvec2 g, CausticPhotonChunk chunk, CausticPhotonSource so
 #endif
     p.q = source.deposit_scale.rgb * p.photon.energy;
     return caustic_flux_representable(p.q);
+}
+
+// The photon of invocation g of the chunk; false also for an invocation outside it.
+bool trace_grid_photon(uvec2 g, CausticPhotonChunk chunk, CausticPhotonSource source, out GridPhoton p) {
+    const uint S = chunk.sub;
+    if (g.x >= chunk.resolution * S || g.y >= chunk.rows * S) return false;
+    const uvec2 index = uvec2(g.x, g.y + chunk.first_row * S);
+    return trace_sub_cell_photon(grid_sub_cell(index, chunk), index, source, p);
 }
 
 // The cumulative share round(q w) for w in [0, 1], never above q: the kernels split a photon's

@@ -5,8 +5,10 @@
 // shadow map); the splat kernel is a variant too (VKWATER_SPLAT_BILINEAR, _ADAPTIVE,
 // _FOOTPRINT): llvmpipe's compiled code for one kernel doubles in time when the others' code
 // sits in the same shader, even behind a uniform branch (measured: 104 ms against 223 ms for the
-// bilinear kernel's 1024^2 photons). One invocation per photon: sub-cell (a, b) of cell (i, j),
-// invocation (i S + a, j_local S + b). Each photon's flux, in units of the map's LSB, is rounded
+// bilinear kernel's 1024^2 photons); with the adaptive kernel, VKWATER_LANES_SHARE_RAYS where the
+// device has subgroup shuffles. Photon (i S + a, j_local S + b) is sub-cell (a, b) of cell (i, j):
+// one invocation each, except that the adaptive kernel's invocations walk kColumnRows of them down
+// a column (below). Each photon's flux, in units of the map's LSB, is rounded
 // once to an integer q and split over its splat kernel (the bilinear 2x2; caustic_splat.glsl:
 // the hat of the landed photon lattice, integrated over each texel; caustic_footprint.glsl: its
 // sub-cell's footprint, by area) by cumulative rounding, so the taps sum to q exactly (a
@@ -15,10 +17,22 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_shader_atomic_int64 : require
+#ifdef VKWATER_LANES_SHARE_RAYS
+#extension GL_KHR_shader_subgroup_shuffle_relative : require
+#endif
 
 #include "water/water_vertex.glsl"
 
+#if defined(VKWATER_SPLAT_ADAPTIVE)
+// The adaptive kernel's invocation walks kColumnRows photons down one column of the grid, so that
+// the rays of the photons before and after it along v are the ones it traced in the steps before
+// and after (a photon's hat needs its four neighbours' rays: traced each for itself, they took
+// about 45% of pool's pass). A row of 64 invocations per work group.
+layout(local_size_x = 64, local_size_y = 1) in;
+const uint kColumnRows = 8u;
+#else
 layout(local_size_x = 8, local_size_y = 8) in;
+#endif
 
 // The vertex rows first_row - 1 .. first_row + rows + 1 of the grid (those that exist), vertex
 // (0, first_row) at element vertex_offset: a chunk's binding with the rows its photons'
@@ -141,53 +155,38 @@ bool misses_read_texels(ivec2 lo, ivec2 hi) {
     return true;
 }
 
-// Traces the photon and deposits it unless its kernel can reach no texel the frame reads.
-void main() {
-    GridPhoton p;
-    const uint sub = pc.sub_and_flags & 0xffu;
-    const CausticPhotonChunk chunk = CausticPhotonChunk(pc.resolution, sub, pc.chunk_rows & 0xffffu, pc.chunk_rows >> 16,
-                                                        (pc.sub_and_flags & 0x100u) != 0u, pc.vertex_offset);
-    const bool cull = (pc.sub_and_flags & 0x200u) != 0u;
-    if (!trace_grid_photon(gl_GlobalInvocationID.xy, chunk, pc.source, p)) return;
-    const vec2 coord = caustic_texel_coord(p.photon.hit, pc.source.space) - 0.5;
-    // Far off the map (or not a number): every tap is outside, and int() of it is undefined.
-    if (!all(lessThan(abs(coord), vec2(1e7)))) {
-        for (uint ch = 0u; ch < 3u; ++ch) deposit(ivec2(-2), ch, uint64_t(p.q[ch] + 0.5));
-        return;
+// Where the photon lands in texel coordinates (integers: texel centres); false, with its flux
+// added to the lost flux, where it lands far off the map (or not a number): every tap would be
+// outside, and int() of it is undefined.
+bool landed_coord(GridPhoton p, out vec2 coord) {
+    coord = caustic_texel_coord(p.photon.hit, pc.source.space) - 0.5;
+    if (all(lessThan(abs(coord), vec2(1e7)))) return true;
+    for (uint ch = 0u; ch < 3u; ++ch) deposit(ivec2(-2), ch, uint64_t(p.q[ch] + 0.5));
+    return false;
+}
+
+// The hat's taps lie within kAdaptiveSplatReach texels of its node's texel (the bilinear kernel's
+// within one): one look-up in the widened rows leaves out a photon farther than that from every
+// read texel, before its kernel is shaped.
+bool near_read_texels(vec2 coord) {
+    const ivec2 centre = ivec2(floor(coord));
+    const int height = int(pc.source.space.v_axis.w);
+    if (centre.y < 0 || centre.y >= height) {
+        return !misses_read_texels(centre - kAdaptiveSplatReach, centre + kAdaptiveSplatReach);
     }
-    bool kept = true;
-#if !defined(VKWATER_SPLAT_FOOTPRINT)
-    // The hat's taps lie within kAdaptiveSplatReach texels of its node's texel (the bilinear
-    // kernel's within one): one look-up in the widened rows leaves out a photon farther than that
-    // from every read texel, before its neighbours are traced to shape its kernel.
-    if (cull) {
-        const ivec2 centre = ivec2(floor(coord));
-        const int height = int(pc.source.space.v_axis.w);
-        if (centre.y < 0 || centre.y >= height) {
-            kept = !misses_read_texels(centre - kAdaptiveSplatReach, centre + kAdaptiveSplatReach);
-        } else {
-            const uint span = read_rows[height + centre.y];
-            kept = centre.x >= int(span & 0xffffu) && centre.x < int(span >> 16);
-        }
-    }
-#endif
-    if (!kept) return;
-#if defined(VKWATER_SPLAT_BILINEAR)
-    deposit_bilinear(coord, p.q);
-#else
-#if defined(VKWATER_SPLAT_FOOTPRINT)
-    ivec2 first, size;
-    float weight[64];
-    float total;
-    vec2 corner[4];
-    if (footprint_corners(p.cell, p.uv0, p.uv1, p.photon, pc.source.space, corner) &&
-        footprint_weights(corner, first, size, weight, total)) {
-        // Left out: a footprint whose texels all fall outside the ones the frame can read
-        // (caustics_read_region.hpp). What every read texel receives is unchanged.
-        if (!(cull && misses_read_texels(first, first + size - 1))) deposit_footprint(first, size, weight, total, p.q);
-        return;
-    }
-#endif
+    const uint span = read_rows[height + centre.y];
+    return centre.x >= int(span & 0xffffu) && centre.x < int(span >> 16);
+}
+
+bool culling() { return (pc.sub_and_flags & 0x200u) != 0u; }
+
+CausticPhotonChunk this_chunk() {
+    return CausticPhotonChunk(pc.resolution, pc.sub_and_flags & 0xffu, pc.chunk_rows & 0xffffu, pc.chunk_rows >> 16,
+                              (pc.sub_and_flags & 0x100u) != 0u, pc.vertex_offset);
+}
+
+// The photon's hat from its neighbours' rays, and its deposit.
+void deposit_lattice_hat(GridPhoton p, LatticeRays rays) {
     // The neighbours land on the photon's own receiver plane: the floor, or the horizontal plane
     // through the receiver mesh it hit.
 #ifdef VKWATER_SUN_SHADOW
@@ -195,7 +194,7 @@ void main() {
 #else
     const float plane = pc.source.space.origin.w;
 #endif
-    const LatticeHat hat = lattice_hat(p, chunk, pc.source.space, plane);
+    const LatticeHat hat = lattice_hat(p, rays, pc.source.space, plane);
 #if defined(VKWATER_SPLAT_ADAPTIVE)
     // The adaptive kernel's photon carries what its surface hat intercepts (the footprint
     // kernel's fallback keeps its sub-cell's, which its neighbours' footprints tile with).
@@ -205,5 +204,115 @@ void main() {
     const vec3 q = p.q;
 #endif
     deposit_hat(hat, q);
+}
+
+#if defined(VKWATER_SPLAT_ADAPTIVE)
+#ifdef VKWATER_LANES_SHARE_RAYS
+// Every lane's ray, shuffled: from the lane before it in the subgroup (`from_before`) or after it.
+// Every lane of the subgroup takes part, so it is called in uniform control flow.
+LatticeRay shuffled_ray(LatticeRay r, bool from_before) {
+    if (from_before) {
+        return LatticeRay(subgroupShuffleUp(r.p, 1u), subgroupShuffleUp(r.t, 1u), subgroupShuffleUp(r.exists, 1u),
+                          subgroupShuffleUp(r.lands, 1u));
+    }
+    return LatticeRay(subgroupShuffleDown(r.p, 1u), subgroupShuffleDown(r.t, 1u), subgroupShuffleDown(r.exists, 1u),
+                      subgroupShuffleDown(r.lands, 1u));
+}
+#endif
+
+// One step of the walk down a column: the photon at row `row` of the chunk (its ray, whether it
+// carries flux, and if so the photon itself).
+struct ColumnStep {
+    LatticeRay ray;
+    bool traced;
+    GridPhoton photon;
+};
+
+ColumnStep column_step(uint x, uint row, CausticPhotonChunk chunk) {
+    ColumnStep s;
+    const uvec2 index = uvec2(x, row + chunk.first_row * chunk.sub);
+    if (x < chunk.resolution * chunk.sub && row < chunk.rows * chunk.sub) {
+        // One of the chunk's photons: its sub-cell read once for its ray and its trace.
+        const GridSubCell sub_cell = grid_sub_cell(index, chunk);
+        s.ray = sub_cell_ray(sub_cell, pc.source.space);
+        s.traced = trace_sub_cell_photon(sub_cell, index, pc.source, s.photon);
+    } else {
+        s.ray = lattice_ray(ivec2(index), chunk, pc.source.space);
+        s.traced = false;
+    }
+    return s;
+}
+
+// Walks the column from its first row, keeping the rays of the photon before and after the one it
+// deposits. The photons beside it along u are the neighbouring lanes' where the subgroup holds the
+// columns x - 1 and x + 1, so only the subgroup's two ends trace a ray of their own. (Tracing
+// those end rays for all kColumnRows rows before the walk, spread over the lanes, and handing
+// each step's to the end lanes by broadcast was no faster on llvmpipe.)
+void main() {
+    const CausticPhotonChunk chunk = this_chunk();
+    const uint x = gl_GlobalInvocationID.x, first = gl_GlobalInvocationID.y * kColumnRows;
+    const int base = int(chunk.first_row * chunk.sub);
+#ifdef VKWATER_LANES_SHARE_RAYS
+    const uint lane = gl_SubgroupInvocationID;
+    // Whatever order a device gives its lanes in, a lane takes its neighbour's ray only where the
+    // neighbouring lane holds the neighbouring column.
+    const bool has_left = lane > 0u && subgroupShuffleUp(x, 1u) == x - 1u;
+    const bool has_right = lane + 1u < gl_SubgroupSize && subgroupShuffleDown(x, 1u) == x + 1u;
+#else
+    const bool has_left = false, has_right = false;
+#endif
+    LatticeRay before = lattice_ray(ivec2(x, base + int(first) - 1), chunk, pc.source.space);
+    ColumnStep here = column_step(x, first, chunk);
+    for (uint k = 0u; k < kColumnRows; ++k) {
+        const uint row = first + k;
+        const ColumnStep next = column_step(x, row + 1u, chunk);
+#ifdef VKWATER_LANES_SHARE_RAYS
+        LatticeRay left = shuffled_ray(here.ray, true), right = shuffled_ray(here.ray, false);
+#else
+        LatticeRay left = here.ray, right = here.ray;
+#endif
+        const ivec2 at = ivec2(x, base + int(row));
+        if (!has_left || !has_right) {
+            // One branch for both ends: llvmpipe runs a branch for all 8 lanes if any takes it.
+            const LatticeRay traced = lattice_ray(at + ivec2(has_left ? 1 : -1, 0), chunk, pc.source.space);
+            if (!has_left) left = traced; else right = traced;
+            // A lane that has neither (a subgroup of one) traces the other too.
+            if (!has_left && !has_right) right = lattice_ray(at + ivec2(1, 0), chunk, pc.source.space);
+        }
+        if (here.traced) {
+            vec2 coord;
+            if (landed_coord(here.photon, coord) && (!culling() || near_read_texels(coord))) {
+                deposit_lattice_hat(here.photon, LatticeRays(left, right, before, next.ray));
+            }
+        }
+        before = here.ray;
+        here = next;
+    }
+}
+#else
+// Traces the photon and deposits it unless its kernel can reach no texel the frame reads.
+void main() {
+    GridPhoton p;
+    const CausticPhotonChunk chunk = this_chunk();
+    if (!trace_grid_photon(gl_GlobalInvocationID.xy, chunk, pc.source, p)) return;
+    vec2 coord;
+    if (!landed_coord(p, coord)) return;
+#if defined(VKWATER_SPLAT_BILINEAR)
+    if (culling() && !near_read_texels(coord)) return;
+    deposit_bilinear(coord, p.q);
+#else
+    ivec2 first, size;
+    float weight[64];
+    float total;
+    vec2 corner[4];
+    if (footprint_corners(p.cell, p.uv0, p.uv1, p.photon, pc.source.space, corner) &&
+        footprint_weights(corner, first, size, weight, total)) {
+        // Left out: a footprint whose texels all fall outside the ones the frame can read
+        // (caustics_read_region.hpp). What every read texel receives is unchanged.
+        if (!(culling() && misses_read_texels(first, first + size - 1))) deposit_footprint(first, size, weight, total, p.q);
+        return;
+    }
+    deposit_lattice_hat(p, traced_lattice_rays(p.index, chunk, pc.source.space));
 #endif
 }
+#endif

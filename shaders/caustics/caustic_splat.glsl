@@ -73,9 +73,35 @@ vec2 caustic_sun_coord(vec3 p, CausticLightSpace space) {
     return caustic_texel_coord(p + ((space.origin.y - p.y) / s.y) * s, space);
 }
 
+// The ray of one photon of the lattice as its neighbours see it: where it enters (p) and its
+// refracted direction (t); `lands` is false where its ray does not enter the water, `exists` where
+// it lies off the grid or outside the rows the chunk's binding holds.
+struct LatticeRay {
+    vec3 p;
+    vec3 t;
+    bool exists;
+    bool lands;
+};
+
+// The ray of the photon of a sub-cell already read.
+LatticeRay sub_cell_ray(GridSubCell sub_cell, CausticLightSpace space) {
+    LatticeRay r = LatticeRay(vec3(0.0), vec3(0.0, -1.0, 0.0), true, false);
+    r.lands = caustic_patch_ray(sub_cell.cell, sub_cell.at, space, r.p, r.t);
+    return r;
+}
+
+LatticeRay lattice_ray(ivec2 photon, CausticPhotonChunk chunk, CausticLightSpace space) {
+    LatticeRay r = LatticeRay(vec3(0.0), vec3(0.0, -1.0, 0.0), false, false);
+    const int side = int(chunk.resolution * chunk.sub);
+    if (any(lessThan(photon, ivec2(0))) || any(greaterThanEqual(photon, ivec2(side)))) return r;
+    // Only the chunk's cell rows and the one on each side of them are in its binding.
+    const int cell_row = photon.y / int(chunk.sub);
+    if (cell_row < int(chunk.first_row) - 1 || cell_row > int(chunk.first_row + chunk.rows)) return r;
+    return sub_cell_ray(grid_sub_cell(uvec2(photon), chunk), space);
+}
+
 // One neighbour of a photon in the lattice: where its sun ray enters (sun coordinates) and where
-// its refracted ray crosses the photon's receiver plane y = plane (`landed`), in texels; `lands`
-// is false where its ray does not enter the water, `exists` where it lies off the grid.
+// its refracted ray crosses the photon's receiver plane y = plane (`landed`), in texels.
 struct LatticeNeighbour {
     vec2 sun;
     vec2 landed;
@@ -83,20 +109,24 @@ struct LatticeNeighbour {
     bool lands;
 };
 
-LatticeNeighbour lattice_neighbour(ivec2 photon, CausticPhotonChunk chunk, CausticLightSpace space, float plane) {
-    LatticeNeighbour n = LatticeNeighbour(vec2(0.0), vec2(0.0), false, false);
-    const int side = int(chunk.resolution * chunk.sub);
-    if (any(lessThan(photon, ivec2(0))) || any(greaterThanEqual(photon, ivec2(side)))) return n;
-    // Only the chunk's cell rows and the one on each side of them are in its binding.
-    const int cell_row = photon.y / int(chunk.sub);
-    if (cell_row < int(chunk.first_row) - 1 || cell_row > int(chunk.first_row + chunk.rows)) return n;
-    const GridSubCell sub_cell = grid_sub_cell(uvec2(photon), chunk);
-    vec3 p, t;
-    n.exists = true;
-    n.lands = caustic_patch_ray(sub_cell.cell, sub_cell.at, space, p, t);
-    n.sun = caustic_sun_coord(p, space);
-    if (n.lands) n.landed = caustic_texel_coord(p + ((p.y - plane) / -t.y) * t, space);
+LatticeNeighbour lattice_neighbour(LatticeRay r, CausticLightSpace space, float plane) {
+    LatticeNeighbour n = LatticeNeighbour(vec2(0.0), vec2(0.0), r.exists, r.exists && r.lands);
+    if (!r.exists) return n;
+    n.sun = caustic_sun_coord(r.p, space);
+    if (r.lands) n.landed = caustic_texel_coord(r.p + ((r.p.y - plane) / -r.t.y) * r.t, space);
     return n;
+}
+
+// A photon's four lattice neighbours' rays: before and after it along the grid's u (x) and v (y).
+struct LatticeRays {
+    LatticeRay u_before, u_after, v_before, v_after;
+};
+
+// Traces them, each in full: the kernels that do not share rays between invocations.
+LatticeRays traced_lattice_rays(uvec2 index, CausticPhotonChunk chunk, CausticLightSpace space) {
+    const ivec2 i = ivec2(index);
+    return LatticeRays(lattice_ray(i - ivec2(1, 0), chunk, space), lattice_ray(i + ivec2(1, 0), chunk, space),
+                       lattice_ray(i - ivec2(0, 1), chunk, space), lattice_ray(i + ivec2(0, 1), chunk, space));
 }
 
 // The photon's hat on both axes and the area its surface hat intercepts of the beam (m^2 normal
@@ -111,16 +141,15 @@ struct LatticeHat {
     float intercepted;
 };
 
-LatticeHat lattice_hat(GridPhoton p, CausticPhotonChunk chunk, CausticLightSpace space, float plane) {
+LatticeHat lattice_hat(GridPhoton p, LatticeRays rays, CausticLightSpace space, float plane) {
     const vec2 landed = caustic_texel_coord(p.photon.hit, space);
     const vec2 sun = caustic_sun_coord(p.photon.entry, space);
     // Per grid axis: the offsets of the neighbours before and after the photon, where they land and
     // where the sun's rays through their entry points cross the plane.
     vec2 landed_before[2], landed_after[2], sun_before[2], sun_after[2];
     for (int axis = 0; axis < 2; ++axis) {
-        const ivec2 step = axis == 0 ? ivec2(1, 0) : ivec2(0, 1);
-        const LatticeNeighbour before = lattice_neighbour(ivec2(p.index) - step, chunk, space, plane);
-        const LatticeNeighbour after = lattice_neighbour(ivec2(p.index) + step, chunk, space, plane);
+        const LatticeNeighbour before = lattice_neighbour(axis == 0 ? rays.u_before : rays.v_before, space, plane);
+        const LatticeNeighbour after = lattice_neighbour(axis == 0 ? rays.u_after : rays.v_after, space, plane);
         const bool has_before = before.exists && before.lands, has_after = after.exists && after.lands;
         landed_before[axis] = before.landed - landed;
         landed_after[axis] = after.landed - landed;

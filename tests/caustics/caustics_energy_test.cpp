@@ -2,6 +2,7 @@
 // same surface, computed independently on the CPU (double-precision quadrature over engine/water's
 // analytic WaveSumSurface, not by summing photons). (d) Two runs are bit-identical. (e) A grazing
 // sun gives finite, non-negative maps and never more flux than the surface intercepts.
+#include "engine/scene/scene_loader.hpp"
 #include "engine/water/wave_sum_surface.hpp"
 #include "tests/caustics/caustics_support.hpp"
 #include "tests/support/gpu_test.hpp"
@@ -95,6 +96,50 @@ TEST_F(caustics_energy, TwoRunsAreBitIdentical) {
     const CausticRun b = run_caustics(context(), surface, in);
     EXPECT_EQ(std::memcmp(a.flux.data(), b.flux.data(), a.flux.size() * 8), 0);
     EXPECT_EQ(std::memcmp(a.irradiance.data(), b.irradiance.data(), a.irradiance.size() * 4), 0);
+}
+
+// The adaptive kernel's lanes take their neighbours' rays from each other by subgroup shuffles
+// (shaders/caustics/caustic_photons.comp). Each ray is the same function of the same inputs
+// whichever lane traces it, so the map must be the same bit for bit as when every lane traces its
+// own: on waves along both axes, with sub-cells and jitter, a grid of 203 photons a side (no
+// multiple of the 64-invocation rows nor of the 8 rows each walks), and with a receiver mesh (the
+// sun shadow variant, whose neighbours land on each photon's own plane).
+TEST_F(caustics_energy, AdaptiveLanesSharingRaysGiveTheSameMapAsLanesTracingTheirOwn) {
+    if (!context().features().compute_subgroup_shuffle_relative) {
+        GTEST_SKIP() << "the device has no subgroup shuffles in compute shaders: only one variant exists";
+    }
+    const Scene scene = parse_scene(R"({
+      "camera": {"position": [0, 5, 6], "target": [0, -1, 0]},
+      "sun": {"elevation_deg": 50, "azimuth_deg": 30, "irradiance": [1, 2, 0.5]},
+      "sky": {"radiance": [0.2, 0.3, 0.4]},
+      "floor": {"height": -2, "half_extent": 4},
+      "receivers": [{"type": "sphere", "radius": 0.6, "translation": [0.3, -1.2, -0.5]}]
+    })",
+                                    "lanes.json");
+    const passes::ReceiverMeshes meshes(context(), scene.receivers);
+    for (const uint32_t sub : {1u, 2u}) {
+        for (const bool with_mesh : {false, true}) {
+            passes::WaterSurfaceInputs surface = sine_surface(0.3, sub == 1 ? 203 : 101);
+            surface.waves.components.push_back({0.02, 1.3, 70.0, 40.0, 0.0, -1.0});
+            passes::CausticInputs in = sine_caustics(surface, 40.0);
+            in.sun_direction = scene.sun.direction;
+            in.kernel = CausticKernel::Adaptive;
+            in.sub_photons = sub;
+            in.jitter = sub > 1;
+            in.max_amplitude += 0.02;
+            CausticRun runs[2];
+            for (const bool share : {true, false}) {
+                in.share_rays_between_lanes = share;
+                runs[share ? 0 : 1] = run_caustics(context(), surface, in, {}, with_mesh ? &meshes : nullptr, 4.0);
+            }
+            uint64_t total = 0;
+            for (const uint64_t q : runs[0].flux) total += q;
+            EXPECT_GT(total, 0u) << "an empty map would pass";
+            ASSERT_EQ(runs[0].flux.size(), runs[1].flux.size());
+            EXPECT_EQ(std::memcmp(runs[0].flux.data(), runs[1].flux.data(), runs[0].flux.size() * 8), 0)
+                << "sub-photons " << sub << (with_mesh ? ", with the receiver mesh" : "");
+        }
+    }
 }
 
 TEST_F(caustics_energy, GrazingSunStaysFiniteAndBounded) {
