@@ -247,7 +247,7 @@ ColumnStep column_step(uint x, uint row, CausticPhotonChunk chunk) {
 // deposits. The photons beside it along u are the neighbouring lanes' where the subgroup holds the
 // columns x - 1 and x + 1, so only the subgroup's two ends trace a ray of their own. (Tracing
 // those end rays for all kColumnRows rows before the walk, spread over the lanes, and handing
-// each step's to the end lanes by broadcast was no faster on llvmpipe.)
+// each step's to the end lanes by broadcast was not measurably faster on llvmpipe.)
 void main() {
     const CausticPhotonChunk chunk = this_chunk();
     const uint x = gl_GlobalInvocationID.x, first = gl_GlobalInvocationID.y * kColumnRows;

@@ -43,7 +43,10 @@ const std::vector<KnownPass>& known_passes() {
         {"water surface (ocean grid)", {{{D::SurfaceVertices, 20.0}}}},
         {"water mesh (wave sum)", {{{D::MeshVertices, 21.0}}}},
         {"water mesh (ocean grid)", {{{D::MeshVertices, 21.0}}}},
-        {"caustic photons", once({{D::Photons, 10.0}, {D::HatPhotons, 95.0}, {D::PhotonTaps, 16.0}})},
+        // A hat photon's 4 neighbours' rays cost 95 ns when each was traced for it; shared along
+        // the column it walks and with the lanes beside it, about a quarter of that (pool's photon
+        // pass went from 243 to 200 ms, docs/performance.md "The photons' neighbours shared").
+        {"caustic photons", once({{D::Photons, 10.0}, {D::HatPhotons, 24.0}, {D::PhotonTaps, 16.0}})},
         {"caustic flux clear", once({{D::MapTexels, 2.3}})},
         {"caustic resolve", once({{D::MapTexels, 18.0}})},
         {"caustic blur x", once({{D::MapTexels, 5.0}})},
