@@ -7,8 +7,11 @@
 # build's default frame and then every setting of this tree (each render --repeat 2, the last
 # frame timed, the sum of its sub-frames); a setting's time is the median over the rounds of its
 # time over the same round's old frame, so the shared machine's swings cancel. The errors do not
-# depend on the round. Prints per scene a Markdown table and the best setting whose time ratio is
-# at most 1 (docs/accuracy.md keeps them). OLD_BUILD=DIR uses an existing build of OLD_COMMIT
+# depend on the round. Each round also asks this tree's budget for the old frame's time
+# (`render --spp 16 --budget-ms <that round's old frame>`), which turns every knob it has (photon
+# grid, map, kernel, godrays, mesh, resolution scale and samples per pixel): its choice, its
+# measured time over the old frame and its errors, a row per round. Prints per scene a Markdown
+# table and the best setting whose time ratio is at most 1 (docs/accuracy.md keeps them). OLD_BUILD=DIR uses an existing build of OLD_COMMIT
 # instead of building one in build/frame_ratio/OLD_COMMIT (as frame_ratio.sh does).
 USAGE=tools/benchmarks/equal_time.sh
 source "$(dirname "$0")/old_build.sh"
@@ -46,6 +49,14 @@ for scene in "${scenes[@]}"; do
         --set effects.caustics.map_scale="$scale")
       echo "$spp $scale $(awk -v a="$ms" -v b="$old_ms" 'BEGIN { printf "%.4f", a / b }') $ms $old_ms"
     done
+    # The budget's own choice for the old frame's time: its line names the settings and the time
+    # it measured for them.
+    line=$("$new_vk" render "scenes/$scene.json" --width 400 --height 300 --spp 16 --budget-ms "$old_ms" \
+      --out "$work/budget-$round.exr" 2> /dev/null | grep "^budget ")
+    chosen=$(sed -n 's/^budget [^:]*: chose \(.*\) (measured \([0-9.]*\) ms.*/\1/p' <<<"$line")
+    measured=$(sed -n 's/^budget [^:]*: chose .* (measured \([0-9.]*\) ms.*/\1/p' <<<"$line")
+    [ -n "$measured" ] || { echo "equal_time.sh: no budget choice in: $line" >&2; exit 1; }
+    echo "$round|$chosen|$(awk -v a="$measured" -v b="$old_ms" 'BEGIN { printf "%.4f", a / b }')" >> "$work/budget.txt"
   done > "$work/times.txt"
   read -r old_rel old_caustic <<<"$(errors "$work/old.exr" "$reference")"
   old_median=$(awk '{ print $5 }' "$work/times.txt" | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }')
@@ -76,6 +87,17 @@ for scene in "${scenes[@]}"; do
   else
     echo "No setting within $old_commit's frame time."
   fi
+  echo
+  echo "The budget at $old_commit's frame time (\`--spp 16 --budget-ms\` that round's $old_commit frame):"
+  echo
+  echo "| round | chose | its measured frame / $old_commit's frame | relMSE | / $old_commit's | caustic relMSE | / $old_commit's |"
+  echo "| --- | --- | --- | --- | --- | --- | --- |"
+  while IFS='|' read -r round chosen ratio; do
+    read -r rel caustic <<<"$(errors "$work/budget-$round.exr" "$reference")"
+    echo "| $round | $chosen | $ratio | $rel | $(awk -v a="$rel" -v b="$old_rel" 'BEGIN { printf "%.2f", a / b }') |" \
+      "$caustic | $(awk -v a="$caustic" -v b="$old_caustic" 'BEGIN { printf "%.2f", a / b }') |"
+  done < "$work/budget.txt"
+  rm -f "$work/budget.txt"
   echo
 done
 provenance_line "$new_vk" "the old build: $old_commit"
