@@ -125,10 +125,16 @@ TEST(BudgetErrorModel, FewerSamplesCostTheRowsTheyStandFor) {
     EXPECT_DOUBLE_EQ(prediction.excess, resolution_error(2.0) - resolution_error(4.0));
     EXPECT_GT(prediction.excess, 0.0) << "16 samples measured closer to the box references than 4";
     EXPECT_EQ(prediction.dominant, "samples per pixel");
+    // Below full scale the samples count as no more rows: 4 samples at half scale cost what one
+    // does there (measured: 4 samples at scale 0.5 or 0.75 sample pool and lake as 1.1-1.3 times
+    // the rows, and the frame's cost is 4 times).
     Quality half = four;
     half.render_scale = 0.5;
-    EXPECT_DOUBLE_EQ(predict_error(half, top).excess, resolution_error(1.0) - resolution_error(4.0));
+    EXPECT_DOUBLE_EQ(predict_error(half, top).excess, resolution_error(0.5) - resolution_error(4.0));
     EXPECT_EQ(predict_error(half, top).dominant, "resolution scale");
+    Quality half_one_sample = half;
+    half_one_sample.samples = 1;
+    EXPECT_DOUBLE_EQ(predict_error(half, top).excess, predict_error(half_one_sample, top).excess);
 }
 
 // The caustic knobs' terms scale with the scene's caustic visibility: pool's floor 1.5 m down in

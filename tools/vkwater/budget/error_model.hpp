@@ -35,7 +35,8 @@ struct ErrorPrediction {
 // The table's figures are for images of kErrorTableRows rows (400x300, against references of that
 // size). The resolution scale's term follows the rows actually sampled: at an output of
 // `output_rows`, scale s with k^2 samples per pixel samples the image as s * k * output_rows rows
-// would (the strata's centres are a k-times finer image's pixel centres), and its term is the
+// would (the strata's centres are a k-times finer image's pixel centres) at s = 1, and as
+// s * output_rows below it, where the stretch to the output follows the samples, and its term is the
 // table's error at that many rows over the error at the top's (both as fractions of
 // kErrorTableRows, interpolated in log2 between the table's steps: the resolution scales from 0.25x
 // up to 1x, twice the rows, and 3x and 4x from 9 and 16 samples per pixel). An output larger than
