@@ -52,10 +52,14 @@ for scene in "${scenes[@]}"; do
     # The budget's own choice for the old frame's time: its line names the settings and the time
     # it measured for them.
     line=$("$new_vk" render "scenes/$scene.json" --width 400 --height 300 --spp 16 --budget-ms "$old_ms" \
-      --out "$work/budget-$round.exr" 2> /dev/null | grep "^budget ")
+      --out "$work/budget-$round.exr" 2> "$work/budget.err" | grep "^budget " || true)
     chosen=$(sed -n 's/^budget [^:]*: chose \(.*\) (measured \([0-9.]*\) ms.*/\1/p' <<<"$line")
     measured=$(sed -n 's/^budget [^:]*: chose .* (measured \([0-9.]*\) ms.*/\1/p' <<<"$line")
-    [ -n "$measured" ] || { echo "equal_time.sh: no budget choice in: $line" >&2; exit 1; }
+    if [ -z "$measured" ]; then
+      echo "equal_time.sh: $scene: no budget choice at $old_ms ms in: $line" >&2
+      tail -3 "$work/budget.err" >&2
+      exit 1
+    fi
     echo "$round|$chosen|$(awk -v a="$measured" -v b="$old_ms" 'BEGIN { printf "%.4f", a / b }')" >> "$work/budget.txt"
   done > "$work/times.txt"
   read -r old_rel old_caustic <<<"$(errors "$work/old.exr" "$reference")"
