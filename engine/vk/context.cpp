@@ -336,13 +336,18 @@ void Context::read_enabled_features(const VkPhysicalDeviceFeatures2& enabled) {
     features_.shared_int64_atomics = enabled12 && enabled12->shaderSharedInt64Atomics;
     features_.wide_lines = enabled.features.wideLines;
     features_.fill_mode_non_solid = enabled.features.fillModeNonSolid;
+    VkPhysicalDeviceVulkan13Properties properties13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_PROPERTIES};
     VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+    subgroup.pNext = &properties13;
     VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
     properties.pNext = &subgroup;
     vkGetPhysicalDeviceProperties2(physical_device_, &properties);
+    // A subgroup wider than the 64-invocation work group that uses the shuffles would hold inactive
+    // lanes, whose shuffled values are undefined.
+    const uint32_t widest_subgroup = std::max(subgroup.subgroupSize, properties13.maxSubgroupSize);
     features_.compute_subgroup_shuffle_relative =
         (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) &&
-        (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_SHUFFLE_RELATIVE_BIT);
+        (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_SHUFFLE_RELATIVE_BIT) && widest_subgroup <= 64;
 }
 
 void Context::load_device_functions() {

@@ -47,8 +47,9 @@ struct DeviceFeatures {
     bool shader_int64 = false;
     bool buffer_int64_atomics = false;
     bool shared_int64_atomics = false;  // the caustic photons' workgroup tile (caustics_photons.hpp)
-    // Subgroup shuffles by a relative lane in compute shaders (a property, nothing to enable): the
-    // adaptive caustic kernel's lanes share their photons' rays (caustics_photons.cpp).
+    // Subgroup shuffles by a relative lane in compute shaders, in subgroups of at most 64 lanes (a
+    // property, nothing to enable): the adaptive caustic kernel's lanes share their photons' rays
+    // (caustics_photons.cpp), in work groups of 64.
     bool compute_subgroup_shuffle_relative = false;
     bool wide_lines = false;
     bool fill_mode_non_solid = false;
