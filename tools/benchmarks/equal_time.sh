@@ -42,11 +42,18 @@ errors() {
 for scene in "${scenes[@]}"; do
   reference=tests/references/box/$scene.exr
   for round in $(seq 1 "$rounds"); do
-    old_ms=$(frame_ms "$old_vk" "$work/old.exr" "scenes/$scene.json")
+    old_ms=$(frame_ms "$old_vk" "$work/old.exr" "scenes/$scene.json") || true
+    if [ -z "$old_ms" ]; then
+      # e.g. a scene file written for a feature the old build lacks
+      echo "equal_time.sh: $old_commit does not render scenes/$scene.json:" >&2
+      "$old_vk" render --width 16 --height 12 --out "$work/old.exr" "scenes/$scene.json" 2>&1 | tail -1 >&2 || true
+      exit 1
+    fi
     for setting in "${settings[@]}"; do
       read -r spp scale <<<"$setting"
       ms=$(frame_ms "$new_vk" "$work/new-$spp-$scale.exr" "scenes/$scene.json" --spp "$spp" \
-        --set effects.caustics.map_scale="$scale")
+        --set effects.caustics.map_scale="$scale") || true
+      [ -n "$ms" ] || { echo "equal_time.sh: $scene at --spp $spp, map_scale $scale: no frame time" >&2; exit 1; }
       echo "$spp $scale $(awk -v a="$ms" -v b="$old_ms" 'BEGIN { printf "%.4f", a / b }') $ms $old_ms"
     done
     # The budget's own choice for the old frame's time: its line names the settings and the time
