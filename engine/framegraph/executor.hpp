@@ -91,6 +91,7 @@ private:
     struct FiniteCheck {
         uint32_t pass;
         uint32_t resource;
+        VkOffset2D offset;  // the scanned region's first texel in the image
         uint32_t width, height;
         VkFormat format;
         size_t buffer;  // index into finite_buffers_

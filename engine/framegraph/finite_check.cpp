@@ -26,8 +26,14 @@ void FrameExecutor::record_finite_checks(VkCommandBuffer cmd, uint32_t position,
         for (const TimelineAccess& access : compiled.timelines[use.resource].accesses) {
             if (access.position == position) in_pass = access.state;
         }
-        const uint32_t width = graph_->image_width(use.resource), height = graph_->image_height(use.resource);
-        const VkDeviceSize bytes = VkDeviceSize{width} * height * format_texel_bytes(decl.image.format);
+        const uint32_t image_width = graph_->image_width(use.resource),
+                       image_height = graph_->image_height(use.resource);
+        // A pass that defines only part of the image (PassBuilder::defines_only) is checked there.
+        const VkRect2D region = use.defined_region.value_or(VkRect2D{{0, 0}, {image_width, image_height}});
+        const uint32_t width = region.extent.width, height = region.extent.height;
+        if (width == 0 || height == 0) continue;
+        // Sized for the whole image, so that a region that moves from frame to frame allocates nothing.
+        const VkDeviceSize bytes = VkDeviceSize{image_width} * image_height * format_texel_bytes(decl.image.format);
         // The n-th check of a frame reuses the n-th buffer: a graph with the same signature checks
         // the same images in the same order, so frames after the first allocate nothing.
         const size_t slot = checks.size();
@@ -41,11 +47,12 @@ void FrameExecutor::record_finite_checks(VkCommandBuffer cmd, uint32_t position,
         const AccessState copy_state = access_state(Use::TransferSrc, PassKind::Transfer);
         const Barrier to_copy{use.resource, true, {in_pass.stages, in_pass.access, in_pass.layout}, copy_state};
         record_barriers(cmd, {to_copy});
-        VkBufferImageCopy region{};
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {width, height, 1};
+        VkBufferImageCopy copy{};
+        copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        copy.imageOffset = {region.offset.x, region.offset.y, 0};
+        copy.imageExtent = {width, height, 1};
         vkCmdCopyImageToBuffer(cmd, image(use.resource), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.handle(), 1,
-                               &region);
+                               &copy);
         // Back to the pass's own state; the copy only read, so no access to flush.
         const Barrier back{use.resource, true, {copy_state.stages, VK_ACCESS_2_NONE, copy_state.layout}, in_pass};
         record_barriers(cmd, {back});
@@ -63,7 +70,7 @@ void FrameExecutor::record_finite_checks(VkCommandBuffer cmd, uint32_t position,
         dependency.pBufferMemoryBarriers = &to_host;
         vkCmdPipelineBarrier2(cmd, &dependency);
 
-        checks.push_back({pass, use.resource, width, height, decl.image.format, slot});
+        checks.push_back({pass, use.resource, region.offset, width, height, decl.image.format, slot});
     }
 }
 
@@ -103,11 +110,11 @@ void FrameExecutor::scan_finite_checks(const std::vector<FiniteCheck>& checks) c
             }
             if (finite) continue;
             const size_t texel = i / channels;
-            throw InternalError("finite check: pass '" + graph_->passes()[check.pass].name + "' wrote " +
-                                (std::isnan(value) ? "NaN" : "Inf") + " into '" +
-                                graph_->resources()[check.resource].name + "' at texel (" +
-                                std::to_string(texel % check.width) + ", " + std::to_string(texel / check.width) +
-                                "), channel " + std::to_string(i % channels));
+            throw InternalError(
+                "finite check: pass '" + graph_->passes()[check.pass].name + "' wrote " +
+                (std::isnan(value) ? "NaN" : "Inf") + " into '" + graph_->resources()[check.resource].name +
+                "' at texel (" + std::to_string(check.offset.x + texel % check.width) + ", " +
+                std::to_string(check.offset.y + texel / check.width) + "), channel " + std::to_string(i % channels));
         }
     }
 }

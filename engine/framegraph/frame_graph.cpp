@@ -218,6 +218,23 @@ void PassBuilder::side_effect() { graph_.passes_[pass_].side_effect = true; }
 void PassBuilder::serves(EffectTag effect) { graph_.passes_[pass_].serves = effect; }
 
 void PassBuilder::note(std::string text) { graph_.passes_[pass_].note = std::move(text); }
+
+void PassBuilder::defines_only(ImageHandle written, VkRect2D region) {
+    PassDecl& pass = graph_.passes_[pass_];
+    for (ResourceUse& use : pass.uses) {
+        if (use.resource != written.index || use.version_written != written.version || !is_write(use.use)) continue;
+        const ImageInfo& info = graph_.resources_[written.index].image;
+        if (info.size_class != SizeClass::Absolute || region.offset.x < 0 || region.offset.y < 0 ||
+            region.offset.x + region.extent.width > info.width ||
+            region.offset.y + region.extent.height > info.height) {
+            throw InternalError("pass '" + pass.name + "': the region it defines of '" +
+                                graph_.resources_[written.index].name + "' is not within the image");
+        }
+        use.defined_region = region;
+        return;
+    }
+    throw InternalError("pass '" + pass.name + "' defines a region of an image it did not write");
+}
 void PassBuilder::record_with(RecordingKind kind) { graph_.passes_[pass_].recording = kind; }
 
 // ---------------------------------------------------------------- compile

@@ -87,6 +87,9 @@ struct ResourceUse {
     // sampler's or image's variable name; empty for a use no descriptor carries.
     std::string binding;
     Filter filter = Filter::Linear;  // sampled reads
+    // A write that leaves only this rectangle of the image defined (PassBuilder::defines_only):
+    // the finite check scans it alone. Not part of the physical signature: it may move each frame.
+    std::optional<VkRect2D> defined_region;
 };
 
 struct ResourceDecl {
@@ -171,6 +174,10 @@ public:
     // One line on what the pass decided for this frame (e.g. what it leaves out, and why), printed
     // under the pass by FrameGraph::describe().
     void note(std::string text);
+    // The pass writes only `region` of `written` (the version its write returned): the rest of the
+    // image stays undefined this frame, and every later reader promises to read within the region.
+    // The finite check scans the region alone.
+    void defines_only(ImageHandle written, VkRect2D region);
 
 private:
     friend class FrameGraph;

@@ -3,8 +3,9 @@
 // bound band by band, each band's offset aligned to minStorageBufferOffsetAlignment.
 //
 // The flux buffer: a header of kCausticFluxHeaderBytes (the uint64 flux per channel that fell off
-// the map, then padding to the largest offset alignment Vulkan allows), then W x H texels of three
-// uint64 (R, G, B), row after row.
+// the map, then padding to the largest offset alignment Vulkan allows), then the held texels
+// (CausticMapFrame::held: the whole W x H map, or the rectangle the frame reads) of three uint64
+// (R, G, B), row after row at the rectangle's width. It is allocated for the whole map.
 #pragma once
 
 #include <vulkan/vulkan.h>

@@ -114,6 +114,13 @@ CausticMapFrame fit_caustic_map(const CausticInputs& in) {
         f.lsb[c] = std::max(1e-9 * f.flat_texel_flux[c], incoming / 0x1.0p62);
         if (!(f.lsb[c] > 0.0)) f.lsb[c] = 1.0;  // E_s,c = 0: nothing is deposited in this channel
     }
+    f.held = {0, 0, f.width, f.height};
+    if (in.hold_read_texels_only && in.read_texels) {
+        const CausticTexelRect& r = in.read_texels->bounds;
+        f.held = {std::min(r.x0, f.width), std::min(r.y0, f.height), std::min(r.x1, f.width), std::min(r.y1, f.height)};
+        f.held.x1 = std::max(f.held.x1, f.held.x0);
+        f.held.y1 = std::max(f.held.y1, f.held.y0);
+    }
     return f;
 }
 

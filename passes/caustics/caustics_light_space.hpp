@@ -52,6 +52,10 @@ constexpr uint32_t kMaxFootprintTexels = 8;
 // A rectangle of map texels, [x0, x1) x [y0, y1).
 struct CausticTexelRect {
     uint32_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+
+    uint32_t width() const { return x1 - x0; }
+    uint32_t height() const { return y1 - y0; }
+    bool operator==(const CausticTexelRect&) const = default;
 };
 // The texels [x0, x1) of one map row.
 struct CausticTexelSpan {
@@ -93,6 +97,10 @@ struct CausticInputs {
     // of them is left out. Empty: every photon is kept. read_note says which, and why.
     std::optional<CausticReadTexels> read_texels;
     std::string read_note;
+    // The flux and the resolved map hold only the read texels' bounding rectangle
+    // (CausticMapFrame::held), so that clearing and resolving cost what the frame reads. Off where
+    // a pass reads around every texel of the map (the blur).
+    bool hold_read_texels_only = false;
 };
 
 // struct CausticLightSpace of shaders/caustics/caustic_light_space.glsl (origin: xyz, floor height;
@@ -109,6 +117,12 @@ struct CausticMapFrame {
     glm::dvec2 texel;         // texel size along x and z at the mean level, m
     double texel_area = 0.0;  // A_ls = texel.x texel.y cos(theta_t), m^2 normal to t
     uint32_t width = 0, height = 0;
+    // The texels the flux buffer and the resolved map hold this frame: the read texels' bounding
+    // rectangle with CausticInputs::hold_read_texels_only, else the whole map. Both are allocated
+    // for the whole map (its bound), so a rectangle that moves with the camera allocates nothing.
+    // The flux holds the rectangle's rows at its own width; the map holds it at its place, and its
+    // other texels are undefined: every reader reads within it (caustics_read_region.hpp).
+    CausticTexelRect held;
     bool sun_up = false;         // s.y < 0; otherwise no photon deposits anything
     glm::dvec3 flat_texel_flux;  // Phi_flat per channel (above), W
     glm::dvec3 lsb;              // W per fixed-point unit, per channel

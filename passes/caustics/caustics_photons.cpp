@@ -34,7 +34,7 @@ constexpr uint32_t kMaxGroups = 65535;
 // chunk's first cell row | its cell rows << 16 (R <= 4096); read_x and read_y the read texels'
 // columns and rows, [first, end): first | end << 16.
 using CausticPhotonPush = glsl::caustic_photons_comp::Push;
-constexpr uint32_t kJitterFlag = 1u << 8, kCullFlag = 1u << 9;
+constexpr uint32_t kJitterFlag = 1u << 8, kCullFlag = 1u << 9, kHeldFlag = 1u << 10;
 static_assert(sizeof(CausticPhotonPush) == 128, "the push-constant size every device supports");
 
 // Uploads the per-row read spans (vkCmdUpdateBuffer writes at most 65536 bytes a call).
@@ -165,9 +165,20 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
         first_cell_row = static_cast<uint32_t>(std::clamp(lo, 0.0, double(inputs.grid_resolution)));
         end_cell_row = static_cast<uint32_t>(std::clamp(hi, double(first_cell_row), double(inputs.grid_resolution)));
     }
+    // The flux holds the read texels' rectangle alone (CausticMapFrame::held), at its own width:
+    // read_x and read_y are that rectangle (the read texels' bounds), and the flag says so.
+    const CausticTexelRect held = frame.held;
+    const bool held_part = held != CausticTexelRect{0, 0, frame.width, frame.height};
+    if (held_part) {
+        if (!inputs.read_texels || held != inputs.read_texels->bounds) {
+            throw InternalError("caustic photons: the held texels are not the read texels' bounds");
+        }
+        push.sub_and_flags |= kHeldFlag;
+    }
     const VkDeviceSize bytes = caustic_flux_bytes(frame.width, frame.height);
-
-    const fg::BufferHandle cleared = add_zeroed_buffer_pass(graph, "caustic flux clear", "caustic flux", bytes);
+    const fg::BufferHandle cleared =
+        add_zeroed_buffer_pass(graph, "caustic flux clear", "caustic flux", bytes, std::nullopt,
+                               caustic_flux_bytes(std::max(held.width(), 1u), std::max(held.height(), 1u)));
 
     struct Data {
         fg::BufferHandle surface, flux;
@@ -183,7 +194,8 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
             if (!inputs.read_note.empty()) builder.note(inputs.read_note);
         },
         [push, kernel_variant = inputs.kernel, share_rays = inputs.share_rays_between_lanes, first_cell_row,
-         end_cell_row](const Data& d, fg::PassContext& context) {
+         end_cell_row, held](const Data& d, fg::PassContext& context) {
+            if (held.width() == 0 || held.height() == 0) return;  // the frame reads no texel
             ComputePipelineDesc desc;
             // The variant: the kernel, with the sun shadow map or without.
             const char* kernel = kernel_variant == CausticKernel::Bilinear   ? "VKWATER_SPLAT_BILINEAR"
@@ -203,10 +215,9 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
             const bool neighbours = kernel_variant != CausticKernel::Bilinear;
             const auto chunks = clip_cell_rows(caustic_photon_chunks(context, r, s, neighbours), first_cell_row,
                                                end_cell_row, context, r);
-            const uint32_t width = static_cast<uint32_t>(push.source.space.u_axis[3]);
-            const uint32_t height = static_cast<uint32_t>(push.source.space.v_axis[3]);
-            const auto bands = row_bands(height, VkDeviceSize{width} * kCausticTexelBytes, kCausticFluxHeaderBytes, 0,
-                                         limits.maxStorageBufferRange, limits.minStorageBufferOffsetAlignment, height);
+            const auto bands =
+                row_bands(held.height(), VkDeviceSize{held.width()} * kCausticTexelBytes, kCausticFluxHeaderBytes, 0,
+                          limits.maxStorageBufferRange, limits.minStorageBufferOffsetAlignment, held.height());
             // The flux buffer's header (the lost photons' count), beside the band of its rows.
             const fg::DescriptorBinding lost = context.storage_buffer("Lost", d.flux, 0, kCausticFluxHeaderBytes);
             for (const RowBand& chunk : chunks) {
@@ -222,7 +233,7 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
                     CausticPhotonPush p = push;
                     p.chunk_rows = chunk.first | chunk.rows << 16;
                     p.vertex_offset = vertex_offset;
-                    p.band_first = band.first;
+                    p.band_first = held.y0 + band.first;  // a map row
                     p.band_rows = band.rows;
                     context.bind(pipeline,
                                  {surface, context.storage_buffer("Flux", d.flux, band.offset, band.bytes), lost});

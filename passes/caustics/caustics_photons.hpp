@@ -51,7 +51,8 @@ std::vector<RowBand> caustic_photon_chunks(const fg::PassContext& context, uint3
                                            bool neighbour_rows = false);
 
 // Adds the clear of the flux buffer (transfer) and the photon pass (compute) and returns the
-// flux buffer: caustic_flux_bytes(W, H) bytes, laid out as caustics_bands.hpp says, in units of
+// flux buffer: caustic_flux_bytes(W, H) bytes, the held texels laid out as caustics_bands.hpp says
+// (taps on the map outside them are dropped: no pass reads there), in units of
 // fit_caustic_map(inputs).lsb. `shadow` (scenes with receiver meshes): the sun shadow map, whose
 // beam half must look along fit_caustic_map(inputs).direction. Throws vkw::InternalError for
 // inputs out of range.

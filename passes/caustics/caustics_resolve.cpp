@@ -8,6 +8,9 @@
 
 #include <shader_structs/caustics/caustic_resolve.comp.hpp>
 
+#include <cmath>
+#include <string>
+
 namespace vkw::passes {
 namespace {
 
@@ -20,32 +23,44 @@ CausticMap add_caustic_resolve_pass(fg::FrameGraph& graph, fg::BufferHandle flux
     const CausticMapFrame frame = fit_caustic_map(inputs);
     ResolvePush push{};
     for (int c = 0; c < 3; ++c) push.factor[c] = float(frame.lsb[c] / frame.texel_area);
-    push.width = frame.width;
+    // The held texels alone (CausticMapFrame::held): the map's others stay undefined, unread.
+    const CausticTexelRect held = frame.held;
+    push.width = held.width();
+    push.first_column = held.x0;
+    const bool held_part = held != CausticTexelRect{0, 0, frame.width, frame.height};
     const fg::BufferHandle frame_buffer = add_caustic_map_frame_pass(graph, inputs);
 
     struct Data {
         fg::BufferHandle flux;
         fg::ImageHandle irradiance;
     };
-    const uint32_t height = frame.height;
     const auto& data = graph.add_pass<Data>(
         "caustic resolve", fg::PassKind::Compute,
         [&](fg::PassBuilder& builder, Data& d) {
             d.flux = builder.read_storage("Flux", flux);
             d.irradiance = builder.write_storage("irradiance",
                                                  builder.create_image("caustic irradiance", caustic_map_image(frame)));
+            if (held_part) {
+                builder.defines_only(d.irradiance,
+                                     {{int32_t(held.x0), int32_t(held.y0)}, {held.width(), held.height()}});
+                const double share = double(held.width()) * held.height() / (double(frame.width) * frame.height);
+                builder.note("resolves the " + std::to_string(held.width()) + " x " + std::to_string(held.height()) +
+                             " texels that hold what the frame reads (" + std::to_string(std::lround(100.0 * share)) +
+                             "% of the map)");
+            }
         },
-        [push, height](const Data& d, fg::PassContext& context) {
+        [push, held](const Data& d, fg::PassContext& context) {
+            if (held.width() == 0 || held.height() == 0) return;  // the frame reads no texel
             const Pipeline& pipeline =
                 context.pipeline("caustic resolve", ComputePipelineDesc{"caustics/caustic_resolve.comp"});
             const VkPhysicalDeviceLimits& limits = context.context().properties().limits;
             // Bands of at most 65535 groups of rows, each within one binding.
-            const auto bands = row_bands(height, VkDeviceSize{push.width} * kCausticTexelBytes, kCausticFluxHeaderBytes,
-                                         0, limits.maxStorageBufferRange, limits.minStorageBufferOffsetAlignment,
-                                         65535 * pipeline.local_size()[1]);
+            const auto bands = row_bands(held.height(), VkDeviceSize{push.width} * kCausticTexelBytes,
+                                         kCausticFluxHeaderBytes, 0, limits.maxStorageBufferRange,
+                                         limits.minStorageBufferOffsetAlignment, 65535 * pipeline.local_size()[1]);
             for (const RowBand& band : bands) {
                 ResolvePush p = push;
-                p.band_first = band.first;
+                p.band_first = held.y0 + band.first;
                 p.band_rows = band.rows;
                 context.bind(pipeline, {context.storage_buffer("Flux", d.flux, band.offset, band.bytes)});
                 context.push_constants(pipeline, p);

@@ -1,12 +1,19 @@
 #include "passes/common/zeroed_buffer.hpp"
 
+#include "engine/core/errors.hpp"
 #include "engine/framegraph/pass_context.hpp"
+
+#include <string>
 
 namespace vkw::passes {
 
 fg::BufferHandle add_zeroed_buffer_pass(fg::FrameGraph& graph, const std::string& pass_name,
                                         const std::string& buffer_name, VkDeviceSize bytes,
-                                        std::optional<fg::EffectTag> effect) {
+                                        std::optional<fg::EffectTag> effect, VkDeviceSize zeroed_bytes) {
+    if (zeroed_bytes != VK_WHOLE_SIZE && (zeroed_bytes == 0 || zeroed_bytes > bytes || zeroed_bytes % 4 != 0)) {
+        throw InternalError(pass_name + ": " + std::to_string(zeroed_bytes) + " bytes to zero of " +
+                            std::to_string(bytes) + " (accepted: a positive multiple of 4, at most all)");
+    }
     struct Data {
         fg::BufferHandle buffer;
     };
@@ -16,8 +23,8 @@ fg::BufferHandle add_zeroed_buffer_pass(fg::FrameGraph& graph, const std::string
             if (effect) builder.serves(*effect);
             d.buffer = builder.copy_destination(builder.create_buffer(buffer_name, {bytes}));
         },
-        [](const Data& d, fg::PassContext& context) {
-            vkCmdFillBuffer(context.cmd(), context.buffer(d.buffer), 0, VK_WHOLE_SIZE, 0);
+        [zeroed_bytes](const Data& d, fg::PassContext& context) {
+            vkCmdFillBuffer(context.cmd(), context.buffer(d.buffer), 0, zeroed_bytes, 0);
         });
     return data.buffer;
 }

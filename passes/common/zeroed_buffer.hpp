@@ -9,10 +9,12 @@
 
 namespace vkw::passes {
 
-// Creates `buffer_name` (bytes long) and zeroes it in the pass `pass_name`, which serves
-// `effect` when given; returns the zeroed buffer.
+// Creates `buffer_name` (bytes long) and zeroes its first `zeroed_bytes` (a multiple of 4, or
+// VK_WHOLE_SIZE: all of it) in the pass `pass_name`, which serves `effect` when given; returns the
+// buffer. A buffer allocated at its bound but used only in part this frame zeroes only that part.
 fg::BufferHandle add_zeroed_buffer_pass(fg::FrameGraph& graph, const std::string& pass_name,
                                         const std::string& buffer_name, VkDeviceSize bytes,
-                                        std::optional<fg::EffectTag> effect = std::nullopt);
+                                        std::optional<fg::EffectTag> effect = std::nullopt,
+                                        VkDeviceSize zeroed_bytes = VK_WHOLE_SIZE);
 
 }  // namespace vkw::passes

@@ -236,6 +236,8 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
                     if (region.bounded) {
                         caustics.read_texels = passes::CausticReadTexels{
                             {region.x0, region.y0, region.x1, region.y1}, region.packed_rows, region.photon_spread};
+                        // The blur reads around every texel it writes, so with it the map stays whole.
+                        caustics.hold_read_texels_only = !graph.needs().needs(Effect::CausticBlur);
                     }
                     caustics.read_note = region.note;
                 } else {

@@ -44,7 +44,9 @@ layout(set = 0, binding = 0, std430) readonly buffer Surface { WaterVertex verti
 #include "caustics/caustic_footprint.glsl"
 #endif
 #include "caustics/caustic_splat.glsl"
-// The map rows band_first .. band_first + band_rows - 1, three uint64 per texel (R, G, B).
+// The map rows band_first .. band_first + band_rows - 1 of the held texels (bit 10 of
+// sub_and_flags: the read texels' rectangle read_x x read_y; else the whole map), three uint64
+// per texel (R, G, B), at the held rectangle's width.
 layout(set = 0, binding = 1, std430) buffer Flux { uint64_t flux[]; };
 // Flux whose kernel tap fell outside the map, per channel (added by the band-0 dispatches only).
 layout(set = 0, binding = 2, std430) buffer Lost { uint64_t lost[]; };
@@ -58,24 +60,32 @@ layout(push_constant) uniform Push {
     CausticPhotonSource source;
     uint resolution;     // R cells per side
     uint sub_and_flags;  // bits 0-7: S (S x S photons per cell); bit 8: jitter (each photon leaves from a
-                         // hashed point of its sub-cell); bit 9: cull outside the read texels
+                         // hashed point of its sub-cell); bit 9: cull outside the read texels; bit 10:
+                         // the flux holds only the read texels' rectangle
     uint chunk_rows;     // the chunk's first cell row | its cell rows << 16
     uint vertex_offset;  // the element of `vertices` that holds vertex (0, first cell row)
-    uint band_first;     // first map row of this band
+    uint band_first;     // first map row of this band (the first band's: the held rectangle's first row)
     uint band_rows;      // map rows in this band
     uint read_x;         // the texel columns the frame reads, [first, end): first | end << 16
     uint read_y;         // and rows
 } pc;
 
+bool holds_read_texels_only() { return (pc.sub_and_flags & 0x400u) != 0u; }
+
 void deposit(ivec2 texel, uint channel, uint64_t q) {
     if (q == 0ul) return;
+    // The held texels: [first, end).
+    const ivec2 first = holds_read_texels_only() ? ivec2(pc.read_x & 0xffffu, pc.read_y & 0xffffu) : ivec2(0);
+    const ivec2 end = holds_read_texels_only() ? ivec2(pc.read_x >> 16, pc.read_y >> 16)
+                                               : ivec2(pc.source.space.u_axis.w, pc.source.space.v_axis.w);
     if (texel.x < 0 || texel.y < 0 || texel.x >= int(pc.source.space.u_axis.w) || texel.y >= int(pc.source.space.v_axis.w)) {
-        if (pc.band_first == 0u) atomicAdd(lost[channel], q);
+        if (pc.band_first == uint(first.y)) atomicAdd(lost[channel], q);  // once: the first band's dispatch
         return;
     }
+    if (any(lessThan(texel, first)) || any(greaterThanEqual(texel, end))) return;  // on the map, read by no pass
     const int row = texel.y - int(pc.band_first);
     if (row < 0 || row >= int(pc.band_rows)) return;  // another band's dispatch adds it
-    atomicAdd(flux[(uint(row) * uint(pc.source.space.u_axis.w) + uint(texel.x)) * 3u + channel], q);
+    atomicAdd(flux[(uint(row) * uint(end.x - first.x) + uint(texel.x - first.x)) * 3u + channel], q);
 }
 
 // Splits q over the taps of one axis of the hat by cumulative rounding: tap k's share is

@@ -1,6 +1,7 @@
 #version 460
 // Fixed-point caustic flux -> irradiance on a plane normal to the sun, E = Phi_texel / A_ls
-// (passes/caustics/caustics_resolve.hpp), one band of map rows per dispatch.
+// (passes/caustics/caustics_resolve.hpp), one band of the held texels' rows per dispatch
+// (CausticMapFrame::held: the flux holds them at their own width, the map at their place).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 
@@ -11,10 +12,10 @@ layout(set = 0, binding = 1, rgba32f) writeonly uniform image2D irradiance;
 
 layout(push_constant) uniform Push {
     vec4 factor;  // rgb: LSB / A_ls per channel, W m^-2 per unit
-    uint width;
-    uint band_first;
+    uint width;         // the held texels' columns
+    uint band_first;    // the band's first map row
     uint band_rows;
-    uint pad;
+    uint first_column;  // the held texels' first map column
 } pc;
 
 void main() {
@@ -22,5 +23,5 @@ void main() {
     if (g.x >= pc.width || g.y >= pc.band_rows) return;
     const uint i = (g.y * pc.width + g.x) * 3u;
     const vec3 e = vec3(float(flux[i]), float(flux[i + 1u]), float(flux[i + 2u])) * pc.factor.rgb;
-    imageStore(irradiance, ivec2(g.x, g.y + pc.band_first), vec4(e, 1.0));
+    imageStore(irradiance, ivec2(g.x + pc.first_column, g.y + pc.band_first), vec4(e, 1.0));
 }

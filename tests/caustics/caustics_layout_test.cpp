@@ -47,6 +47,28 @@ TEST(caustics_layout, MapFitStaysFiniteAtTheHorizon) {
     }
 }
 
+// The map holds the read texels' rectangle alone only when asked (the blur reads around every
+// texel) and when there is one; a rectangle reaching past the map is clipped to it. The rest of
+// the frame (lattice, size, LSB) does not move: the photons land on the same texels either way.
+TEST(caustics_layout, TheMapHoldsTheReadTexelsOnlyWhenAskedAndBounded) {
+    passes::CausticInputs in;
+    in.map_width = in.map_height = 66;
+    const passes::CausticMapFrame whole = passes::fit_caustic_map(in);
+    const passes::CausticTexelRect all{0, 0, whole.width, whole.height};
+    EXPECT_EQ(whole.held, all);
+    in.read_texels = passes::CausticReadTexels{{5, 7, 40, 30}, nullptr, 0.0};
+    EXPECT_EQ(passes::fit_caustic_map(in).held, all);  // not asked
+    in.hold_read_texels_only = true;
+    passes::CausticMapFrame held = passes::fit_caustic_map(in);
+    EXPECT_EQ(held.held, (passes::CausticTexelRect{5, 7, 40, 30}));
+    held.held = all;
+    EXPECT_EQ(held, whole);
+    in.read_texels->bounds = {60, 0, 90, 200};
+    EXPECT_EQ(passes::fit_caustic_map(in).held, (passes::CausticTexelRect{60, 0, whole.width, whole.height}));
+    in.read_texels.reset();
+    EXPECT_EQ(passes::fit_caustic_map(in).held, all);  // asked, but nothing bounds the reads
+}
+
 TEST(caustics_layout, BandsRespectTheBindingAndGroupLimits) {
     // The flux map at 16384^2 (6 GiB: more than lavapipe's heap, but the bands must still fit).
     for (const uint32_t side : {64u, 2364u, 2365u, 4096u, 16384u}) {

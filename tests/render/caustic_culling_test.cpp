@@ -3,7 +3,9 @@
 // built-in scenes with caustics and cameras that stress the bound (close to the surface looking
 // across it, steeply down from a corner). Where the bound does not exist (the camera may be under
 // the water: ocean, underwater) culling is off, and the images are equal trivially; the cases stay
-// so that a bound added there is tested at once. That the region does leave texels out, and holds
+// so that a bound added there is tested at once. With culling the flux and the resolved map hold only
+// the read texels' rectangle (CausticMapFrame::held), so these cases also test that nothing reads
+// outside it (the map's other texels are undefined). That the region does leave texels out, and holds
 // what the view reads, is tested on the CPU (tests/caustics/caustics_read_region_test.cpp).
 #include "engine/scene/scene_loader.hpp"
 #include "passes/frame/renderer.hpp"
@@ -54,7 +56,9 @@ INSTANTIATE_TEST_SUITE_P(
                                   {"camera.position=[3, 0.12, 6]", "camera.target=[-2, 0.02, -8]"}},
                       CullingCase{"pool_steep_from_a_corner",
                                   "pool.json",
-                                  {"camera.position=[9, 4, 9]", "camera.target=[2, -1.5, 2]"}}),
+                                  {"camera.position=[9, 4, 9]", "camera.target=[2, -1.5, 2]"}},
+                      // The blur reads around each texel, so the map stays whole while the photons are culled.
+                      CullingCase{"pool_blurred", "pool.json", {"effects.caustic_blur.radius=2"}}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
 }  // namespace

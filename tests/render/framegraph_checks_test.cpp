@@ -10,6 +10,7 @@
 
 #include <shader_structs/tests/poison.comp.hpp>
 
+#include <optional>
 #include <string>
 
 namespace vkw::test {
@@ -21,7 +22,10 @@ constexpr VkDeviceSize kBytes = VkDeviceSize{kSize} * kSize * 16;
 // tests/poison.comp's push block (its bad texel, channel, and whether the poison is +Inf or NaN).
 using PoisonParams = glsl::poison_comp::Params;
 
-fg::ImageHandle add_poison_pass(fg::FrameGraph& graph, const std::string& name, PoisonParams params) {
+// `defined`: the pass declares that it leaves only this region of its (then kSize x kSize
+// absolute) image defined (PassBuilder::defines_only).
+fg::ImageHandle add_poison_pass(fg::FrameGraph& graph, const std::string& name, PoisonParams params,
+                                std::optional<VkRect2D> defined = std::nullopt) {
     struct Data {
         fg::ImageHandle image;
     };
@@ -29,8 +33,11 @@ fg::ImageHandle add_poison_pass(fg::FrameGraph& graph, const std::string& name, 
         .add_pass<Data>(
             name, fg::PassKind::Compute,
             [&](fg::PassBuilder& builder, Data& d) {
-                d.image = builder.write_storage("target",
-                                                builder.create_image(name + " image", {VK_FORMAT_R32G32B32A32_SFLOAT}));
+                const fg::ImageInfo info =
+                    defined ? fg::ImageInfo{VK_FORMAT_R32G32B32A32_SFLOAT, fg::SizeClass::Absolute, 1.0f, kSize, kSize}
+                            : fg::ImageInfo{VK_FORMAT_R32G32B32A32_SFLOAT};
+                d.image = builder.write_storage("target", builder.create_image(name + " image", info));
+                if (defined) builder.defines_only(d.image, *defined);
             },
             [params](const Data&, fg::PassContext& context) {
                 ComputePipelineDesc desc;
@@ -70,6 +77,38 @@ TEST_F(FrameGraphChecks, FiniteCheckNamesPassResourceAndTexel) {
             EXPECT_NE(message.find(infinity ? "Inf" : "NaN"), std::string::npos) << message;
         }
     }
+}
+
+// A pass that defines only part of its image (the caustic resolve, which converts the texels the
+// frame reads) is checked there alone: a NaN outside the region is not its output, one inside is
+// named at its texel in the whole image.
+TEST_F(FrameGraphChecks, FiniteCheckScansTheRegionAPassDefines) {
+    for (const bool poison_inside : {false, true}) {
+        Buffer readback(context(), {kBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true}, "readback");
+        fg::PipelineStore pipelines;
+        fg::FrameGraph graph;
+        const VkRect2D region = poison_inside ? VkRect2D{{4, 2}, {4, 5}} : VkRect2D{{8, 0}, {8, kSize}};
+        const fg::ImageHandle image = add_poison_pass(graph, "partial", {{5, 3}, 1, 0}, region);
+        passes::add_readback_pass(graph, image, readback.handle(), kBytes);
+        graph.compile(kSize, kSize);
+        fg::FrameExecutor executor(context(), graph, pipelines, {.check_finite = true, .timing = fg::TimingMode::None});
+        if (!poison_inside) {
+            EXPECT_NO_THROW(executor.execute());
+            continue;
+        }
+        try {
+            executor.execute();
+            FAIL() << "the finite check let a NaN inside the defined region through";
+        } catch (const InternalError& error) {
+            const std::string message = error.what();
+            EXPECT_NE(message.find("texel (5, 3), channel 1"), std::string::npos) << message;
+        }
+    }
+}
+
+TEST_F(FrameGraphChecks, ARegionOutsideTheImageIsRefused) {
+    fg::FrameGraph graph;
+    EXPECT_THROW(add_poison_pass(graph, "partial", {{-1, -1}, 0, 0}, VkRect2D{{12, 0}, {8, 4}}), InternalError);
 }
 
 TEST_F(FrameGraphChecks, CulledPassCreatesNoPipeline) {
