@@ -70,22 +70,31 @@ layout(push_constant) uniform Push {
     uint read_y;         // and rows
 } pc;
 
-bool holds_read_texels_only() { return (pc.sub_and_flags & 0x400u) != 0u; }
+// The held texels' columns (bit 10: the read texels' rectangle; else the whole map), and whether
+// this dispatch is the first band's, which alone adds the flux that fell off the map: set once
+// by main() rather than per tap.
+int held_first_column, held_columns;
+bool first_band;
+
+void find_held_columns() {
+    const bool held_part = (pc.sub_and_flags & 0x400u) != 0u;
+    held_first_column = held_part ? int(pc.read_x & 0xffffu) : 0;
+    held_columns = held_part ? int(pc.read_x >> 16) - held_first_column : int(pc.source.space.u_axis.w);
+    first_band = pc.band_first == (held_part ? (pc.read_y & 0xffffu) : 0u);
+}
 
 void deposit(ivec2 texel, uint channel, uint64_t q) {
     if (q == 0ul) return;
-    // The held texels: [first, end).
-    const ivec2 first = holds_read_texels_only() ? ivec2(pc.read_x & 0xffffu, pc.read_y & 0xffffu) : ivec2(0);
-    const ivec2 end = holds_read_texels_only() ? ivec2(pc.read_x >> 16, pc.read_y >> 16)
-                                               : ivec2(pc.source.space.u_axis.w, pc.source.space.v_axis.w);
     if (texel.x < 0 || texel.y < 0 || texel.x >= int(pc.source.space.u_axis.w) || texel.y >= int(pc.source.space.v_axis.w)) {
-        if (pc.band_first == uint(first.y)) atomicAdd(lost[channel], q);  // once: the first band's dispatch
+        if (first_band) atomicAdd(lost[channel], q);
         return;
     }
-    if (any(lessThan(texel, first)) || any(greaterThanEqual(texel, end))) return;  // on the map, read by no pass
+    // The bands cover the held rows alone, so a row outside them is in no band.
     const int row = texel.y - int(pc.band_first);
-    if (row < 0 || row >= int(pc.band_rows)) return;  // another band's dispatch adds it
-    atomicAdd(flux[(uint(row) * uint(end.x - first.x) + uint(texel.x - first.x)) * 3u + channel], q);
+    if (row < 0 || row >= int(pc.band_rows)) return;  // another band's dispatch adds it, or no pass reads it
+    const int column = texel.x - held_first_column;
+    if (column < 0 || column >= held_columns) return;  // on the map, read by no pass
+    atomicAdd(flux[(uint(row) * uint(held_columns) + uint(column)) * 3u + channel], q);
 }
 
 // Splits q over the taps of one axis of the hat by cumulative rounding: tap k's share is
@@ -259,6 +268,7 @@ ColumnStep column_step(uint x, uint row, CausticPhotonChunk chunk) {
 // those end rays for all kColumnRows rows before the walk, spread over the lanes, and handing
 // each step's to the end lanes by broadcast was not measurably faster on llvmpipe.)
 void main() {
+    find_held_columns();
     const CausticPhotonChunk chunk = this_chunk();
     const uint x = gl_GlobalInvocationID.x, first = gl_GlobalInvocationID.y * kColumnRows;
     const int base = int(chunk.first_row * chunk.sub);
@@ -302,6 +312,7 @@ void main() {
 #else
 // Traces the photon and deposits it unless its kernel can reach no texel the frame reads.
 void main() {
+    find_held_columns();
     GridPhoton p;
     const CausticPhotonChunk chunk = this_chunk();
     if (!trace_grid_photon(gl_GlobalInvocationID.xy, chunk, pc.source, p)) return;
