@@ -22,37 +22,16 @@ vkwater=build/tools/vkwater/vkwater
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# variant NAME PYTHON_EDIT: build/shaders with every water_surface.frag variant recompiled from a
-# copy of shaders/ that PYTHON_EDIT (run with `root` the copy's path) has changed.
-variant() {
-  local name=$1 edit=$2
-  cp -r shaders "$work/src_$name"
-  python3 -c "root = '$work/src_$name'
-$edit"
-  cp -r build/shaders "$work/$name"
-  grep -o "glslangValidator --quiet --target-env vulkan1.3 [^&]*water_surface.frag " build/build.ninja | sort -u |
-    while read -r line; do
-      read -r -a defines <<< "$(echo "$line" | grep -o -- "-DVKWATER_[A-Z_]*" | tr '\n' ' ')"
-      out=$(echo "$line" | grep -o -- "-o [^ ]*" | awk '{print $2}' | sed "s#$PWD/build/shaders#$work/$name#")
-      glslangValidator --quiet --target-env vulkan1.3 "${defines[@]}" -I"$work/src_$name" -o "$out" \
-        "$work/src_$name/water/water_surface.frag"
-    done
-}
+source "$(dirname "$0")/water_shader_variant.sh"
 
-replace='
-def replace(path, old, new):
-    text = open(root + "/" + path).read()
-    assert text.count(old) == 1, (path, old)
-    open(root + "/" + path, "w").write(text.replace(old, new))
-'
-variant as_built ""
-variant no_refinement "$replace
+water_variant as_built ""
+water_variant no_refinement "
 replace('water/surface_refinement.glsl', '    if (params.refine_steps == 0u) return false;', '    return false;')"
-variant no_water_path "$replace
+water_variant no_water_path "
 replace('water/water_surface.frag',
         'transmitted = radiance_in_water(p, refracted_direction, false, f.T, refracted_length, caustic) / (n * n);',
         'transmitted = vec3(0.3) * refracted_direction.y;')"
-variant constant "$replace
+water_variant constant "
 text = open(root + '/water/water_surface.frag').read()
 main = text.index('void main() {')
 open(root + '/water/water_surface.frag', 'w').write(text[:main] + '''void main() {
