@@ -17,11 +17,6 @@ cd "$(dirname "$0")/../.."
 source "$(dirname "$0")/provenance.sh"
 provenance_start
 rounds=${1:-5}
-vkwater=build/tools/vkwater/vkwater
-[ -x "$vkwater" ] || { echo "build first: $vkwater is missing" >&2; exit 1; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-
 source "$(dirname "$0")/water_shader_variant.sh"
 water_variant as_built ""
 water_variant march "

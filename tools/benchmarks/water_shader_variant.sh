@@ -1,11 +1,17 @@
 # Sourced by the benchmark scripts that time shader-only variants of the water's fragment shader
-# (water_pass_parts.sh, uniform_mesh_march.sh). Needs `work` (a scratch directory) and the build in
-# build/. Defines:
+# (water_pass_parts.sh, uniform_mesh_march.sh), from the repository's root. Sets `vkwater` (the
+# build's binary; it stops the script if the tree is not built) and `work` (a scratch directory,
+# removed when the script exits). Defines:
 #   water_variant NAME PYTHON_EDIT   build/shaders copied to $work/NAME with every variant of
 #                                    water_surface.frag recompiled from a copy of shaders/ that
 #                                    PYTHON_EDIT (Python, run with `root` the copy's path and the
 #                                    helper `replace(path, old, new)`, which asserts that `old`
 #                                    occurs once) has changed. VKWATER_SHADER_DIR=$work/NAME runs it.
+vkwater=build/tools/vkwater/vkwater
+[ -x "$vkwater" ] || { echo "build first: $vkwater is missing" >&2; exit 1; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
 water_variant() {
   local name=$1 edit=$2
   cp -r shaders "$work/src_$name"
