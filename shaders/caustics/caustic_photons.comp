@@ -48,7 +48,7 @@ layout(set = 0, binding = 0, std430) readonly buffer Surface { WaterVertex verti
 // sub_and_flags: the read texels' rectangle read_x x read_y; else the whole map), three uint64
 // per texel (R, G, B), at the held rectangle's width.
 layout(set = 0, binding = 1, std430) buffer Flux { uint64_t flux[]; };
-// Flux whose kernel tap fell outside the map, per channel (added by the band-0 dispatches only).
+// Flux whose kernel tap fell outside the map, per channel (added by the first band's dispatches only).
 layout(set = 0, binding = 2, std430) buffer Lost { uint64_t lost[]; };
 // With culling, per map row the texels [x0, x1) that the frame reads, as x0 | x1 << 16 (rows
 // 0 .. H - 1), then the same widened by kAdaptiveSplatReach along both axes (rows H .. 2H - 1).
