@@ -127,6 +127,9 @@ struct CausticMapFrame {
     glm::dvec3 flat_texel_flux;  // Phi_flat per channel (above), W
     glm::dvec3 lsb;              // W per fixed-point unit, per channel
 
+    // Whether the held texels are only part of the map (the photons, the clear and the resolve
+    // then address the rectangle alone).
+    bool holds_part() const { return held != CausticTexelRect{0, 0, width, height}; }
     bool operator==(const CausticMapFrame&) const = default;
 };
 

@@ -168,8 +168,7 @@ fg::BufferHandle add_caustic_photon_pass(fg::FrameGraph& graph, const CausticInp
     // The flux holds the read texels' rectangle alone (CausticMapFrame::held), at its own width:
     // read_x and read_y are that rectangle (the read texels' bounds), and the flag says so.
     const CausticTexelRect held = frame.held;
-    const bool held_part = held != CausticTexelRect{0, 0, frame.width, frame.height};
-    if (held_part) {
+    if (frame.holds_part()) {
         if (!inputs.read_texels || held != inputs.read_texels->bounds) {
             throw InternalError("caustic photons: the held texels are not the read texels' bounds");
         }

@@ -27,7 +27,6 @@ CausticMap add_caustic_resolve_pass(fg::FrameGraph& graph, fg::BufferHandle flux
     const CausticTexelRect held = frame.held;
     push.width = held.width();
     push.first_column = held.x0;
-    const bool held_part = held != CausticTexelRect{0, 0, frame.width, frame.height};
     const fg::BufferHandle frame_buffer = add_caustic_map_frame_pass(graph, inputs);
 
     struct Data {
@@ -40,7 +39,7 @@ CausticMap add_caustic_resolve_pass(fg::FrameGraph& graph, fg::BufferHandle flux
             d.flux = builder.read_storage("Flux", flux);
             d.irradiance = builder.write_storage("irradiance",
                                                  builder.create_image("caustic irradiance", caustic_map_image(frame)));
-            if (held_part) {
+            if (frame.holds_part()) {
                 builder.defines_only(d.irradiance,
                                      {{int32_t(held.x0), int32_t(held.y0)}, {held.width(), held.height()}});
                 const double share = double(held.width()) * held.height() / (double(frame.width) * frame.height);
