@@ -77,6 +77,40 @@ ReceiverSpan receivers_over_water(const Scene& scene, const WaterBounds& bounds)
     return span;
 }
 
+// The refraction view's second layer (passes/scene_views/scene_view.hpp): what the nearest receiver
+// hides from the camera. Refracted rays bend away from the camera's straight rays, so they can pass
+// under a receiver that floats in the water, or beyond a ridge of one, and meet what the camera
+// cannot see; the first layer holds only what it sees. Something can be hidden only where the
+// refracted rays' side holds two receiver meshes, or one that is not convex (a terrain, a glTF
+// mesh): a convex mesh alone hides only its own back, which no ray from outside meets first.
+void decide_refraction_second_layer(fg::FrameNeeds& needs, const Scene& scene, const WaterBounds& bounds,
+                                    bool camera_may_be_above, bool camera_may_be_below) {
+    const fg::EffectDecision* refraction = needs.find(Effect::Refraction);
+    if (!refraction || !refraction->needed) {
+        return decide(needs, scene, Effect::RefractionSecondLayer, false, "the refraction view is not drawn");
+    }
+    const double trough = 2.0 * scene.water->level - bounds.hi.y;
+    int meshes = 0;
+    bool not_convex = false;
+    for (const Receiver& receiver : scene.receivers) {
+        const glm::dvec3& lo = receiver.mesh.bounds_min;
+        const glm::dvec3& hi = receiver.mesh.bounds_max;
+        if (hi.x < bounds.lo.x || lo.x > bounds.hi.x || hi.z < bounds.lo.z || lo.z > bounds.hi.z) continue;
+        // The refracted rays' side: under the crests for a camera above, over the troughs for one below.
+        const bool on_refracted_side =
+            (camera_may_be_above && lo.y < bounds.hi.y) || (camera_may_be_below && hi.y > trough);
+        if (!on_refracted_side) continue;
+        ++meshes;
+        not_convex = not_convex || receiver.type == ReceiverType::Terrain || receiver.type == ReceiverType::Gltf;
+    }
+    const bool hidden = meshes >= 2 || not_convex;
+    decide(needs, scene, Effect::RefractionSecondLayer, hidden,
+           meshes >= 2   ? format("%.0f receiver meshes lie on the refracted rays' side: one can hide another", meshes)
+           : not_convex  ? "a receiver mesh that is not convex (a terrain or a glTF mesh) can hide part of itself"
+           : meshes == 1 ? "one convex receiver mesh on the refracted rays' side: it hides only its own back"
+                         : "no receiver mesh on the refracted rays' side");
+}
+
 // Reflection and refraction of the scene's objects (passes/scene_views/scene_view.hpp). The floor and
 // the sky are looked up exactly without them, so the views are needed only for receiver
 // meshes on the side of the surface each ray goes to: reflected rays stay on the camera's
@@ -107,6 +141,7 @@ void decide_scene_lookups(fg::FrameNeeds& needs, const Scene& scene, const Water
            !water_visible ? "the water is not in view"
            : refraction   ? sides + "; " + objects + ": some lie on the refracted rays' side"
                           : sides + "; " + objects + ": nothing but the floor and sky on the refracted rays' side");
+    decide_refraction_second_layer(needs, scene, bounds, camera_may_be_above, camera_may_be_below);
 }
 
 // Godrays (volume caustics): the sun's refracted beams scattered toward the camera, as lines
@@ -195,6 +230,7 @@ fg::FrameNeeds decide_frame_needs(const Scene& scene, double aspect) {
         decide(needs, scene, Effect::CausticBlur, false, "the scene has no water");
         decide(needs, scene, Effect::Reflection, false, "the scene has no water");
         decide(needs, scene, Effect::Refraction, false, "the scene has no water");
+        decide(needs, scene, Effect::RefractionSecondLayer, false, "the scene has no water");
         decide(needs, scene, Effect::VolumeCaustics, false, "the scene has no water");
         return needs;
     }

@@ -106,6 +106,11 @@ passes::WaterSceneLookups scene_lookups(fg::FrameGraph& graph, const Scene& scen
     if (graph.needs().needs(Effect::Refraction)) {
         lookups.refraction_view = passes::add_scene_view_pass(
             graph, *receivers, {"refraction view", false, false, clip_margin, caustic_layer});
+        if (graph.needs().needs(Effect::RefractionSecondLayer)) {
+            lookups.refraction_view_behind = passes::add_scene_view_pass(
+                graph, *receivers,
+                {"refraction view second layer", false, false, clip_margin, caustic_layer, lookups.refraction_view});
+        }
     }
     lookups.reflection_method = reflection.method;
     lookups.refraction_method = refraction.method;

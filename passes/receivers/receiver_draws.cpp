@@ -13,13 +13,14 @@ void use_receiver_mesh_vertices(GraphicsPipelineDesc& desc, bool with_normal) {
 }
 
 GraphicsPipelineDesc receiver_mesh_pipeline(const LightingInputs& lighting, const ReceiverMeshes& meshes,
-                                            bool caustic_layer) {
+                                            bool caustic_layer, bool behind_first_layer) {
     GraphicsPipelineDesc desc;
     use_receiver_mesh_vertices(desc);
     const bool varied = meshes.varied_base_color();
     desc.fragment_shader = lighting.shader("receivers/receiver.frag")
                                .define("VKWATER_MESH_BASE_COLOR", varied)
                                .define("VKWATER_CAUSTIC_LAYER", caustic_layer)
+                               .define("VKWATER_SCENE_VIEW_BEHIND", behind_first_layer)
                                .file();
     desc.depth_test = true;
     desc.depth_write = true;

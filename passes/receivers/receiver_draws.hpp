@@ -33,9 +33,10 @@ void use_receiver_mesh_vertices(GraphicsPipelineDesc& desc, bool with_normal = t
 // receivers/mesh.vert + receivers/receiver.frag in the lighting inputs' variant (plus
 // the caustic layer's macro when `caustic_layer`), depth tested and written. Where the meshes'
 // base colour varies (ReceiverMeshes::varied_base_color), the mesh variant, which samples the base
-// colour texture (`base_color_texture`) and multiplies in the vertex colour.
+// colour texture (`base_color_texture`) and multiplies in the vertex colour. `behind_first_layer`:
+// a scene view's second layer, which samples the first (`first_layer`) and keeps what lies behind.
 GraphicsPipelineDesc receiver_mesh_pipeline(const LightingInputs& lighting, const ReceiverMeshes& meshes,
-                                            bool caustic_layer = false);
+                                            bool caustic_layer = false, bool behind_first_layer = false);
 
 // Binds `pipeline` with the pass's declared resources (PassContext::bind) and the meshes' buffers,
 // and draws each part with its albedo and `view`, and with its base colour texture where the

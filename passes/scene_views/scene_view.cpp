@@ -21,6 +21,7 @@ fg::ImageHandle add_scene_view_pass(fg::FrameGraph& graph, const ReceiverMeshes&
     struct Data {
         fg::BufferHandle vertices, indices;
         fg::ImageHandle target, depth;
+        std::optional<fg::ImageHandle> first_layer;
         LightingInputs lighting;
         CausticLayerTarget layer;
     };
@@ -28,7 +29,13 @@ fg::ImageHandle add_scene_view_pass(fg::FrameGraph& graph, const ReceiverMeshes&
         spec.name, fg::PassKind::Graphics,
         [&](fg::PassBuilder& builder, Data& d) {
             // Reflected rays stay on the camera's side; refracted rays cross the surface.
-            builder.serves(spec.camera_side ? Effect::Reflection : Effect::Refraction);
+            builder.serves(spec.behind        ? Effect::RefractionSecondLayer
+                           : spec.camera_side ? Effect::Reflection
+                                              : Effect::Refraction);
+            if (spec.behind) {
+                d.first_layer = builder.sample("first_layer", *spec.behind, fg::Filter::Nearest,
+                                               VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+            }
             d.vertices = builder.vertex_buffer(meshes.import_vertices(graph));
             d.indices = builder.index_buffer(meshes.import_indices(graph));
             const fg::ImageInfo target{VK_FORMAT_R32G32B32A32_SFLOAT, fg::SizeClass::OutputRelative, kGuardBand};
@@ -42,12 +49,16 @@ fg::ImageHandle add_scene_view_pass(fg::FrameGraph& graph, const ReceiverMeshes&
             d.lighting.declare(builder, graph.blackboard(), /*with_camera_medium=*/false);
         },
         [&meshes, spec](const Data& d, fg::PassContext& context) {
-            const GraphicsPipelineDesc desc = receiver_mesh_pipeline(d.lighting, meshes, d.layer.written());
+            const GraphicsPipelineDesc desc =
+                receiver_mesh_pipeline(d.lighting, meshes, d.layer.written(), d.first_layer.has_value());
             const Pipeline& pipeline = context.pipeline(desc.fragment_shader, desc);
             const glm::vec4 view(spec.mirrored ? 1.0f : 0.0f, spec.camera_side ? 1.0f : -1.0f, spec.clip_margin, 0.0f);
             draw_receiver_meshes(context, pipeline, meshes, d.vertices, d.indices, view);
         });
-    if (data.layer.image) graph.blackboard().put(keys::kRefractionViewCaustic, *data.layer.image);
+    if (data.layer.image) {
+        graph.blackboard().put(spec.behind ? keys::kRefractionViewBehindCaustic : keys::kRefractionViewCaustic,
+                               *data.layer.image);
+    }
     return data.target;
 }
 

@@ -45,6 +45,8 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
         std::optional<fg::ImageHandle> reflection_view, refraction_view;
         CausticLayerTarget layer;
         std::optional<fg::ImageHandle> refraction_view_caustic;  // read with the layer and the views
+        // The refraction view's second layer, and its caustic layer (read with the layer).
+        std::optional<fg::ImageHandle> refraction_view_behind, refraction_view_behind_caustic;
     };
     const auto& data = graph.add_pass<Data>(
         "water", fg::PassKind::Graphics,
@@ -69,6 +71,15 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
                     builder.sample("refraction_view_caustic", graph.blackboard().get(keys::kRefractionViewCaustic),
                                    fg::Filter::Linear, fragment);
             }
+            if (d.refraction_view && lookups.refraction_view_behind) {
+                d.refraction_view_behind = builder.sample("refraction_view_behind", *lookups.refraction_view_behind,
+                                                          fg::Filter::Linear, fragment);
+                if (d.refraction_view_caustic && graph.blackboard().has(keys::kRefractionViewBehindCaustic)) {
+                    d.refraction_view_behind_caustic = builder.sample(
+                        "refraction_view_behind_caustic", graph.blackboard().get(keys::kRefractionViewBehindCaustic),
+                        fg::Filter::Linear, fragment);
+                }
+            }
         },
         [base = water_surface_push(surface, shading.refine_steps), lookups, shading](const Data& d,
                                                                                      fg::PassContext& context) {
@@ -91,11 +102,14 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
             // Constant 6, the camera's side: 0 the air, 1 the water, 2 per pixel (the mask); 7, the glitter.
             const uint32_t side = d.lighting.camera_medium ? 2u : shading.eye_in_water ? 1u : 0u;
             const uint32_t glitter = shading.glitter;
-            desc.specialization_constants.insert(desc.specialization_constants.end(),
-                                                 {fresnel, depth_blend, reflection, refraction, side, glitter});
+            // Constant 8: 1 where the refracted rays also look in the refraction view's second layer.
+            const uint32_t second_layer = d.refraction_view_behind.has_value();
+            desc.specialization_constants.insert(
+                desc.specialization_constants.end(),
+                {fresnel, depth_blend, reflection, refraction, side, glitter, second_layer});
             key += "/fresnel " + std::to_string(fresnel) + "/blend " + std::to_string(depth_blend) + "/lookups " +
                    std::to_string(reflection) + std::to_string(refraction) + "/side " + std::to_string(side) +
-                   "/glitter " + std::to_string(glitter);
+                   "/glitter " + std::to_string(glitter) + "/second layer " + std::to_string(second_layer);
             const Pipeline& pipeline = context.pipeline(key, desc);
             std::vector<fg::DescriptorBinding> stand_ins = d.surface.stand_ins(context);
             // A missing view's lookup is off, so the shader never reads it: the other view stands in
@@ -106,6 +120,10 @@ void add_water_shading_pass(fg::FrameGraph& graph, const WaterSurfaceBuffers& su
                 if (!d.refraction_view) stand_ins.push_back(context.sampled("refraction_view", either));
                 if (layer_of_views && !d.refraction_view_caustic) {
                     stand_ins.push_back(context.sampled("refraction_view_caustic", either));
+                }
+                if (!d.refraction_view_behind) stand_ins.push_back(context.sampled("refraction_view_behind", either));
+                if (layer_of_views && !d.refraction_view_behind_caustic) {
+                    stand_ins.push_back(context.sampled("refraction_view_behind_caustic", either));
                 }
             }
             context.bind(pipeline, stand_ins);

@@ -19,6 +19,9 @@ namespace vkw::passes {
 // How the water finds the receiver meshes along its rays; a view absent: that lookup is off.
 struct WaterSceneLookups {
     std::optional<fg::ImageHandle> reflection_view, refraction_view;
+    // The refraction view's second layer (passes/scene_views/scene_view.hpp): where the first layer's
+    // lookup finds nothing, or a surface the ray passes behind, the lookup is tried again in it.
+    std::optional<fg::ImageHandle> refraction_view_behind;
     SceneLookup reflection_method = SceneLookup::Projective, refraction_method = SceneLookup::Projective;
     int reflection_steps = 64, refraction_steps = 64;
     float scene_size = 100.0f;   // m: how far a screen-space march looks when no floor bounds it

@@ -8,9 +8,10 @@
 // leaves the receiver with its distance from the view's eye; the water adds the path.
 // Variants (shaders/CMakeLists.txt): VKWATER_PER_PIXEL_MEDIUM (the stencil split's mask),
 // VKWATER_CAUSTICS (the caustic map), VKWATER_MESH_BASE_COLOR (a mesh's albedo times its base
-// colour texture and its vertex colour, docs/model.md section 4) and VKWATER_CAUSTIC_LAYER (a
+// colour texture and its vertex colour, docs/model.md section 4), VKWATER_CAUSTIC_LAYER (a
 // second output: the sun's irradiance on the receiver under the water, 0 above it;
-// passes/caustics/caustic_layer.hpp).
+// passes/caustics/caustic_layer.hpp) and VKWATER_SCENE_VIEW_BEHIND (a view's second layer: only
+// what lies behind the first layer's surface, facing the eye).
 #include "common/medium.glsl"
 #include "receivers/floor_albedo.glsl"
 #include "receivers/receiver_push.glsl"
@@ -30,6 +31,11 @@ layout(set = 0, binding = 8) uniform sampler2D base_color_texture;
 layout(location = 3) in vec2 in_uv;
 layout(location = 4) in vec4 in_color;
 #endif
+#ifdef VKWATER_SCENE_VIEW_BEHIND
+// The same view's first layer, drawn before at the same size: texel for texel under this pass's
+// fragments.
+layout(set = 0, binding = 9) uniform sampler2D first_layer;
+#endif
 layout(location = 0) out vec4 out_radiance;
 #ifdef VKWATER_CAUSTIC_LAYER
 layout(location = 1) out vec4 out_caustic;
@@ -40,6 +46,15 @@ void main() {
     if (in_scene_view() && !kept_by_scene_view(p)) discard;
     vec3 eye = in_scene_view() ? scene_view_eye(scene_view_mirrored()) : frame.camera_position.xyz;
     vec3 normal = normalize(in_normal);
+#ifdef VKWATER_SCENE_VIEW_BEHIND
+    // Depth peeling: what the first layer shows, and anything within its thickness of it, is not
+    // in the second. A face turned away from the eye (the back of the receiver the first layer
+    // shows) is left out too, so that the layer shows what lies beyond that receiver. The meshes'
+    // normals point out of them (a terrain's up).
+    const float first = texelFetch(first_layer, ivec2(gl_FragCoord.xy), 0).a;
+    if (first > 0.0 && distance(eye, p) <= first * (1.0 + SCENE_VIEW_THICKNESS)) discard;
+    if (dot(normal, eye - p) < 0.0) discard;
+#endif
     // Lambertian surfaces are lit on the side the eye sees.
     if (dot(normal, eye - p) < 0.0) normal = -normal;
     // floor.vert's mark for a tiled floor (receivers/floor_albedo.glsl).

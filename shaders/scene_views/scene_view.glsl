@@ -13,6 +13,12 @@
 // Tangent of the view's half field of view over the camera's: the guard band.
 const float SCENE_VIEW_GUARD = 1.5;
 
+// The thickness given to what a view shows, as a fraction of its distance from the eye:
+// neighbouring texels of a surface seen at a slant differ by about this much. A lookup's ray
+// point this far behind a texel's distance has passed behind that surface; the second layer
+// keeps only what lies further than this behind the first.
+const float SCENE_VIEW_THICKNESS = 0.05;
+
 vec3 mirrored_in_water_plane(vec3 p) { return vec3(p.x, 2.0 * frame.water.x - p.y, p.z); }
 
 // The view's clip-space position of world point p. A mirrored view sees the mirror image

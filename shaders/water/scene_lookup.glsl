@@ -12,6 +12,10 @@
 //     texel), then bisect the last step.
 // Both return false where the view shows nothing along the ray or the ray leaves the view
 // (the guard band); the caller then keeps its exact lookups of the floor and the sky.
+// With the refraction view's second layer (REFRACTION_SECOND_LAYER), a refracted ray whose lookup
+// finds nothing, or a surface it passes behind (behind a receiver that floats through the surface,
+// behind a ridge), is marched again through the peeled view: the second layer where it shows
+// something, else the first.
 #ifndef VKWATER_SCENE_LOOKUP_GLSL
 #define VKWATER_SCENE_LOOKUP_GLSL
 
@@ -20,10 +24,15 @@
 // The camera's side of the surface (reflected rays) and the other side (refracted rays).
 layout(set = 0, binding = 8) uniform sampler2D reflection_view;
 layout(set = 0, binding = 9) uniform sampler2D refraction_view;
+// The refraction view's second layer (passes/scene_views/scene_view.hpp): what the first hides.
+layout(set = 0, binding = 13) uniform sampler2D refraction_view_behind;
 #ifdef VKWATER_CAUSTIC_LAYER
-// The refraction view's caustic layer: the sun's irradiance on the receiver each texel holds.
+// The refraction view's caustic layers: the sun's irradiance on the receiver each texel holds.
 layout(set = 0, binding = 10) uniform sampler2D refraction_view_caustic;
+layout(set = 0, binding = 14) uniform sampler2D refraction_view_behind_caustic;
 #endif
+// 1: refracted rays also look in the second layer (passes/water/water_shading.cpp).
+layout(constant_id = 8) const uint REFRACTION_SECOND_LAYER = 0u;
 
 const uint SCENE_LOOKUP_OFF = 0u;
 const uint SCENE_LOOKUP_PROJECTIVE = 1u;
@@ -34,15 +43,14 @@ const uint SCENE_LOOKUP_SCREEN_SPACE = 2u;
 const float SCENE_LOOKUP_TEXELS_PER_STEP = 4.0;
 // Bisection steps after the march: the hit to 2^-8 of the last step.
 const int SCENE_LOOKUP_BISECTIONS = 8;
-// The thickness the march gives what a view shows, as a fraction of its distance from
-// the eye: neighbouring texels of a surface seen at a slant differ by about this much.
-const float SCENE_LOOKUP_THICKNESS = 0.05;
 
 struct SceneHit {
     vec3 radiance;   // leaving the receiver toward the ray's origin
     float distance;  // from the ray's origin, m
     vec2 uv;         // the centre of the view's texel that holds it
+    bool peeled;     // found in the peeled refraction view
 };
+const SceneHit SCENE_NO_HIT = SceneHit(vec3(0.0), 0.0, vec2(0.0), false);
 
 // The view's texel under uv (nearest: the distances must not blend across edges), and
 // the uv of its centre.
@@ -53,34 +61,46 @@ vec4 scene_view_texel(sampler2D view, vec2 uv, out vec2 texel_uv) {
     return texelFetch(view, texel, 0);
 }
 
+// The refraction view with its nearest receivers peeled away: the second layer where it shows
+// something, else the first.
+vec4 peeled_texel(vec2 uv, out vec2 texel_uv) {
+    const vec4 behind = scene_view_texel(refraction_view_behind, uv, texel_uv);
+    return behind.a > 0.0 ? behind : scene_view_texel(refraction_view, uv, texel_uv);
+}
+
+// The texel of `view`, or of the peeled refraction view.
+vec4 view_texel(sampler2D view, bool peeled, vec2 uv, out vec2 texel_uv) {
+    return peeled ? peeled_texel(uv, texel_uv) : scene_view_texel(view, uv, texel_uv);
+}
+
 // The estimate to start from: what the view shows straight behind p, or, where it shows nothing
 // there, what it shows where the ray ends (max_distance along d). An object the ray reaches but
 // the view's ray through p misses (one floating in the water, seen through the surface, which
 // bends the rays toward it) is found from the second; with the first alone its image shrank to
 // where both rays meet it, and shifted toward where it would be without the water.
-bool projective_start(sampler2D view, bool mirrored, vec3 p, vec3 d, float max_distance, out float s) {
+bool projective_start(sampler2D view, bool peeled, bool mirrored, vec3 p, vec3 d, float max_distance, out float s) {
     s = 0.0;
     vec2 uv, texel_uv;
     if (!scene_view_uv(p, mirrored, uv)) return false;
-    vec4 texel = scene_view_texel(view, uv, texel_uv);
+    vec4 texel = view_texel(view, peeled, uv, texel_uv);
     if (texel.a > 0.0) {
         s = max(0.0, texel.a - distance(scene_view_eye(mirrored), p));
         return true;
     }
     if (!scene_view_uv(p + max_distance * d, mirrored, uv)) return false;
-    texel = scene_view_texel(view, uv, texel_uv);
+    texel = view_texel(view, peeled, uv, texel_uv);
     if (texel.a <= 0.0) return false;  // nothing on either: no estimate to start from
     s = max(0.0, dot(scene_view_point(texel_uv, texel.a, mirrored) - p, d));
     return true;
 }
 
-bool fixed_point_lookup(sampler2D view, bool mirrored, vec3 p, vec3 d, float max_distance, int max_steps,
+bool fixed_point_lookup(sampler2D view, bool peeled, bool mirrored, vec3 p, vec3 d, float max_distance, int max_steps,
                         out SceneHit hit) {
-    hit = SceneHit(vec3(0.0), 0.0, vec2(0.0));
+    hit = SCENE_NO_HIT;
     vec2 uv, texel_uv;
     vec4 texel = vec4(0.0);
     float s;
-    if (!projective_start(view, mirrored, p, d, max_distance, s)) return false;
+    if (!projective_start(view, peeled, mirrored, p, d, max_distance, s)) return false;
     // The previous step's texel, its centre and the estimate it gave, and the centre of the texel
     // two steps back. A ray that meets a receiver at a slant can alternate between two texels and
     // never converge (about a sixth of lake's refracted rays did, each running all max_steps
@@ -92,7 +112,7 @@ bool fixed_point_lookup(sampler2D view, bool mirrored, vec3 p, vec3 d, float max
     float previous_s = 0.0;
     for (int i = 0; i < max_steps; ++i) {
         if (!scene_view_uv(p + s * d, mirrored, uv)) return false;
-        texel = scene_view_texel(view, uv, texel_uv);
+        texel = view_texel(view, peeled, uv, texel_uv);
         if (texel.a <= 0.0) return false;
         float next = max(0.0, dot(scene_view_point(texel_uv, texel.a, mirrored) - p, d));
         bool converged = abs(next - s) <= 1e-4 * next;
@@ -110,7 +130,7 @@ bool fixed_point_lookup(sampler2D view, bool mirrored, vec3 p, vec3 d, float max
         s = next;
         if (converged) break;
     }
-    hit = SceneHit(texel.rgb, s, texel_uv);
+    hit = SceneHit(texel.rgb, s, texel_uv, peeled);
     return true;
 }
 
@@ -127,12 +147,12 @@ const int SCENE_LOOKUP_BRACKET_HALVINGS = 12;
 // meet the bed. The bracket is kept only where it closed on one surface: the texels either side of
 // it show that surface at about the same distance. Across a silhouette they do not (the far side
 // shows something farther, or nothing), and the hit, hidden in the view, is not known.
-bool bracketed_lookup(sampler2D view, bool mirrored, vec3 p, vec3 d, float max_distance, out SceneHit hit) {
-    hit = SceneHit(vec3(0.0), 0.0, vec2(0.0));
+bool bracketed_lookup(sampler2D view, bool peeled, bool mirrored, vec3 p, vec3 d, float max_distance, out SceneHit hit) {
+    hit = SCENE_NO_HIT;
     const vec3 eye = scene_view_eye(mirrored);
     vec2 uv, texel_uv;
     if (!scene_view_uv(p + max_distance * d, mirrored, uv)) return false;
-    vec4 texel = scene_view_texel(view, uv, texel_uv);
+    vec4 texel = view_texel(view, peeled, uv, texel_uv);
     if (!(texel.a > 0.0) || distance(eye, p + max_distance * d) < texel.a) return false;
     float front = 0.0, behind = max_distance;
     vec4 front_texel = vec4(0.0), behind_texel = texel;
@@ -141,7 +161,7 @@ bool bracketed_lookup(sampler2D view, bool mirrored, vec3 p, vec3 d, float max_d
         const float middle = 0.5 * (front + behind);
         const vec3 q = p + middle * d;
         if (!scene_view_uv(q, mirrored, uv)) return false;
-        texel = scene_view_texel(view, uv, texel_uv);
+        texel = view_texel(view, peeled, uv, texel_uv);
         if (texel.a > 0.0 && distance(eye, q) >= texel.a) {
             behind = middle;
             behind_texel = texel;
@@ -151,17 +171,17 @@ bool bracketed_lookup(sampler2D view, bool mirrored, vec3 p, vec3 d, float max_d
             front_texel = texel;
         }
     }
-    if (!(front_texel.a > 0.0) || abs(front_texel.a - behind_texel.a) > SCENE_LOOKUP_THICKNESS * behind_texel.a) {
+    if (!(front_texel.a > 0.0) || abs(front_texel.a - behind_texel.a) > SCENE_VIEW_THICKNESS * behind_texel.a) {
         return false;
     }
-    hit = SceneHit(behind_texel.rgb, behind, behind_uv);
+    hit = SceneHit(behind_texel.rgb, behind, behind_uv, peeled);
     return true;
 }
 
-bool projective_lookup(sampler2D view, bool mirrored, vec3 p, vec3 d, float max_distance, int max_steps,
+bool projective_lookup(sampler2D view, bool peeled, bool mirrored, vec3 p, vec3 d, float max_distance, int max_steps,
                        out SceneHit hit) {
-    return fixed_point_lookup(view, mirrored, p, d, max_distance, max_steps, hit) ||
-           bracketed_lookup(view, mirrored, p, d, max_distance, hit);
+    return fixed_point_lookup(view, peeled, mirrored, p, d, max_distance, max_steps, hit) ||
+           bracketed_lookup(view, peeled, mirrored, p, d, max_distance, hit);
 }
 
 // The length along d from h that moves h's image in the view by about
@@ -175,32 +195,39 @@ float screen_space_step(vec3 h, vec3 d, vec2 view_size) {
 }
 
 // max_distance: how far along the ray to look (the floor's distance, or the scene's size).
-bool screen_space_lookup(sampler2D view, vec3 p, vec3 d, float max_distance, int max_steps, out SceneHit hit) {
-    hit = SceneHit(vec3(0.0), 0.0, vec2(0.0));
+bool screen_space_lookup(sampler2D view, bool peeled, vec3 p, vec3 d, float max_distance, int max_steps, out SceneHit hit) {
+    hit = SCENE_NO_HIT;
     vec3 eye = frame.camera_position.xyz;
     vec2 view_size = vec2(textureSize(view, 0));
     float s = 0.0, previous = 0.0;
     vec2 uv, texel_uv;
     for (int i = 0; i <= max_steps && s <= max_distance; ++i) {
         if (!scene_view_uv(p + s * d, false, uv)) return false;
-        vec4 texel = scene_view_texel(view, uv, texel_uv);
+        vec4 texel = view_texel(view, peeled, uv, texel_uv);
         float ray_distance = distance(eye, p + s * d);
         float gap = texel.a - ray_distance;
         // Behind what the view shows, and by no more than the last step plus the
         // thickness objects are assumed to have: the ray went through that surface
         // (further behind, it passed behind an object: go on).
-        if (texel.a > 0.0 && gap <= 0.0 && -gap <= s - previous + SCENE_LOOKUP_THICKNESS * texel.a) {
+        if (texel.a > 0.0 && gap <= 0.0 && -gap <= s - previous + SCENE_VIEW_THICKNESS * texel.a) {
             float lo = previous, hi = s;
             for (int b = 0; b < SCENE_LOOKUP_BISECTIONS; ++b) {
                 float mid = 0.5 * (lo + hi);
                 scene_view_uv(p + mid * d, false, uv);
-                vec4 at_mid = scene_view_texel(view, uv, texel_uv);
+                vec4 at_mid = view_texel(view, peeled, uv, texel_uv);
                 bool behind = at_mid.a > 0.0 && distance(eye, p + mid * d) >= at_mid.a;
                 if (behind) hi = mid; else lo = mid;
             }
             scene_view_uv(p + hi * d, false, uv);
-            hit = SceneHit(scene_view_texel(view, uv, texel_uv).rgb, hi, texel_uv);
-            return true;
+            const vec4 at_hit = view_texel(view, peeled, uv, texel_uv);
+            // In the peeled view a step can enter a first-layer receiver's silhouette from empty
+            // texels while far behind that receiver; the halving then closes on the silhouette, not
+            // on a surface the ray meets, and the march goes on.
+            const bool on_surface = distance(eye, p + hi * d) <= at_hit.a * (1.0 + SCENE_VIEW_THICKNESS);
+            if (!peeled || on_surface) {
+                hit = SceneHit(at_hit.rgb, hi, texel_uv, peeled);
+                return true;
+            }
         }
         previous = s;
         // Steps of a few texels on screen; in front of a surface, no longer than the gap
@@ -212,18 +239,60 @@ bool screen_space_lookup(sampler2D view, vec3 p, vec3 d, float max_distance, int
     return false;
 }
 
-bool scene_lookup(uint method, bool reflected, vec3 p, vec3 d, float max_distance, int max_steps, out SceneHit hit) {
-    hit = SceneHit(vec3(0.0), 0.0, vec2(0.0));
+// Whether the refraction view's second layer shows something at the texel of uv.
+bool in_second_layer(vec2 uv) {
+    return texelFetch(refraction_view_behind, ivec2(uv * vec2(textureSize(refraction_view_behind, 0))), 0).a > 0.0;
+}
+
+// Whether a refracted ray's hit lies more than the views' thickness behind the surface its texel
+// shows: the ray passed behind that surface (under it, beyond it) and the hit is not what it meets.
+bool passes_behind(SceneHit hit, vec3 p, vec3 d) {
+    const float shown = texelFetch(refraction_view, ivec2(hit.uv * vec2(textureSize(refraction_view, 0))), 0).a;
+    return distance(frame.camera_position.xyz, p + hit.distance * d) > shown * (1.0 + SCENE_VIEW_THICKNESS);
+}
+
+// The lookup of `method` in `view` (or in the peeled refraction view).
+bool lookup_in(sampler2D view, bool peeled, uint method, bool mirrored, vec3 p, vec3 d, float max_distance,
+               int max_steps, out SceneHit hit) {
+    hit = SCENE_NO_HIT;
     if (method == SCENE_LOOKUP_PROJECTIVE) {
-        // Reflected rays read the mirrored view; refracted rays the camera's view of the other side.
-        return reflected ? projective_lookup(reflection_view, true, p, d, max_distance, max_steps, hit)
-                         : projective_lookup(refraction_view, false, p, d, max_distance, max_steps, hit);
+        return projective_lookup(view, peeled, mirrored, p, d, max_distance, max_steps, hit);
     }
-    if (method == SCENE_LOOKUP_SCREEN_SPACE) {
-        return reflected ? screen_space_lookup(reflection_view, p, d, max_distance, max_steps, hit)
-                         : screen_space_lookup(refraction_view, p, d, max_distance, max_steps, hit);
-    }
+    if (method == SCENE_LOOKUP_SCREEN_SPACE) return screen_space_lookup(view, peeled, p, d, max_distance, max_steps, hit);
     return false;
 }
+
+bool scene_lookup(uint method, bool reflected, vec3 p, vec3 d, float max_distance, int max_steps, out SceneHit hit) {
+    // Reflected rays read the reflection view (the mirrored one for the projective method); refracted
+    // rays the camera's view of the other side.
+    if (reflected) {
+        return lookup_in(reflection_view, false, method, method == SCENE_LOOKUP_PROJECTIVE, p, d, max_distance,
+                         max_steps, hit);
+    }
+    const bool found = lookup_in(refraction_view, false, method, false, p, d, max_distance, max_steps, hit);
+    if (REFRACTION_SECOND_LAYER == 0u || (found && !passes_behind(hit, p, d))) return found;
+    // The march, whatever the method: in the peeled view the ray passes behind the first layer's
+    // receivers where nothing lies behind them (the view falls back to the first layer there),
+    // which the projective method's estimates cannot pass, and the march steps over.
+    // Only what the second layer holds is taken: what the first holds, its lookup would have found
+    // (a march through the first layer alone meets false crossings where grazing rays pass under the
+    // far edge of a surface, within the thickness, which grows with the distance).
+    SceneHit peeled_hit;
+    if (!screen_space_lookup(refraction_view, true, p, d, max_distance, max_steps, peeled_hit) ||
+        !in_second_layer(peeled_hit.uv)) {
+        return found;
+    }
+    hit = peeled_hit;
+    return true;
+}
+
+#ifdef VKWATER_CAUSTIC_LAYER
+// The caustic layer's value on what a refracted ray's hit shows.
+vec3 refraction_view_caustic_at(SceneHit hit) {
+    const ivec2 texel = ivec2(hit.uv * vec2(textureSize(refraction_view_caustic, 0)));
+    return hit.peeled ? texelFetch(refraction_view_behind_caustic, texel, 0).rgb
+                      : texelFetch(refraction_view_caustic, texel, 0).rgb;
+}
+#endif
 
 #endif

@@ -31,7 +31,8 @@ const uint SURFACE_FRESNEL_EXACT = 0u;
 const uint SURFACE_FRESNEL_SCHLICK = 1u;
 const uint SURFACE_FRESNEL_POWER = 2u;
 // Specialization constants (passes/water/water_shading.cpp); constants 0 and 1 are the wave
-// model's and the mesh's (water/surface_refinement.glsl). As constants, the paths a scene does
+// model's and the mesh's (water/surface_refinement.glsl), 8 the refraction view's second layer
+// (water/scene_lookup.glsl). As constants, the paths a scene does
 // not take are compiled out instead of run masked.
 layout(constant_id = 2) const uint FRESNEL_MODEL = SURFACE_FRESNEL_EXACT;  // effects.water.fresnel
 layout(constant_id = 3) const uint DEPTH_BLEND = 0u;        // 1: Optical Phenomena c. 2008's depth colour
@@ -65,11 +66,12 @@ const float SCREEN_SPACE_FRESNEL_SKIP = 0.01;
 
 // The receiver mesh a reflected (or refracted) ray from p meets before `limit`, if any;
 // `weight` is the ray's Fresnel weight (R or T).
+// `object_caustic`: the caustic layer's value on it (refracted rays with VKWATER_CAUSTIC_LAYER; else 0).
 bool object_along(bool reflected, vec3 p, vec3 d, float limit, float weight, out vec3 radiance,
-                  out float distance_to_object, out vec2 object_uv) {
+                  out float distance_to_object, out vec3 object_caustic) {
     radiance = vec3(0.0);
     distance_to_object = 0.0;
-    object_uv = vec2(0.0);
+    object_caustic = vec3(0.0);
 #ifdef VKWATER_SCENE_VIEWS
     // The views keep the sides of the frame's camera medium; pixels whose ray starts on
     // the other side (the camera crossing the surface) keep the exact lookups alone.
@@ -81,7 +83,9 @@ bool object_along(bool reflected, vec3 p, vec3 d, float limit, float weight, out
     if (scene_lookup(method, reflected, p, d, limit, steps, hit) && hit.distance < limit) {
         radiance = hit.radiance;
         distance_to_object = hit.distance;
-        object_uv = hit.uv;
+#ifdef VKWATER_CAUSTIC_LAYER
+        if (!reflected) object_caustic = refraction_view_caustic_at(hit);
+#endif
         return true;
     }
 #endif
@@ -111,16 +115,12 @@ vec3 radiance_in_water(vec3 p, vec3 d, bool reflected, float weight, out float l
     const float to_bottom = WATER_INFINITE ? run_to_water_bottom(p, d, params.bottom_y, params.far_field) : 0.0;
     vec3 object;
     float distance_to_object;
-    vec2 object_uv;
+    vec3 object_caustic;
     if (object_along(reflected, p, d, floor_hit ? length_in_water : params.scene_size, weight, object,
-                     distance_to_object, object_uv)) {
+                     distance_to_object, object_caustic)) {
         behind = object;
         length_in_water = distance_to_object;
-#if defined(VKWATER_CAUSTIC_LAYER) && defined(VKWATER_SCENE_VIEWS)
-        caustic = reflected ? vec3(0.0)
-                            : texelFetch(refraction_view_caustic,
-                                         ivec2(object_uv * vec2(textureSize(refraction_view_caustic, 0))), 0).rgb;
-#endif
+        caustic = object_caustic;
     }
     if (DEPTH_BLEND != 0u && !reflected) {
         // Optical Phenomena c. 2008's depth colour in place of the medium along the refracted ray: what the ray
@@ -140,8 +140,8 @@ vec3 radiance_in_water(vec3 p, vec3 d, bool reflected, float weight, out float l
 vec3 radiance_in_air_along(vec3 p, vec3 d, float weight, bool with_sun_disk, out bool met_object) {
     vec3 object;
     float distance_to_object;
-    vec2 object_uv;
-    met_object = object_along(true, p, d, params.scene_size, weight, object, distance_to_object, object_uv);
+    vec3 object_caustic;
+    met_object = object_along(true, p, d, params.scene_size, weight, object, distance_to_object, object_caustic);
     if (met_object) return object;
     return with_sun_disk ? sky_radiance(d) : sky_base_radiance(d);
 }
@@ -235,8 +235,8 @@ void main() {
         vec3 above = glitter ? sky_base_radiance(to_air) : sky_radiance(to_air);
         vec3 object;
         float distance_to_object;
-        vec2 object_uv;
-        met_object = object_along(false, p, to_air, params.scene_size, f.T, object, distance_to_object, object_uv);
+        vec3 object_caustic;
+        met_object = object_along(false, p, to_air, params.scene_size, f.T, object, distance_to_object, object_caustic);
         if (met_object) above = object;
         at_surface += f.T * n * n * above;
     }

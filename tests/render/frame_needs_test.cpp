@@ -84,6 +84,32 @@ TEST(frame_needs, NoWaterNoWaterEffects) {
     EXPECT_FALSE(decision(needs, Effect::UnderwaterView).needed);
 }
 
+TEST(frame_needs, TheSecondLayerOfTheRefractionViewWhereOneReceiverCanHideAnother) {
+    const std::string camera = R"("position": [0, 2, 5], "target": [0, 0, 0])";
+    const std::string sphere = R"({"type": "sphere", "radius": 0.3, "translation": [0, -1, 0]})";
+    const std::string box = R"({"type": "box", "half_size": [0.3, 0.3, 0.3], "translation": [1, -1, 0]})";
+    const std::string terrain = R"({"type": "terrain", "size": 4, "resolution": 8, "height": 0.5, "seed": 1,
+                                    "translation": [0, -1.5, 0]})";
+    const auto second_layer = [&](const std::string& receivers) {
+        return decision(decide_frame_needs(scene_with(camera, {"receivers=[" + receivers + "]"}), 1.0),
+                        Effect::RefractionSecondLayer);
+    };
+    const fg::EffectDecision alone = second_layer(sphere);
+    EXPECT_FALSE(alone.needed);
+    EXPECT_NE(alone.reason.find("only its own back"), std::string::npos) << alone.reason;
+    const fg::EffectDecision two = second_layer(sphere + ", " + box);
+    EXPECT_TRUE(two.needed);
+    EXPECT_NE(two.reason.find("2 receiver meshes"), std::string::npos) << two.reason;
+    const fg::EffectDecision hills = second_layer(terrain);
+    EXPECT_TRUE(hills.needed);
+    EXPECT_NE(hills.reason.find("not convex"), std::string::npos) << hills.reason;
+    // Both above the water, the camera above: no refraction view to peel.
+    const fg::EffectDecision dry = second_layer(
+        R"({"type": "sphere", "radius": 0.3, "translation": [0, 1, 0]}, {"type": "sphere", "radius": 0.3, "translation": [1, 1, 0]})");
+    EXPECT_FALSE(dry.needed);
+    EXPECT_NE(dry.reason.find("not drawn"), std::string::npos) << dry.reason;
+}
+
 TEST(frame_needs, WaterBoundsHoldTheCrestsAndTheBottom) {
     const WaterBounds bounds = water_bounds(scene_with(R"("position": [0, 2, 5], "target": [0, 0, 0])"));
     EXPECT_DOUBLE_EQ(bounds.hi.y, 0.1);

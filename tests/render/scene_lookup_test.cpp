@@ -5,6 +5,7 @@
 // the reflection and through the surface). Plus the needs rules (culled = forced-on) and
 // finite output with the camera grazing the surface and under it.
 #include "engine/scene/scene_loader.hpp"
+#include "passes/frame/frame_needs.hpp"
 #include "passes/frame/renderer.hpp"
 #include "tests/support/gpu_test.hpp"
 #include "tools/metrics/metrics.hpp"
@@ -24,9 +25,10 @@ constexpr int kHeight = 120;
 
 // scenes/box.json: the box stands from y = -1.6 to 0.4 through flat water (level 0), the
 // floor 2 m down; with the camera and effects replaced.
-Scene box_in_calm_water(const std::string& camera, const std::string& effects) {
-    return load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes" / "box.json",
-                      {"camera=" + camera, "effects=" + effects});
+Scene box_in_calm_water(const std::string& camera, const std::string& effects, const std::string& more = {}) {
+    std::vector<std::string> overrides = {"camera=" + camera, "effects=" + effects};
+    if (!more.empty()) overrides.push_back(more);
+    return load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes" / "box.json", overrides);
 }
 
 const char* kCameraAbove = R"({"position": [0.8, 2.2, 2.6], "target": [0, -0.8, 0], "fov_y_deg": 60})";
@@ -198,6 +200,39 @@ TEST_F(SceneLookupGrazing, ASlabUnderTheWaterSeenAtAGrazingAngleShowsWholeThroug
                 reference_red, real_time_red / reference_red, bound / reference_red);
 }
 
+// A green box floats through the flat water (from 0.3 m below the surface to 0.3 m above, 2 m
+// long toward the camera's view) and hides a red tile 1.4 m down behind it: the red channel is the
+// tile alone. The box's top hides the water just behind it and its submerged part hides the tile
+// from the camera, but the refracted rays from the water the camera sees beyond the box bend down
+// onto the tile. The refraction view's first layer holds the box there, its second layer the tile
+// (passes/scene_views/scene_view.hpp).
+Scene tile_behind_a_floating_box(const std::string& effects) {
+    return load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes" / "box.json",
+                      {R"(camera={"position": [0, 2.5, 6], "target": [0, -0.6, -2], "fov_y_deg": 22})",
+                       "effects=" + effects, "sun.elevation_deg=40", "sun.azimuth_deg=0",
+                       R"(receivers=[{"type": "box", "half_size": [0.6, 0.3, 1.0], "albedo": [0, 1, 0]},
+                                     {"type": "box", "half_size": [0.5, 0.1, 0.5], "translation": [0, -1.5, -3.7],
+                                      "albedo": [1, 0, 0]}])"});
+}
+
+TEST_P(SceneLookupEdges, TheTileAFloatingBoxHidesIsSeenBehindItThroughTheSurface) {
+    const std::string method = GetParam().effects;
+    const std::string with_layer =
+        method.substr(0, method.size() - 1) + R"(, "refraction_second_layer": {"mode": "on"}})";
+    const std::string without_layer =
+        method.substr(0, method.size() - 1) + R"(, "refraction_second_layer": {"mode": "off"}})";
+    const AgainstRayTrace run = render_against_ray_trace(context(), tile_behind_a_floating_box(with_layer));
+    EXPECT_EQ(run.report.far_from_edges, 0)
+        << GetParam().name << ": " << run.report.mismatched << " pixels differ, " << run.report.far_from_edges
+        << " of them away from edges:" << run.report.examples;
+    // Without the second layer the tile is missing (the test can see the layer): 48 pixels away from
+    // edges at this size (measured); half of it is a safe floor.
+    const AgainstRayTrace first_only = render_against_ray_trace(context(), tile_behind_a_floating_box(without_layer));
+    EXPECT_GT(first_only.report.far_from_edges, 20) << GetParam().name << ": the hidden slab should be missing";
+    std::printf("[ figures  ] %s: %d pixels away from edges without the second layer, %d with it\n", GetParam().name,
+                first_only.report.far_from_edges, run.report.far_from_edges);
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Methods, SceneLookupEdges,
     ::testing::Values(
@@ -286,6 +321,21 @@ TEST_F(SceneLookupRules, CulledReflectionEqualsForcedOn) {
     const RenderResult forced =
         renderer.render(sphere_scene(-1.0, R"({"reflection": {"mode": "on"}})"), {64, 48, true, fg::TimingMode::None});
     EXPECT_GT(renderer.pipelines().size(), pipelines) << "forcing the reflection on created no view pipeline";
+    EXPECT_EQ(culled.image.rgba, forced.image.rgba);
+}
+
+TEST_F(SceneLookupRules, CulledSecondLayerEqualsForcedOn) {
+    // One convex box on the refracted rays' side hides only its own back: the second layer holds
+    // nothing, and every lookup ends as it does without it.
+    Renderer renderer(context());
+    const Scene culled_scene = box_in_calm_water(kCameraAbove, "{}");
+    ASSERT_FALSE(decide_frame_needs(culled_scene, 64.0 / 48.0).needs(Effect::RefractionSecondLayer));
+    const RenderResult culled = renderer.render(culled_scene, {64, 48, true, fg::TimingMode::None});
+    const size_t pipelines = renderer.pipelines().size();
+    const RenderResult forced =
+        renderer.render(box_in_calm_water(kCameraAbove, R"({"refraction_second_layer": {"mode": "on"}})"),
+                        {64, 48, true, fg::TimingMode::None});
+    EXPECT_GT(renderer.pipelines().size(), pipelines) << "forcing the second layer on created no pipeline";
     EXPECT_EQ(culled.image.rgba, forced.image.rgba);
 }
 
