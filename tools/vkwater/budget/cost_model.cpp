@@ -37,6 +37,7 @@ const std::vector<KnownPass>& known_passes() {
         {"floor", {{{D::Pixels, 5.0}}}},
         {"receivers", {{{D::Pixels, 40.0}}}},
         {"refraction view", {{{D::Pixels, 50.0}}}},
+        {"refraction view second layer", {{{D::Pixels, 50.0}}}},
         {"mirrored reflection view", {{{D::Pixels, 50.0}}}},
         {"calibration", {{{D::Pixels, 2.0}}}},
         {"water surface (wave sum)", {{{D::SurfaceVertices, 20.0}}}},
