@@ -181,7 +181,8 @@ const std::vector<BadScene> kBadScenes = {
     {"effect_mode_unknown.json", {"effects.caustics.mode: unknown value \"maybe\" (accepted: one of auto, on, off)"}},
     {"effect_name_typo.json",
      {"effects.caustic: unknown field (did you mean 'caustics'?)",
-      "(accepted: water, underwater_view, reflection, refraction, caustics, godrays, caustic_blur)"}},
+      "(accepted: water, underwater_view, reflection, refraction, refraction_second_layer, caustics, godrays, "
+      "caustic_blur)"}},
 };
 
 class scene_bad_file : public ::testing::TestWithParam<BadScene> {};
