@@ -64,12 +64,19 @@ struct ReceiverSpan {
     bool any = false;
     double lowest = 1e300, highest = -1e300;
 };
+// Whether the receiver's box overlaps the water's horizontal extent.
+bool over_water(const Receiver& receiver, const WaterBounds& bounds) {
+    const glm::dvec3& lo = receiver.mesh.bounds_min;
+    const glm::dvec3& hi = receiver.mesh.bounds_max;
+    return !(hi.x < bounds.lo.x || lo.x > bounds.hi.x || hi.z < bounds.lo.z || lo.z > bounds.hi.z);
+}
+
 ReceiverSpan receivers_over_water(const Scene& scene, const WaterBounds& bounds) {
     ReceiverSpan span;
     for (const Receiver& receiver : scene.receivers) {
+        if (!over_water(receiver, bounds)) continue;
         const glm::dvec3& lo = receiver.mesh.bounds_min;
         const glm::dvec3& hi = receiver.mesh.bounds_max;
-        if (hi.x < bounds.lo.x || lo.x > bounds.hi.x || hi.z < bounds.lo.z || lo.z > bounds.hi.z) continue;
         span.any = true;
         span.lowest = std::min(span.lowest, lo.y);
         span.highest = std::max(span.highest, hi.y);
@@ -83,22 +90,19 @@ ReceiverSpan receivers_over_water(const Scene& scene, const WaterBounds& bounds)
 // cannot see; the first layer holds only what it sees. Something can be hidden only where the
 // refracted rays' side holds two receiver meshes, or one that is not convex (a terrain, a glTF
 // mesh): a convex mesh alone hides only its own back, which no ray from outside meets first.
-void decide_refraction_second_layer(fg::FrameNeeds& needs, const Scene& scene, const WaterBounds& bounds,
+void decide_refraction_second_layer(fg::FrameNeeds& needs, const Scene& scene, const WaterBounds& bounds, double trough,
                                     bool camera_may_be_above, bool camera_may_be_below) {
     const fg::EffectDecision* refraction = needs.find(Effect::Refraction);
     if (!refraction || !refraction->needed) {
         return decide(needs, scene, Effect::RefractionSecondLayer, false, "the refraction view is not drawn");
     }
-    const double trough = 2.0 * scene.water->level - bounds.hi.y;
     int meshes = 0;
     bool not_convex = false;
     for (const Receiver& receiver : scene.receivers) {
-        const glm::dvec3& lo = receiver.mesh.bounds_min;
-        const glm::dvec3& hi = receiver.mesh.bounds_max;
-        if (hi.x < bounds.lo.x || lo.x > bounds.hi.x || hi.z < bounds.lo.z || lo.z > bounds.hi.z) continue;
+        if (!over_water(receiver, bounds)) continue;
         // The refracted rays' side: under the crests for a camera above, over the troughs for one below.
-        const bool on_refracted_side =
-            (camera_may_be_above && lo.y < bounds.hi.y) || (camera_may_be_below && hi.y > trough);
+        const bool on_refracted_side = (camera_may_be_above && receiver.mesh.bounds_min.y < bounds.hi.y) ||
+                                       (camera_may_be_below && receiver.mesh.bounds_max.y > trough);
         if (!on_refracted_side) continue;
         ++meshes;
         not_convex = not_convex || receiver.type == ReceiverType::Terrain || receiver.type == ReceiverType::Gltf;
@@ -141,7 +145,7 @@ void decide_scene_lookups(fg::FrameNeeds& needs, const Scene& scene, const Water
            !water_visible ? "the water is not in view"
            : refraction   ? sides + "; " + objects + ": some lie on the refracted rays' side"
                           : sides + "; " + objects + ": nothing but the floor and sky on the refracted rays' side");
-    decide_refraction_second_layer(needs, scene, bounds, camera_may_be_above, camera_may_be_below);
+    decide_refraction_second_layer(needs, scene, bounds, trough, camera_may_be_above, camera_may_be_below);
 }
 
 // Godrays (volume caustics): the sun's refracted beams scattered toward the camera, as lines

@@ -48,9 +48,10 @@ struct SceneHit {
     vec3 radiance;   // leaving the receiver toward the ray's origin
     float distance;  // from the ray's origin, m
     vec2 uv;         // the centre of the view's texel that holds it
+    float shown;     // that texel's distance from the view's eye, m
     bool peeled;     // found in the peeled refraction view
 };
-const SceneHit SCENE_NO_HIT = SceneHit(vec3(0.0), 0.0, vec2(0.0), false);
+const SceneHit SCENE_NO_HIT = SceneHit(vec3(0.0), 0.0, vec2(0.0), 0.0, false);
 
 // The view's texel under uv (nearest: the distances must not blend across edges), and
 // the uv of its centre.
@@ -130,7 +131,7 @@ bool fixed_point_lookup(sampler2D view, bool peeled, bool mirrored, vec3 p, vec3
         s = next;
         if (converged) break;
     }
-    hit = SceneHit(texel.rgb, s, texel_uv, peeled);
+    hit = SceneHit(texel.rgb, s, texel_uv, texel.a, peeled);
     return true;
 }
 
@@ -174,7 +175,7 @@ bool bracketed_lookup(sampler2D view, bool peeled, bool mirrored, vec3 p, vec3 d
     if (!(front_texel.a > 0.0) || abs(front_texel.a - behind_texel.a) > SCENE_VIEW_THICKNESS * behind_texel.a) {
         return false;
     }
-    hit = SceneHit(behind_texel.rgb, behind, behind_uv, peeled);
+    hit = SceneHit(behind_texel.rgb, behind, behind_uv, behind_texel.a, peeled);
     return true;
 }
 
@@ -225,7 +226,7 @@ bool screen_space_lookup(sampler2D view, bool peeled, vec3 p, vec3 d, float max_
             // on a surface the ray meets, and the march goes on.
             const bool on_surface = distance(eye, p + hi * d) <= at_hit.a * (1.0 + SCENE_VIEW_THICKNESS);
             if (!peeled || on_surface) {
-                hit = SceneHit(at_hit.rgb, hi, texel_uv, peeled);
+                hit = SceneHit(at_hit.rgb, hi, texel_uv, at_hit.a, peeled);
                 return true;
             }
         }
@@ -247,8 +248,7 @@ bool in_second_layer(vec2 uv) {
 // Whether a refracted ray's hit lies more than the views' thickness behind the surface its texel
 // shows: the ray passed behind that surface (under it, beyond it) and the hit is not what it meets.
 bool passes_behind(SceneHit hit, vec3 p, vec3 d) {
-    const float shown = texelFetch(refraction_view, ivec2(hit.uv * vec2(textureSize(refraction_view, 0))), 0).a;
-    return distance(frame.camera_position.xyz, p + hit.distance * d) > shown * (1.0 + SCENE_VIEW_THICKNESS);
+    return distance(frame.camera_position.xyz, p + hit.distance * d) > hit.shown * (1.0 + SCENE_VIEW_THICKNESS);
 }
 
 // The lookup of `method` in `view` (or in the peeled refraction view).
