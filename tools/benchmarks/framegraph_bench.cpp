@@ -21,12 +21,18 @@
 #include <cstdio>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace vkw;
 using Clock = std::chrono::steady_clock;
 
 namespace {
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
 
 double median_ms(int runs, const std::function<void()>& work) {
     std::vector<double> times;
@@ -35,8 +41,7 @@ double median_ms(int runs, const std::function<void()>& work) {
         work();
         times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
     }
-    std::sort(times.begin(), times.end());
-    return times[times.size() / 2];
+    return median(std::move(times));
 }
 
 // 30 passes: 10 rounds of (compute writes a buffer, compute writes an image from it,
@@ -273,9 +278,7 @@ int main() {
             renderer.render(pool_scene, {64, 48, false, fg::TimingMode::Fences});
             if (frame >= 5) times.push_back(renderer.last_declare_ms());
         }
-        std::sort(times.begin(), times.end());
-        std::printf("| pool through the renderer: needs, declaration, compilation | %.3f ms |\n",
-                    times[times.size() / 2]);
+        std::printf("| pool through the renderer: needs, declaration, compilation | %.3f ms |\n", median(times));
         // Whether the renderer's figure is the caches or the code: pool's needs, declaration and
         // compilation timed right after an 800x600 frame that llvmpipe's threads rendered, then the
         // same again at once, in the same process.
@@ -286,11 +289,9 @@ int main() {
             after_frame.push_back(median_ms(1, [&] { declare_pool(true); }));
             again.push_back(median_ms(1, [&] { declare_pool(true); }));
         }
-        std::sort(after_frame.begin(), after_frame.end());
-        std::sort(again.begin(), again.end());
         std::printf("| pool's needs, declaration, compilation right after an 800x600 frame | %.3f ms |\n",
-                    after_frame[after_frame.size() / 2]);
-        std::printf("| the same again at once | %.3f ms |\n", again[again.size() / 2]);
+                    median(after_frame));
+        std::printf("| the same again at once | %.3f ms |\n", median(again));
     }
     vkDestroyCommandPool(context.device(), pool, nullptr);
     return 0;
