@@ -21,6 +21,8 @@ struct AliasPlan {
     // For each request, the earlier requests whose memory it reuses: its first use
     // must wait for their last use.
     std::vector<std::vector<uint32_t>> predecessors;
+
+    bool operator==(const AliasPlan&) const = default;
 };
 
 // Greedy placement, largest first: each resource goes to the lowest aligned offset

@@ -163,7 +163,11 @@ bool FrameExecutor::can_adopt(const FrameGraph& graph, const ExecutorOptions& op
 
 void FrameExecutor::adopt(FrameGraph& graph) {
     graph_ = &graph;
-    // The same memory plan, so the new graph's aliasing barriers are the ones recorded before.
+    // The same memory plan, so the new graph's aliasing barriers are the ones recorded before. A
+    // compilation taken over from the graph this executor ran (FrameGraph::compile) carries them
+    // already: compile() and apply_aliasing() both end with the barriers of the plan they hold.
+    const CompiledGraph& compiled = graph.compiled();
+    if (compiled.aliasing == alias_plan_ && compiled.aliased_resources == aliased_) return;
     graph_->apply_aliasing(alias_plan_, aliased_);
 }
 

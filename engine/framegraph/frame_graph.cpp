@@ -266,7 +266,37 @@ const CompiledGraph& FrameGraph::compiled() const {
     return *compiled_;
 }
 
-const CompiledGraph& FrameGraph::compile(uint32_t output_width, uint32_t output_height) {
+std::string FrameGraph::culled_reason(uint32_t pass_index) const {
+    const PassDecl& pass = passes_[pass_index];
+    if (pass.serves && !needs_.needs(*pass.serves)) {
+        const EffectDecision* decision = needs_.find(*pass.serves);
+        return std::string("effect '") + decision->effect.name + "' not needed" +
+               (decision->forced ? " (forced off)" : "") + ": " + decision->reason;
+    }
+    std::string outputs;
+    for (const ResourceUse& use : pass.uses) {
+        if (use.version_written == use.version_read) continue;
+        outputs += (outputs.empty() ? "'" : ", '") + resources_[use.resource].name + "'";
+    }
+    return outputs.empty() ? "writes nothing and has no side effect"
+                           : "no living pass or requested output uses what it writes (" + outputs + ")";
+}
+
+const CompiledGraph& FrameGraph::compile(uint32_t output_width, uint32_t output_height, FrameGraph* previous) {
+    took_over_ = previous && previous->compiled_ && previous->compiled_->output_width == output_width &&
+                 previous->compiled_->output_height == output_height && compiles_like(*previous);
+    if (took_over_) {
+        compiled_ = std::move(previous->compiled_);
+        previous->compiled_.reset();
+        // The reasons name the needs' own words, which may change while the decisions stand.
+        compiled_->culled.clear();
+        std::vector<bool> living(passes_.size(), false);
+        for (uint32_t p : compiled_->order) living[p] = true;
+        for (uint32_t p = 0; p < passes_.size(); ++p) {
+            if (!living[p]) compiled_->culled.push_back({passes_[p].name, culled_reason(p)});
+        }
+        return *compiled_;
+    }
     CompiledGraph result;
     result.output_width = output_width;
     result.output_height = output_height;
@@ -317,23 +347,7 @@ const CompiledGraph& FrameGraph::compile(uint32_t output_width, uint32_t output_
     }
 
     for (uint32_t p = 0; p < passes_.size(); ++p) {
-        if (!dag.is_culled(p)) continue;
-        const PassDecl& pass = passes_[p];
-        std::string reason;
-        if (pass.serves && !needs_.needs(*pass.serves)) {
-            const EffectDecision* decision = needs_.find(*pass.serves);
-            reason = std::string("effect '") + decision->effect.name + "' not needed" +
-                     (decision->forced ? " (forced off)" : "") + ": " + decision->reason;
-        } else {
-            std::string outputs;
-            for (const ResourceUse& use : pass.uses) {
-                if (use.version_written == use.version_read) continue;
-                outputs += (outputs.empty() ? "'" : ", '") + resources_[use.resource].name + "'";
-            }
-            reason = outputs.empty() ? "writes nothing and has no side effect"
-                                     : "no living pass or requested output uses what it writes (" + outputs + ")";
-        }
-        result.culled.push_back({pass.name, reason});
+        if (dag.is_culled(p)) result.culled.push_back({passes_[p].name, culled_reason(p)});
     }
 
     // Execution order is the declaration order of the living passes. Versioned handles

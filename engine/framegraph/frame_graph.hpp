@@ -242,7 +242,18 @@ public:
     const FrameNeeds& needs() const { return needs_; }
 
     // Culling, ordering, lifetimes, barriers and an aliasing estimate. Pure: no GPU.
-    const CompiledGraph& compile(uint32_t output_width, uint32_t output_height);
+    // `previous` (optional): the last frame's graph. Where it was compiled at the same size and
+    // compiles_like this one, its result is taken over (moved: `previous` is left uncompiled)
+    // instead of derived again, with only the culled passes' reasons written anew. A running clock
+    // or a moved slider changes what the passes capture, not what they declare, so most frames
+    // take this path. The result taken over is the one `previous` ended with: if an executor
+    // applied its memory plan to it (FrameExecutor::adopt), the plan comes with it.
+    const CompiledGraph& compile(uint32_t output_width, uint32_t output_height, FrameGraph* previous = nullptr);
+    // Whether the last compile() took its result over from `previous`.
+    bool took_over_compilation() const { return took_over_; }
+    // Whether compile() would derive the same graph from this declaration as from `other`'s
+    // (same_declaration.cpp says what that compares).
+    bool compiles_like(const FrameGraph& other) const;
     const CompiledGraph& compiled() const;
     bool is_compiled() const { return compiled_.has_value(); }
 
@@ -278,6 +289,8 @@ private:
     void check_current(uint32_t pass, uint32_t resource, uint32_t version, const char* verb) const;
     void check_requestable(uint32_t resource, uint32_t version) const;
     std::vector<ResourceTimeline> build_timelines(const std::vector<uint32_t>& order) const;
+    // Why pass `pass`, which compile() culled, does not run.
+    std::string culled_reason(uint32_t pass) const;
 
     FrameNeeds needs_;
     std::vector<PassDecl> passes_;
@@ -286,6 +299,7 @@ private:
     Blackboard blackboard_;
     RecordingKind default_recording_ = RecordingKind::DynamicRendering;
     std::optional<CompiledGraph> compiled_;
+    bool took_over_ = false;
 };
 
 }  // namespace vkw::fg

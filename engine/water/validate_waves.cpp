@@ -38,17 +38,25 @@ void require_finite(const std::string& field, double value, const std::string& a
     require(true, field, value, accepted);
 }
 
+// The same for component `index`'s field `name`. The field's text is made only for the error:
+// the renderer builds its surfaces several times a frame, and valid components must cost no
+// allocation.
+void require_component(bool ok, std::size_t index, const char* name, double value, const char* accepted) {
+    if (!std::isfinite(value) || !ok) {
+        refuse(wave_field(index, name), value, accepted);
+    }
+}
+
 void validate_components(const WaveSettings& settings) {
     double steepness_sum = 0.0;
     for (std::size_t i = 0; i < settings.components.size(); ++i) {
         const WaveComponent& w = settings.components[i];
-        require(w.amplitude >= 0.0, wave_field(i, "amplitude"), w.amplitude, "value >= 0 m");
-        require(w.wavelength > 0.0, wave_field(i, "wavelength"), w.wavelength, "value > 0 m");
-        require_finite(wave_field(i, "direction_deg"), w.direction_deg, "any finite value (degrees)");
-        require_finite(wave_field(i, "phase_deg"), w.phase_deg, "any finite value (degrees)");
-        require_finite(wave_field(i, "speed"), w.speed,
-                       "any finite value (m/s; < 0: deep-water dispersion sqrt(g / k))");
-        require(w.steepness >= 0.0, wave_field(i, "steepness"), w.steepness, "value >= 0 (0: sine; > 0: Gerstner)");
+        require_component(w.amplitude >= 0.0, i, "amplitude", w.amplitude, "value >= 0 m");
+        require_component(w.wavelength > 0.0, i, "wavelength", w.wavelength, "value > 0 m");
+        require_component(true, i, "direction_deg", w.direction_deg, "any finite value (degrees)");
+        require_component(true, i, "phase_deg", w.phase_deg, "any finite value (degrees)");
+        require_component(true, i, "speed", w.speed, "any finite value (m/s; < 0: deep-water dispersion sqrt(g / k))");
+        require_component(w.steepness >= 0.0, i, "steepness", w.steepness, "value >= 0 (0: sine; > 0: Gerstner)");
         steepness_sum += w.steepness;
         if (!settings.allow_folding && steepness_folds(steepness_sum)) {
             throw UserError(wave_field(i, "steepness") + " = " + number(w.steepness) +
@@ -77,10 +85,12 @@ void validate_ocean(const FftOceanSettings& ocean) {
     require(ocean.choppiness >= 0.0, "water.waves.choppiness", ocean.choppiness, "value >= 0");
 }
 
+void validate_wave_components(const WaveSettings& settings) { validate_components(settings); }
+
 void validate_waves(const WaveSettings& settings) {
     switch (settings.model) {
         case WaveModel::Flat: return;
-        case WaveModel::Sum: validate_components(settings); return;
+        case WaveModel::Sum: validate_wave_components(settings); return;
         case WaveModel::FftOcean: validate_ocean(settings.ocean); return;
     }
 }

@@ -18,6 +18,9 @@ namespace vkw {
 // For WaveModel::FftOcean: validate_ocean. WaveModel::Flat has nothing to check.
 void validate_waves(const WaveSettings& settings);
 
+// The WaveModel::Sum checks of validate_waves on `settings.components`, whatever its model.
+void validate_wave_components(const WaveSettings& settings);
+
 // resolution a power of two in [16, 1024]; patch_size > 0 m; wind_speed > 0 m/s;
 // wind_direction_deg finite; fetch > 0 m; amplitude_scale >= 0; choppiness >= 0.
 // (A large choppiness folds the ocean; that is not checked: it depends on the realisation.)

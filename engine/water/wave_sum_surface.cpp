@@ -11,23 +11,16 @@
 
 namespace vkw {
 
-WaveSumSurface::WaveSumSurface(const WaveSettings& settings, double level, double time) : level_(level) {
-    WaveSettings as_sum = settings;
-    as_sum.model = WaveModel::Sum;
-    validate_waves(as_sum);
-    waves_.reserve(settings.components.size());
-    double steepness = 0.0;
-    for (const WaveComponent& c : settings.components) {
-        waves_.push_back(wave_terms(c, time));
-        amplitude_sum_ += c.amplitude;
-        steepness += c.steepness;
-        heightfield_ = heightfield_ && c.steepness == 0.0;
-    }
-    // G from directions u every 2 pi / K: between two of them sum A k |d . u| changes by at most
-    // (pi / K) sum A k, which is added.
+namespace {
+
+// G = max over unit u of sum A k |d . u|, from directions u every 2 pi / K: between two of them
+// sum A k |d . u| changes by at most (pi / K) sum A k, which is added.
+double height_gradient_bound(const std::vector<WaveTerms>& waves) {
     constexpr int kDirections = 720;
-    // The directions once per process: a frame builds its surface several times (its needs,
-    // its bounds), and 720 sines and cosines were most of that.
+    // The directions once per process, and the last waves' bound once per thread: the renderer
+    // builds the same waves' surface several times a frame (its needs, its bounds), each at a
+    // new time, and the search was most of that. The bound reads only the amplitudes and the
+    // wave vectors, which the clock does not move.
     static const std::array<glm::dvec2, kDirections> directions = [] {
         std::array<glm::dvec2, kDirections> table;
         for (int i = 0; i < kDirections; ++i) {
@@ -36,14 +29,39 @@ WaveSumSurface::WaveSumSurface(const WaveSettings& settings, double level, doubl
         }
         return table;
     }();
+    thread_local std::vector<glm::dvec3> last_waves;  // (A, k_vector) per wave
+    thread_local double last_bound = 0.0;
+    const bool same =
+        last_waves.size() == waves.size() &&
+        std::equal(waves.begin(), waves.end(), last_waves.begin(),
+                   [](const WaveTerms& w, const glm::dvec3& l) { return l == glm::dvec3(w.amplitude, w.k_vector); });
+    if (same && !waves.empty()) return last_bound;
     double terms = 0.0, height_gradient = 0.0;
-    for (const WaveTerms& w : waves_) terms += w.amplitude * glm::length(w.k_vector);
+    for (const WaveTerms& w : waves) terms += w.amplitude * glm::length(w.k_vector);
     for (const glm::dvec2& u : directions) {
         double along = 0.0;
-        for (const WaveTerms& w : waves_) along += w.amplitude * std::abs(glm::dot(w.k_vector, u));
+        for (const WaveTerms& w : waves) along += w.amplitude * std::abs(glm::dot(w.k_vector, u));
         height_gradient = std::max(height_gradient, along);
     }
-    height_gradient = std::min(terms, height_gradient + std::numbers::pi / kDirections * terms);
+    last_waves.clear();
+    for (const WaveTerms& w : waves) last_waves.emplace_back(w.amplitude, w.k_vector);
+    last_bound = std::min(terms, height_gradient + std::numbers::pi / kDirections * terms);
+    return last_bound;
+}
+
+}  // namespace
+
+WaveSumSurface::WaveSumSurface(const WaveSettings& settings, double level, double time) : level_(level) {
+    validate_wave_components(settings);
+    waves_.reserve(settings.components.size());
+    double steepness = 0.0;
+    for (const WaveComponent& c : settings.components) {
+        waves_.push_back(wave_terms(c, time));
+        amplitude_sum_ += c.amplitude;
+        steepness += c.steepness;
+        heightfield_ = heightfield_ && c.steepness == 0.0;
+    }
+    const double height_gradient = height_gradient_bound(waves_);
     slope_bound_ = steepness < 1.0 ? height_gradient / (1.0 - steepness) : std::numeric_limits<double>::infinity();
     if (heightfield_) {
         for (const WaveTerms& w : waves_) {

@@ -590,11 +590,12 @@ Renderer::CompiledFrame& Renderer::prepare_graph(const Scene& scene, const Rende
                       {options.width, options.height}, &carry, temporal);
     // Timed frames carry the unit their times are reported in; untimed ones (tests) need none.
     if (options.timing != fg::TimingMode::None) passes::add_calibration_pass(*graph);
-    graph->compile(width, height);
-    const fg::ExecutorOptions executor_options{options.check_finite, options.timing};
     // A supersampled frame's first sub-frame and its later ones compile to two graphs: each keeps
     // its own device objects, so that alternating between them makes none.
     std::unique_ptr<CompiledFrame>& compiled = compiled_[static_cast<size_t>(options.caustic_map_carry)];
+    graph->compile(width, height, compiled ? compiled->graph.get() : nullptr);
+    if (graph->took_over_compilation()) ++compilations_taken_over_;
+    const fg::ExecutorOptions executor_options{options.check_finite, options.timing};
     const bool reuse = compiled && compiled->executor->can_adopt(*graph, executor_options);
     last_declare_ms_ =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - declare_start).count();

@@ -149,6 +149,9 @@ public:
     // How many times the frame's device objects were made: once per physical signature of the
     // compiled graph (output size, the passes that live, their resources), not per frame.
     size_t realize_count() const { return realize_count_; }
+    // How many frames took the last frame's compiled graph over (fg::FrameGraph::compile): those
+    // whose declaration compiled like the last one's, as with a running clock.
+    size_t compilations_taken_over() const { return compilations_taken_over_; }
     // How many times the photon culling's read region was computed (it is reused while the camera stays).
     uint64_t read_regions_computed() const { return read_regions_.computed(); }
     // The CPU time of the last frame's needs decision, declaration and compilation, in milliseconds.
@@ -192,6 +195,7 @@ private:
         glm::dmat4 previous_view_proj{1.0};  // the last frame's camera, unjittered
     } temporal_;
     size_t realize_count_ = 0;
+    size_t compilations_taken_over_ = 0;
     double last_declare_ms_ = 0.0;
 };
 

@@ -44,8 +44,11 @@ GpuWave gpu_wave(const WaveComponent& c, double time) {
 
 fg::BufferHandle add_wave_table_pass(fg::FrameGraph& graph, const std::vector<WaveComponent>& waves, double time) {
     // The kernel's uniform block declares all kMaxGpuWaves entries, so the buffer holds them
-    // all (2 KiB); wave_count says how many are used.
-    std::vector<GpuWave> table(kMaxGpuWaves, GpuWave{});
+    // all (2 KiB); wave_count says how many are used, and no shader reads past it. Only those
+    // are uploaded (one zero entry for none: an update writes at least 4 bytes): the frame
+    // declares this pass every frame, and a 2 KiB table, copied into the pass, was the dearest
+    // part of declaring the water's passes.
+    std::vector<GpuWave> table(std::max<size_t>(waves.size(), 1), GpuWave{});
     for (size_t i = 0; i < waves.size(); ++i) table[i] = gpu_wave(waves[i], time);
     struct UploadData {
         fg::BufferHandle waves;
@@ -53,10 +56,10 @@ fg::BufferHandle add_wave_table_pass(fg::FrameGraph& graph, const std::vector<Wa
     const auto& upload = graph.add_pass<UploadData>(
         "upload water waves", fg::PassKind::Transfer,
         [&](fg::PassBuilder& builder, UploadData& d) {
-            d.waves = builder.create_buffer("water waves", {table.size() * sizeof(GpuWave)});
+            d.waves = builder.create_buffer("water waves", {kMaxGpuWaves * sizeof(GpuWave)});
             d.waves = builder.copy_destination(d.waves);
         },
-        [table](const UploadData& d, fg::PassContext& context) {
+        [table = std::move(table)](const UploadData& d, fg::PassContext& context) {
             vkCmdUpdateBuffer(context.cmd(), context.buffer(d.waves), 0, table.size() * sizeof(GpuWave), table.data());
         });
     return upload.waves;

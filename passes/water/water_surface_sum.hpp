@@ -10,7 +10,8 @@
 
 namespace vkw::passes {
 
-// Uploads the wave table of `waves` at `time` (kMaxGpuWaves entries, the unused ones zero) and
+// Uploads the wave table of `waves` at `time` (a buffer of kMaxGpuWaves entries, the first
+// max(1, waves.size()) written; the shaders read only the waves' count of them) and
 // returns it: the grid kernel's input and, for the per-pixel refinement, a uniform buffer.
 fg::BufferHandle add_wave_table_pass(fg::FrameGraph& graph, const std::vector<WaveComponent>& waves, double time);
 

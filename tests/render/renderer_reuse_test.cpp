@@ -38,10 +38,18 @@ TEST_F(RendererReuse, KeepsItsDeviceObjectsWhileTheSignatureHolds) {
     std::vector<float> previous = second.image.rgba;
     for (int frame = 0; frame < 10; ++frame) {
         scene.water->time += 1.0 / 30.0;
+        const bool clock_alone = frame != 4 && frame != 7;
         if (frame == 4) scene.water->waves.components[0].amplitude *= 1.5;
         if (frame == 7) scene.sun.direction = glm::normalize(scene.sun.direction + glm::dvec3(0.05, 0.0, 0.0));
+        const size_t taken_over = renderer.compilations_taken_over();
         const RenderResult moving = renderer.render(scene, options);
         EXPECT_NE(moving.image.rgba, previous) << "frame " << frame << ": the change did not reach the image";
+        // The clock changes what the passes capture, not what they declare: the last frame's
+        // compiled graph is taken over, not derived again.
+        if (clock_alone) {
+            EXPECT_EQ(renderer.compilations_taken_over(), taken_over + 1)
+                << "frame " << frame << ": the clock alone compiled the graph again";
+        }
         previous = moving.image.rgba;
     }
     EXPECT_EQ(renderer.realize_count(), 1u);
@@ -58,7 +66,7 @@ TEST_F(RendererReuse, KeepsItsDeviceObjectsWhileTheSignatureHolds) {
 }
 
 // A frame declared anew is the same frame: the image of a renderer that has run other frames
-// before equals a fresh renderer's, bit for bit.
+// before (and took its compiled graph over) equals a fresh renderer's, bit for bit.
 TEST_F(RendererReuse, AnAdoptedGraphRendersWhatAFreshOneRenders) {
     Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
     const RenderOptions options{64, 48, true, fg::TimingMode::None};
@@ -68,6 +76,7 @@ TEST_F(RendererReuse, AnAdoptedGraphRendersWhatAFreshOneRenders) {
     scene.water->time = 0.5;
     const RenderResult adopted = warm.render(scene, options);
     EXPECT_EQ(warm.realize_count(), 1u);
+    EXPECT_EQ(warm.compilations_taken_over(), 1u) << "the second frame's graph was compiled again";
 
     Renderer fresh(context());
     const RenderResult made = fresh.render(scene, options);

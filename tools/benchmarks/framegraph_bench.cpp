@@ -5,6 +5,10 @@
 //  3. pool's frame on the CPU as the renderer makes it every frame: the needs' decision, the
 //     frame constants, the declaration and the compilation (scenes/pool.json at 800x600).
 // Prints a table of medians; nothing is asserted (speed is measured, not tested).
+// `--cpu-only` stops after step 3's CPU-only rows and makes no Vulkan device: for a profiler, as
+// `valgrind --tool=callgrind --collect-atstart=no --toggle-collect='vkw::decide_frame_needs*'
+// --toggle-collect='vkw::build_frame_graph*' --toggle-collect='vkw::fg::FrameGraph::compile*'
+// build/tools/benchmarks/framegraph_bench --cpu-only`.
 #include "engine/framegraph/executor.hpp"
 #include "engine/framegraph/pass_context.hpp"
 #include "engine/scene/scene_loader.hpp"
@@ -208,7 +212,12 @@ double median_record_ms(const Context& context, VkCommandPool pool, int runs,
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+    const bool cpu_only = argc == 2 && std::string(argv[1]) == "--cpu-only";
+    if (argc > 2 || (argc == 2 && !cpu_only)) {
+        std::fprintf(stderr, "usage: framegraph_bench [--cpu-only]\n");
+        return 1;
+    }
     const int runs = 201;
     const double declare_ms = median_ms(runs, [] {
         fg::FrameGraph graph;
@@ -244,6 +253,7 @@ int main() {
     std::printf("| pool: the frame constants | %.3f ms |\n", constants_ms);
     std::printf("| pool: declare its graph (the needs included) | %.3f ms |\n", pool_declare_ms);
     std::printf("| pool: compile it | %.3f ms |\n", pool_compile_ms - pool_declare_ms);
+    if (cpu_only) return 0;
 
     Context context(ContextOptions{});
     VkCommandPool pool;
