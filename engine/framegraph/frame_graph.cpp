@@ -12,7 +12,12 @@ namespace vkw::fg {
 
 // ---------------------------------------------------------------- declaration
 
-FrameGraph::FrameGraph(FrameNeeds needs) : needs_(std::move(needs)) {}
+FrameGraph::FrameGraph(FrameNeeds needs) : needs_(std::move(needs)) {
+    // Room for a whole frame's passes and resources at once: the renderer declares its graph every
+    // frame, and growing these vectors moved every declaration made so far several times over.
+    passes_.reserve(kReservedPasses);
+    resources_.reserve(kReservedResources);
+}
 
 uint32_t FrameGraph::add_pass_decl(std::string name, PassKind kind) {
     for (const PassDecl& pass : passes_) {
@@ -20,6 +25,7 @@ uint32_t FrameGraph::add_pass_decl(std::string name, PassKind kind) {
     }
     compiled_.reset();
     passes_.push_back(PassDecl{std::move(name), kind});
+    passes_.back().uses.reserve(kReservedUses);
     return static_cast<uint32_t>(passes_.size() - 1);
 }
 

@@ -292,6 +292,9 @@ private:
     // Why pass `pass`, which compile() culled, does not run.
     std::string culled_reason(uint32_t pass) const;
 
+    // Room for what a frame usually declares (the built-in scenes: about 25 to 35 passes with the
+    // readbacks, most of them using fewer than 8 resources); a larger graph only grows the vectors.
+    static constexpr size_t kReservedPasses = 48, kReservedResources = 96, kReservedUses = 8;
     FrameNeeds needs_;
     std::vector<PassDecl> passes_;
     std::vector<ResourceDecl> resources_;
