@@ -14,14 +14,6 @@ const EffectDecision* FrameNeeds::find(EffectTag effect) const {
     return nullptr;
 }
 
-std::string FrameNeeds::key() const {
-    std::string key;
-    for (const EffectDecision& decision : decisions) {
-        key += std::string(decision.effect.name) + (decision.needed ? "+" : "-");
-    }
-    return key;
-}
-
 std::string FrameNeeds::describe() const {
     std::string text = "needs:\n";
     if (decisions.empty()) text += "  (no decisions: every effect is needed)\n";

@@ -48,8 +48,6 @@ struct FrameNeeds {
     bool needs(EffectTag effect) const;
     const EffectDecision* find(EffectTag effect) const;
     void decide(EffectTag effect, bool needed, std::string reason, bool forced = false);
-    // Which effects are on: two frames with the same key compile to the same graph.
-    std::string key() const;
     // "needs:" and one line per decision: "  effect: on|off [(forced)] - reason".
     std::string describe() const;
 };
