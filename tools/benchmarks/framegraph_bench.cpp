@@ -260,8 +260,9 @@ int main(int argc, char** argv) {
     std::printf("| pool: the frame constants | %.3f ms |\n", constants_ms);
     std::printf("| pool: declare its graph (the needs included) | %.3f ms |\n", pool_declare_ms);
     std::printf("| pool: compile it afresh | %.3f ms |\n", pool_fresh_ms - pool_declare_ms);
-    std::printf("| pool: compile it, taking the last frame's compilation over | %.3f ms |\n",
-                pool_compile_ms - pool_declare_ms);
+    // The compilation taken over costs less than the noise of the declaration's median: the sum.
+    std::printf("| pool: declare and compile it, taking the last frame's compilation over | %.3f ms |\n",
+                pool_compile_ms);
     if (cpu_only) return 0;
 
     Context context(ContextOptions{});
