@@ -47,7 +47,24 @@ void require_component(bool ok, std::size_t index, const char* name, double valu
     }
 }
 
-void validate_components(const WaveSettings& settings) {
+bool is_power_of_two(uint32_t n) { return n != 0 && (n & (n - 1)) == 0; }
+
+}  // namespace
+
+void validate_ocean(const FftOceanSettings& ocean) {
+    if (!is_power_of_two(ocean.resolution) || ocean.resolution < 16 || ocean.resolution > 1024) {
+        throw UserError("water.waves.resolution = " + std::to_string(ocean.resolution) +
+                        ": accepted a power of two in [16, 1024]");
+    }
+    require(ocean.patch_size > 0.0, "water.waves.patch_size", ocean.patch_size, "value > 0 m");
+    require(ocean.wind_speed > 0.0, "water.waves.wind_speed", ocean.wind_speed, "value > 0 m/s");
+    require_finite("water.waves.wind_direction_deg", ocean.wind_direction_deg, "any finite value (degrees)");
+    require(ocean.fetch > 0.0, "water.waves.fetch", ocean.fetch, "value > 0 m");
+    require(ocean.amplitude_scale >= 0.0, "water.waves.amplitude_scale", ocean.amplitude_scale, "value >= 0");
+    require(ocean.choppiness >= 0.0, "water.waves.choppiness", ocean.choppiness, "value >= 0");
+}
+
+void validate_wave_components(const WaveSettings& settings) {
     double steepness_sum = 0.0;
     for (std::size_t i = 0; i < settings.components.size(); ++i) {
         const WaveComponent& w = settings.components[i];
@@ -67,25 +84,6 @@ void validate_components(const WaveSettings& settings) {
         }
     }
 }
-
-bool is_power_of_two(uint32_t n) { return n != 0 && (n & (n - 1)) == 0; }
-
-}  // namespace
-
-void validate_ocean(const FftOceanSettings& ocean) {
-    if (!is_power_of_two(ocean.resolution) || ocean.resolution < 16 || ocean.resolution > 1024) {
-        throw UserError("water.waves.resolution = " + std::to_string(ocean.resolution) +
-                        ": accepted a power of two in [16, 1024]");
-    }
-    require(ocean.patch_size > 0.0, "water.waves.patch_size", ocean.patch_size, "value > 0 m");
-    require(ocean.wind_speed > 0.0, "water.waves.wind_speed", ocean.wind_speed, "value > 0 m/s");
-    require_finite("water.waves.wind_direction_deg", ocean.wind_direction_deg, "any finite value (degrees)");
-    require(ocean.fetch > 0.0, "water.waves.fetch", ocean.fetch, "value > 0 m");
-    require(ocean.amplitude_scale >= 0.0, "water.waves.amplitude_scale", ocean.amplitude_scale, "value >= 0");
-    require(ocean.choppiness >= 0.0, "water.waves.choppiness", ocean.choppiness, "value >= 0");
-}
-
-void validate_wave_components(const WaveSettings& settings) { validate_components(settings); }
 
 void validate_waves(const WaveSettings& settings) {
     switch (settings.model) {
