@@ -40,6 +40,8 @@ public:
         return entries_.count(&key) > 0;
     }
 
+    void clear() { entries_.clear(); }
+
 private:
     std::unordered_map<const void*, std::any> entries_;
 };

@@ -157,8 +157,12 @@ void FrameExecutor::realize_resources(bool check_finite) {
 }
 
 bool FrameExecutor::can_adopt(const FrameGraph& graph, const ExecutorOptions& options) const {
-    return options.check_finite == options_.check_finite && resolved_timing(options.timing) == options_.timing &&
-           graph.physical_signature() == signature_;
+    if (options.check_finite != options_.check_finite || resolved_timing(options.timing) != options_.timing) {
+        return false;
+    }
+    // graph_'s signature is signature_ (this executor was made for it or adopted it); a graph that
+    // took over its compilation keeps it where the imports are the same, and most frames do.
+    return graph.keeps_physical_signature_of(graph_) || graph.physical_signature() == signature_;
 }
 
 void FrameExecutor::adopt(FrameGraph& graph) {

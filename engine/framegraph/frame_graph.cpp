@@ -19,39 +19,92 @@ FrameGraph::FrameGraph(FrameNeeds needs) : needs_(std::move(needs)) {
     resources_.reserve(kReservedResources);
 }
 
-uint32_t FrameGraph::add_pass_decl(std::string name, PassKind kind) {
+void FrameGraph::clear(FrameNeeds needs) {
+    arena_.clear();  // the captures first: nothing else refers to them
+    // Kept last to first, so that the next declaration, taking from the back, gives each pass the
+    // storage of the pass at its place last time: most frames declare the same passes, and each
+    // finds room for its uses.
+    for (auto pass = passes_.rbegin(); pass != passes_.rend(); ++pass) {
+        pass->name.clear();
+        pass->uses.clear();
+        pass->note.clear();
+        spare_passes_.push_back(std::move(*pass));
+    }
+    passes_.clear();
+    for (auto resource = resources_.rbegin(); resource != resources_.rend(); ++resource) {
+        resource->name.clear();
+        resource->writer_of_version.clear();
+        spare_resources_.push_back(std::move(*resource));
+    }
+    resources_.clear();
+    requested_.clear();
+    blackboard_.clear();
+    default_recording_ = RecordingKind::DynamicRendering;
+    compiled_.reset();
+    taken_over_from_ = nullptr;
+    needs_ = std::move(needs);
+}
+
+uint32_t FrameGraph::add_pass_decl(std::string_view name, PassKind kind) {
     for (const PassDecl& pass : passes_) {
-        if (pass.name == name) throw InternalError("frame graph: two passes are named '" + name + "'");
+        if (pass.name == name) throw InternalError("frame graph: two passes are named '" + std::string(name) + "'");
     }
     compiled_.reset();
-    passes_.push_back(PassDecl{std::move(name), kind});
-    passes_.back().uses.reserve(kReservedUses);
+    if (spare_passes_.empty()) {
+        passes_.emplace_back().uses.reserve(kReservedUses);
+    } else {
+        passes_.push_back(std::move(spare_passes_.back()));
+        spare_passes_.pop_back();
+    }
+    // Every field anew but the buffers of the name and the uses, which clear() emptied.
+    PassDecl& pass = passes_.back();
+    pass.name.assign(name);
+    pass.kind = kind;
+    pass.side_effect = false;
+    pass.serves.reset();
+    pass.recording.reset();
+    pass.execute = {};
     return static_cast<uint32_t>(passes_.size() - 1);
 }
 
-uint32_t FrameGraph::add_resource(ResourceDecl decl) {
+ResourceDecl& FrameGraph::add_resource(std::string_view name) {
     compiled_.reset();
+    if (spare_resources_.empty()) {
+        resources_.emplace_back();
+    } else {
+        resources_.push_back(std::move(spare_resources_.back()));
+        spare_resources_.pop_back();
+    }
+    ResourceDecl& decl = resources_.back();
+    decl.name.assign(name);
+    decl.is_image = true;
+    decl.imported = false;
+    decl.image = {};
+    decl.buffer = {};
+    decl.imported_image = {};
+    decl.imported_buffer = {};
+    decl.version = 0;
     decl.writer_of_version.push_back(Handle<ImageTag>::kInvalid);  // version 0 has no writer
-    resources_.push_back(std::move(decl));
-    return static_cast<uint32_t>(resources_.size() - 1);
+    decl.image_usage = 0;
+    decl.buffer_usage = 0;
+    return decl;
 }
 
-ImageHandle FrameGraph::import_image(std::string name, const ImportedImage& image) {
-    ResourceDecl decl{std::move(name)};
-    decl.is_image = true;
+ImageHandle FrameGraph::import_image(std::string_view name, const ImportedImage& image) {
+    ResourceDecl& decl = add_resource(name);
     decl.imported = true;
     decl.imported_image = image;
     decl.image = {image.format, SizeClass::Absolute, 1.0f, image.width, image.height};
-    return {add_resource(std::move(decl)), 0};
+    return {static_cast<uint32_t>(resources_.size() - 1), 0};
 }
 
-BufferHandle FrameGraph::import_buffer(std::string name, const ImportedBuffer& buffer) {
-    ResourceDecl decl{std::move(name)};
+BufferHandle FrameGraph::import_buffer(std::string_view name, const ImportedBuffer& buffer) {
+    ResourceDecl& decl = add_resource(name);
     decl.is_image = false;
     decl.imported = true;
     decl.imported_buffer = buffer;
     decl.buffer.size = buffer.size;
-    return {add_resource(std::move(decl)), 0};
+    return {static_cast<uint32_t>(resources_.size() - 1), 0};
 }
 
 void FrameGraph::check_current(uint32_t pass, uint32_t resource, uint32_t version, const char* verb) const {
@@ -105,18 +158,16 @@ uint32_t FrameGraph::image_height(uint32_t resource) const {
     return std::max(1u, static_cast<uint32_t>(std::lround(info.scale * compiled().output_height)));
 }
 
-ImageHandle PassBuilder::create_image(std::string name, const ImageInfo& info) {
-    ResourceDecl decl{std::move(name)};
-    decl.is_image = true;
-    decl.image = info;
-    return {graph_.add_resource(std::move(decl)), 0};
+ImageHandle PassBuilder::create_image(std::string_view name, const ImageInfo& info) {
+    graph_.add_resource(name).image = info;
+    return {static_cast<uint32_t>(graph_.resources_.size() - 1), 0};
 }
 
-BufferHandle PassBuilder::create_buffer(std::string name, const BufferInfo& info) {
-    ResourceDecl decl{std::move(name)};
+BufferHandle PassBuilder::create_buffer(std::string_view name, const BufferInfo& info) {
+    ResourceDecl& decl = graph_.add_resource(name);
     decl.is_image = false;
     decl.buffer = info;
-    return {graph_.add_resource(std::move(decl)), 0};
+    return {static_cast<uint32_t>(graph_.resources_.size() - 1), 0};
 }
 
 template <class Tag>
@@ -175,43 +226,44 @@ BufferHandle PassBuilder::read_write_storage(BufferHandle h, VkPipelineStageFlag
     return use(h, Use::StorageBufferReadWrite, s);
 }
 template <class Tag>
-Handle<Tag> PassBuilder::bound(std::string binding, Handle<Tag> handle, Use use_kind, VkPipelineStageFlags2 stages,
+Handle<Tag> PassBuilder::bound(std::string_view binding, Handle<Tag> handle, Use use_kind, VkPipelineStageFlags2 stages,
                                Filter filter) {
     std::vector<ResourceUse>& uses = graph_.passes_[pass_].uses;
     for (const ResourceUse& other : uses) {
         if (other.binding == binding) {
-            throw InternalError("pass '" + graph_.passes_[pass_].name + "' binds two resources to '" + binding + "'");
+            throw InternalError("pass '" + graph_.passes_[pass_].name + "' binds two resources to '" +
+                                std::string(binding) + "'");
         }
     }
     const Handle<Tag> result = use(handle, use_kind, stages);
-    uses.back().binding = std::move(binding);
+    uses.back().binding.assign(binding);
     uses.back().filter = filter;
     return result;
 }
 
-ImageHandle PassBuilder::sample(std::string b, ImageHandle h, Filter f, VkPipelineStageFlags2 s) {
-    return bound(std::move(b), h, Use::SampledRead, s, f);
+ImageHandle PassBuilder::sample(std::string_view b, ImageHandle h, Filter f, VkPipelineStageFlags2 s) {
+    return bound(b, h, Use::SampledRead, s, f);
 }
-ImageHandle PassBuilder::read_storage(std::string b, ImageHandle h, VkPipelineStageFlags2 s) {
-    return bound(std::move(b), h, Use::StorageImageRead, s);
+ImageHandle PassBuilder::read_storage(std::string_view b, ImageHandle h, VkPipelineStageFlags2 s) {
+    return bound(b, h, Use::StorageImageRead, s);
 }
-ImageHandle PassBuilder::write_storage(std::string b, ImageHandle h, VkPipelineStageFlags2 s) {
-    return bound(std::move(b), h, Use::StorageImageWrite, s);
+ImageHandle PassBuilder::write_storage(std::string_view b, ImageHandle h, VkPipelineStageFlags2 s) {
+    return bound(b, h, Use::StorageImageWrite, s);
 }
-ImageHandle PassBuilder::read_write_storage(std::string b, ImageHandle h, VkPipelineStageFlags2 s) {
-    return bound(std::move(b), h, Use::StorageImageReadWrite, s);
+ImageHandle PassBuilder::read_write_storage(std::string_view b, ImageHandle h, VkPipelineStageFlags2 s) {
+    return bound(b, h, Use::StorageImageReadWrite, s);
 }
-BufferHandle PassBuilder::uniform_buffer(std::string b, BufferHandle h, VkPipelineStageFlags2 s) {
-    return bound(std::move(b), h, Use::UniformBuffer, s);
+BufferHandle PassBuilder::uniform_buffer(std::string_view b, BufferHandle h, VkPipelineStageFlags2 s) {
+    return bound(b, h, Use::UniformBuffer, s);
 }
-BufferHandle PassBuilder::read_storage(std::string b, BufferHandle h, VkPipelineStageFlags2 s) {
-    return bound(std::move(b), h, Use::StorageBufferRead, s);
+BufferHandle PassBuilder::read_storage(std::string_view b, BufferHandle h, VkPipelineStageFlags2 s) {
+    return bound(b, h, Use::StorageBufferRead, s);
 }
-BufferHandle PassBuilder::write_storage(std::string b, BufferHandle h, VkPipelineStageFlags2 s) {
-    return bound(std::move(b), h, Use::StorageBufferWrite, s);
+BufferHandle PassBuilder::write_storage(std::string_view b, BufferHandle h, VkPipelineStageFlags2 s) {
+    return bound(b, h, Use::StorageBufferWrite, s);
 }
-BufferHandle PassBuilder::read_write_storage(std::string b, BufferHandle h, VkPipelineStageFlags2 s) {
-    return bound(std::move(b), h, Use::StorageBufferReadWrite, s);
+BufferHandle PassBuilder::read_write_storage(std::string_view b, BufferHandle h, VkPipelineStageFlags2 s) {
+    return bound(b, h, Use::StorageBufferReadWrite, s);
 }
 
 BufferHandle PassBuilder::vertex_buffer(BufferHandle h) { return use(h, Use::VertexBuffer, 0); }
@@ -289,9 +341,10 @@ std::string FrameGraph::culled_reason(uint32_t pass_index) const {
 }
 
 const CompiledGraph& FrameGraph::compile(uint32_t output_width, uint32_t output_height, FrameGraph* previous) {
-    took_over_ = previous && previous->compiled_ && previous->compiled_->output_width == output_width &&
-                 previous->compiled_->output_height == output_height && compiles_like(*previous);
-    if (took_over_) {
+    const bool take_over = previous && previous->compiled_ && previous->compiled_->output_width == output_width &&
+                           previous->compiled_->output_height == output_height && compiles_like(*previous);
+    taken_over_from_ = take_over ? previous : nullptr;
+    if (take_over) {
         compiled_ = std::move(previous->compiled_);
         previous->compiled_.reset();
         // The reasons name the needs' own words, which may change while the decisions stand.

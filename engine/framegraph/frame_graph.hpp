@@ -14,6 +14,7 @@
 #include "engine/framegraph/blackboard.hpp"
 #include "engine/framegraph/frame_needs.hpp"
 #include "engine/framegraph/handles.hpp"
+#include "engine/framegraph/pass_arena.hpp"
 
 #include <vulkan/vulkan.h>
 
@@ -21,6 +22,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace vkw::fg {
@@ -106,6 +108,22 @@ struct ResourceDecl {
     VkBufferUsageFlags buffer_usage = 0;
 };
 
+// A pass's execute function with what it captured, both in the graph's PassArena: calling it
+// runs the pass's execute with its Data. Empty until add_pass sets it.
+class PassCallback {
+public:
+    PassCallback() = default;
+    template <class Closure>
+    explicit PassCallback(Closure& closure)
+        : closure_(&closure), invoke_([](void* c, PassContext& context) { (*static_cast<Closure*>(c))(context); }) {}
+    void operator()(PassContext& context) const { invoke_(closure_, context); }
+    explicit operator bool() const { return invoke_ != nullptr; }
+
+private:
+    void* closure_ = nullptr;
+    void (*invoke_)(void*, PassContext&) = nullptr;
+};
+
 struct PassDecl {
     std::string name;
     PassKind kind;
@@ -114,15 +132,15 @@ struct PassDecl {
     std::optional<EffectTag> serves;
     std::optional<RecordingKind> recording;  // overrides the graph's default
     std::string note;                        // what the pass decided, for describe()
-    std::function<void(PassContext&)> execute;
+    PassCallback execute;
 };
 
 class FrameGraph;
 
 class PassBuilder {
 public:
-    ImageHandle create_image(std::string name, const ImageInfo& info);
-    BufferHandle create_buffer(std::string name, const BufferInfo& info);
+    ImageHandle create_image(std::string_view name, const ImageInfo& info);
+    BufferHandle create_buffer(std::string_view name, const BufferInfo& info);
 
     // Reads return the handle they were given; writes return the next version.
     ImageHandle sample(ImageHandle image, VkPipelineStageFlags2 shader_stages = 0);
@@ -146,18 +164,18 @@ public:
     // block's type name, as `Flux` in `buffer Flux { ... };`, else the variable's name, as
     // `source` in `uniform sampler2D source;`). PassContext::bind then pushes every binding that
     // a pipeline's shaders use from these declarations: a pass names each resource once.
-    ImageHandle sample(std::string binding, ImageHandle image, Filter filter = Filter::Linear,
+    ImageHandle sample(std::string_view binding, ImageHandle image, Filter filter = Filter::Linear,
                        VkPipelineStageFlags2 shader_stages = 0);
-    ImageHandle read_storage(std::string binding, ImageHandle image, VkPipelineStageFlags2 shader_stages = 0);
-    [[nodiscard]] ImageHandle write_storage(std::string binding, ImageHandle image,
+    ImageHandle read_storage(std::string_view binding, ImageHandle image, VkPipelineStageFlags2 shader_stages = 0);
+    [[nodiscard]] ImageHandle write_storage(std::string_view binding, ImageHandle image,
                                             VkPipelineStageFlags2 shader_stages = 0);
-    [[nodiscard]] ImageHandle read_write_storage(std::string binding, ImageHandle image,
+    [[nodiscard]] ImageHandle read_write_storage(std::string_view binding, ImageHandle image,
                                                  VkPipelineStageFlags2 shader_stages = 0);
-    BufferHandle uniform_buffer(std::string binding, BufferHandle buffer, VkPipelineStageFlags2 shader_stages = 0);
-    BufferHandle read_storage(std::string binding, BufferHandle buffer, VkPipelineStageFlags2 shader_stages = 0);
-    [[nodiscard]] BufferHandle write_storage(std::string binding, BufferHandle buffer,
+    BufferHandle uniform_buffer(std::string_view binding, BufferHandle buffer, VkPipelineStageFlags2 shader_stages = 0);
+    BufferHandle read_storage(std::string_view binding, BufferHandle buffer, VkPipelineStageFlags2 shader_stages = 0);
+    [[nodiscard]] BufferHandle write_storage(std::string_view binding, BufferHandle buffer,
                                              VkPipelineStageFlags2 shader_stages = 0);
-    [[nodiscard]] BufferHandle read_write_storage(std::string binding, BufferHandle buffer,
+    [[nodiscard]] BufferHandle read_write_storage(std::string_view binding, BufferHandle buffer,
                                                   VkPipelineStageFlags2 shader_stages = 0);
 
     BufferHandle vertex_buffer(BufferHandle buffer);
@@ -187,7 +205,7 @@ private:
                     const ClearValue& clear = {});
     // `use` bound to the shader resource `binding`.
     template <class Tag>
-    Handle<Tag> bound(std::string binding, Handle<Tag> handle, Use use, VkPipelineStageFlags2 stages,
+    Handle<Tag> bound(std::string_view binding, Handle<Tag> handle, Use use, VkPipelineStageFlags2 stages,
                       Filter filter = Filter::Linear);
     FrameGraph& graph_;
     uint32_t pass_;
@@ -216,19 +234,30 @@ class FrameGraph {
 public:
     explicit FrameGraph(FrameNeeds needs = {});
 
-    ImageHandle import_image(std::string name, const ImportedImage& image);
-    BufferHandle import_buffer(std::string name, const ImportedBuffer& buffer);
+    ImageHandle import_image(std::string_view name, const ImportedImage& image);
+    BufferHandle import_buffer(std::string_view name, const ImportedBuffer& buffer);
 
+    // Starts a new declaration in this graph's storage: the passes, resources and uses of the last
+    // one, their names' buffers and the arena of their captures are kept for the next to fill, so a
+    // frame declared into a cleared graph allocates next to nothing (the renderer declares each
+    // frame into the graph of two frames before).
+    void clear(FrameNeeds needs);
+
+    // Data lives in the graph's arena until clear() or the graph's end, as does `execute`.
     template <class Data, class Setup, class Execute>
-    const Data& add_pass(std::string name, PassKind kind, Setup&& setup, Execute&& execute) {
-        const uint32_t index = add_pass_decl(std::move(name), kind);
-        auto data = std::make_shared<Data>();
-        PassBuilder builder(*this, index);
-        setup(builder, *data);
-        passes_[index].execute = [data, execute = std::forward<Execute>(execute)](PassContext& context) {
-            execute(*data, context);
+    const Data& add_pass(std::string_view name, PassKind kind, Setup&& setup, Execute&& execute) {
+        const uint32_t index = add_pass_decl(name, kind);
+        struct Closure {
+            explicit Closure(Execute&& e) : execute(std::forward<Execute>(e)) {}
+            void operator()(PassContext& context) { execute(data, context); }
+            Data data{};
+            std::decay_t<Execute> execute;
         };
-        return *data;
+        Closure& closure = arena_.make<Closure>(std::forward<Execute>(execute));
+        PassBuilder builder(*this, index);
+        setup(builder, closure.data);
+        passes_[index].execute = PassCallback(closure);
+        return closure.data;
     }
 
     // A requested output keeps the passes that produce it (transitively) alive.
@@ -250,7 +279,7 @@ public:
     // applied its memory plan to it (FrameExecutor::adopt), the plan comes with it.
     const CompiledGraph& compile(uint32_t output_width, uint32_t output_height, FrameGraph* previous = nullptr);
     // Whether the last compile() took its result over from `previous`.
-    bool took_over_compilation() const { return took_over_; }
+    bool took_over_compilation() const { return taken_over_from_ != nullptr; }
     // Whether compile() would derive the same graph from this declaration as from `other`'s
     // (same_declaration.cpp says what that compares).
     bool compiles_like(const FrameGraph& other) const;
@@ -276,6 +305,11 @@ public:
     // lifetimes, imports, living passes and their uses): an executor realized for one graph
     // runs any other graph with the same signature (FrameExecutor::adopt).
     std::string physical_signature() const;
+    // Whether this graph's physical signature is `previous`'s, known without writing either out:
+    // where the last compile() took over `previous`'s compilation (the same compiled graph from
+    // the same declaration), what the signature adds is the imports' handles and the default
+    // recording. False where that does not settle it; physical_signature() then tells.
+    bool keeps_physical_signature_of(const FrameGraph* previous) const;
 
     // Printable forms, for `vkwater passes` and golden tests.
     std::string describe() const;
@@ -284,8 +318,10 @@ public:
 
 private:
     friend class PassBuilder;
-    uint32_t add_pass_decl(std::string name, PassKind kind);
-    uint32_t add_resource(ResourceDecl decl);
+    uint32_t add_pass_decl(std::string_view name, PassKind kind);
+    // A new resource, its fields at their defaults but its name (from the last declaration's
+    // storage where clear() kept one).
+    ResourceDecl& add_resource(std::string_view name);
     void check_current(uint32_t pass, uint32_t resource, uint32_t version, const char* verb) const;
     void check_requestable(uint32_t resource, uint32_t version) const;
     std::vector<ResourceTimeline> build_timelines(const std::vector<uint32_t>& order) const;
@@ -298,11 +334,16 @@ private:
     FrameNeeds needs_;
     std::vector<PassDecl> passes_;
     std::vector<ResourceDecl> resources_;
+    // What clear() kept of the last declaration, emptied, for add_pass_decl and add_resource to
+    // fill again with their buffers' capacity.
+    std::vector<PassDecl> spare_passes_;
+    std::vector<ResourceDecl> spare_resources_;
+    PassArena arena_;
     std::vector<std::pair<uint32_t, uint32_t>> requested_;  // (resource, version)
     Blackboard blackboard_;
     RecordingKind default_recording_ = RecordingKind::DynamicRendering;
     std::optional<CompiledGraph> compiled_;
-    bool took_over_ = false;
+    const FrameGraph* taken_over_from_ = nullptr;  // the graph whose compilation the last compile() took
 };
 
 }  // namespace vkw::fg

@@ -119,4 +119,21 @@ std::string FrameGraph::physical_signature() const {
     return out.take();
 }
 
+bool FrameGraph::keeps_physical_signature_of(const FrameGraph* previous) const {
+    // The pointer is compared before `previous` is read: only the graph compile() took over from
+    // qualifies, and it was alive then.
+    if (previous == nullptr || taken_over_from_ != previous || default_recording_ != previous->default_recording_) {
+        return false;
+    }
+    for (size_t r = 0; r < resources_.size(); ++r) {  // compiles_like: the same resources, in order
+        const ResourceDecl &mine = resources_[r], &theirs = previous->resources_[r];
+        if (!mine.imported) continue;
+        const bool same_handles = mine.is_image ? mine.imported_image.image == theirs.imported_image.image &&
+                                                      mine.imported_image.view == theirs.imported_image.view
+                                                : mine.imported_buffer.buffer == theirs.imported_buffer.buffer;
+        if (!same_handles) return false;
+    }
+    return true;
+}
+
 }  // namespace vkw::fg

@@ -572,7 +572,12 @@ Renderer::CompiledFrame& Renderer::prepare_graph(const Scene& scene, const Rende
     // The graph is declared and compiled every frame (what its passes capture, the clock and
     // every setting, is new each frame); the device objects are made only when the compiled
     // graph's physical signature changes.
-    auto graph = std::make_unique<fg::FrameGraph>(std::move(needs));
+    std::unique_ptr<fg::FrameGraph> graph = std::move(spare_graph_);
+    if (graph) {
+        graph->clear(std::move(needs));
+    } else {
+        graph = std::make_unique<fg::FrameGraph>(std::move(needs));
+    }
     graph->set_default_recording(options.recording);
     CausticMapCarrying carry;
     carry.mode = options.caustic_map_carry;
@@ -601,7 +606,10 @@ Renderer::CompiledFrame& Renderer::prepare_graph(const Scene& scene, const Rende
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - declare_start).count();
     if (reuse) {
         compiled->executor->adopt(*graph);
-        compiled->graph = std::move(graph);  // the previous frame's declaration goes; its objects stay
+        // The previous frame's declaration goes (its storage stays for the next); its objects stay.
+        std::swap(compiled->graph, graph);
+        graph->clear({});  // what its passes captured goes now, as when it was destroyed
+        spare_graph_ = std::move(graph);
         return *compiled;
     }
     compiled.reset();  // release the old graph's resources before making new ones

@@ -184,6 +184,9 @@ private:
     std::unique_ptr<Readback> readback_;         // declared before compiled_: destroyed after them
     // Per RenderOptions::caustic_map_carry: the frame's declaration and the objects that run it.
     std::array<std::unique_ptr<CompiledFrame>, 3> compiled_;
+    // The graph a compiled frame ran before its last one, emptied (FrameGraph::clear): the next
+    // frame is declared into its storage, so that declaring allocates next to nothing.
+    std::unique_ptr<fg::FrameGraph> spare_graph_;
     // What the compiled frames import from uploads_: held while they may run.
     std::shared_ptr<const passes::OceanSpectrumBuffer> ocean_;  // the FFT ocean's h0 on the device
     std::shared_ptr<const passes::ReceiverMeshes> receivers_;   // the scene's receiver meshes on the device

@@ -3,7 +3,8 @@
 //  2. recording the test chain (compute -> sample into attachment -> copy) through the
 //     graph against the same commands and barriers written by hand;
 //  3. pool's frame on the CPU as the renderer makes it every frame: the needs' decision, the
-//     frame constants, the declaration and the compilation (scenes/pool.json at 800x600).
+//     frame constants, the declaration and the compilation (scenes/pool.json at 800x600), and
+//     the heap allocations they make (this program counts every operator new).
 // Prints a table of medians; nothing is asserted (speed is measured, not tested).
 // `--cpu-only` stops after step 3's CPU-only rows and makes no Vulkan device: for a profiler, as
 // `valgrind --tool=callgrind --collect-atstart=no --toggle-collect='vkw::decide_frame_needs*'
@@ -21,13 +22,30 @@
 #include "tools/benchmarks/chain_graph.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <memory>
+#include <new>
 #include <string>
 #include <utility>
 #include <vector>
+
+// Every heap allocation of this program, counted (the replaceable global operator new: the sized
+// and aligned forms of new and all forms of delete forward to these two pairs).
+namespace {
+std::atomic<size_t> heap_allocations{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+    heap_allocations.fetch_add(1, std::memory_order_relaxed);
+    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+    throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 using namespace vkw;
 using Clock = std::chrono::steady_clock;
@@ -244,14 +262,24 @@ int main(int argc, char** argv) {
     passes::CausticReadRegionCache read_regions;  // as the renderer keeps it while the camera stays
     // `last`: as the renderer does, the last frame's graph, whose compilation the next one takes
     // over (FrameGraph::compile); without it every frame compiles afresh.
-    std::unique_ptr<fg::FrameGraph> last;
+    // `spare`: as the renderer does, the graph before the last one, whose storage the next
+    // declaration fills again (FrameGraph::clear).
+    std::unique_ptr<fg::FrameGraph> last, spare;
     const auto declare_pool = [&](bool compile, bool take_over = true) {
-        auto graph = std::make_unique<fg::FrameGraph>(decide_frame_needs(pool_scene, aspect));
+        std::unique_ptr<fg::FrameGraph> graph = std::move(spare);
+        if (graph) {
+            graph->clear(decide_frame_needs(pool_scene, aspect));
+        } else {
+            graph = std::make_unique<fg::FrameGraph>(decide_frame_needs(pool_scene, aspect));
+        }
         build_frame_graph(*graph, pool_scene, &constants, kWidth, kHeight, VK_NULL_HANDLE, nullptr, nullptr, nullptr,
                           {}, &read_regions);
-        if (!compile) return;
-        graph->compile(kWidth, kHeight, take_over ? last.get() : nullptr);
-        last = std::move(graph);
+        if (compile) {
+            graph->compile(kWidth, kHeight, take_over ? last.get() : nullptr);
+            std::swap(last, graph);
+        }
+        if (graph) graph->clear({});
+        spare = std::move(graph);
     };
     const double pool_declare_ms = median_ms(runs, [&] { declare_pool(false); });
     const double pool_fresh_ms = median_ms(runs, [&] { declare_pool(true, false); });
@@ -263,6 +291,16 @@ int main(int argc, char** argv) {
     // The compilation taken over costs less than the noise of the declaration's median: the sum.
     std::printf("| pool: declare and compile it, taking the last frame's compilation over | %.3f ms |\n",
                 pool_compile_ms);
+    // The warm loop above leaves `spare` as the renderer's frames do: the next declaration fills it.
+    const size_t allocations_before = heap_allocations.load();
+    declare_pool(true);
+    const size_t recycled_allocations = heap_allocations.load() - allocations_before;
+    spare.reset();
+    declare_pool(true);
+    const size_t fresh_allocations = heap_allocations.load() - allocations_before - recycled_allocations;
+    std::printf("| pool: heap allocations of one such frame, declared into a new graph | %zu |\n", fresh_allocations);
+    std::printf("| pool: the same, declared into the storage of the graph before the last | %zu |\n",
+                recycled_allocations);
     if (cpu_only) return 0;
 
     Context context(ContextOptions{});
