@@ -232,5 +232,54 @@ TEST(BudgetController, TheFittedModelPredictsSupersampledFrames) {
     EXPECT_DOUBLE_EQ(pass_formula("water").prior_ms(four), 4.0 * pass_formula("water").prior_ms(one));
 }
 
+// The second layer's pass runs only with the layer, and the water pass costs more with it. Fitted
+// to a frame with the layer, the model predicts the frame without it from the same factors; fitted
+// to one without, it takes the layer's pass at the device's typical factor.
+TEST(BudgetController, TheSecondLayerCostsItsPassAndTheWatersExtra) {
+    static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/lake.json");
+    const Quality on = scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0));
+    ASSERT_TRUE(on.second_layer);
+    Quality off = on;
+    off.second_layer = false;
+    const CostDrivers with = cost_drivers(scene, on, kWidth, kHeight);
+    const CostDrivers without = cost_drivers(scene, off, kWidth, kHeight);
+    const double pixels = double(kWidth) * kHeight;
+    const PassFormula layer = pass_formula("refraction view second layer");
+    EXPECT_DOUBLE_EQ(layer.prior_ms(with), 50.0 * pixels * 1e-6);
+    EXPECT_EQ(layer.prior_ms(without), 0.0);
+    EXPECT_DOUBLE_EQ(pass_formula("water").prior_ms(with) - pass_formula("water").prior_ms(without),
+                     150.0 * pixels * 1e-6);
+
+    // A device at twice the priors for the water, 1.5 times for the other passes (no godrays).
+    const auto times = [&](const Quality& q) {
+        const CostDrivers drivers = cost_drivers(scene, q, kWidth, kHeight);
+        std::vector<fg::PassTime> passes = {
+            {"water", 2.0 * pass_formula("water").prior_ms(drivers)},
+            {"refraction view", 1.5 * pass_formula("refraction view").prior_ms(drivers)},
+            {"sky", 1.5 * pass_formula("sky").prior_ms(drivers)}};
+        if (q.second_layer) passes.push_back({"refraction view second layer", 1.5 * layer.prior_ms(drivers)});
+        return passes;
+    };
+    const auto sum = [](const std::vector<fg::PassTime>& passes) {
+        double ms = 0.0;
+        for (const fg::PassTime& pass : passes) ms += pass.ms;
+        return ms;
+    };
+    for (const Quality& timed : {on, off}) {
+        CostModel model;
+        const CostDrivers drivers = cost_drivers(scene, timed, kWidth, kHeight);
+        model.observe_passes(times(timed), drivers);
+        model.observe_frame(sum(times(timed)), drivers);
+        for (const Quality& q : {on, off}) {
+            // Exact but for the layer's pass when it was not timed: taken at the typical factor of
+            // the timed passes (the median of 2, 1.5, 1.5: 1.5, this device's own for it).
+            EXPECT_NEAR(model.predict_ms(cost_drivers(scene, q, kWidth, kHeight), false, false), sum(times(q)),
+                        1e-9 * sum(times(q)))
+                << "timed " << (timed.second_layer ? "with" : "without") << " the layer, predicting "
+                << (q.second_layer ? "with" : "without");
+        }
+    }
+}
+
 }  // namespace
 }  // namespace vkw::budget

@@ -56,7 +56,8 @@ TEST(BudgetErrorModel, TableIsTheLargestMeasuredExcessOfEachKnob) {
                                                {"lookup_steps", Knob::LookupSteps},
                                                {"bilinear_kernel", Knob::BilinearKernel},
                                                {"map_scale_fraction", Knob::MapScaleFraction},
-                                               {"samples_per_pixel", Knob::SamplesPerPixel}};
+                                               {"samples_per_pixel", Knob::SamplesPerPixel},
+                                               {"second_layer", Knob::SecondLayer}};
     for (const auto& [key, excess] : largest) {
         ASSERT_TRUE(knobs.count(key.first)) << key.first;
         if (key.first == "godray_grid" && key.second > 64) continue;  // finer than the table: 0 by definition
@@ -64,6 +65,23 @@ TEST(BudgetErrorModel, TableIsTheLargestMeasuredExcessOfEachKnob) {
         EXPECT_NEAR(error_term(knobs.at(key.first), key.second), excess, 1e-5 * std::abs(excess) + 1e-12)
             << key.first << " " << key.second;
     }
+}
+
+// Turning the refraction view's second layer off costs what the table measured, where the scene
+// has the layer; a scene without it has no such term.
+TEST(BudgetErrorModel, TheSecondLayerOffCostsItsMeasuredExcess) {
+    Quality top{1.0, 1024, 256, 64};
+    top.second_layer = true;
+    EXPECT_EQ(predict_error(top, top).excess, 0.0);
+    Quality off = top;
+    off.second_layer = false;
+    const ErrorPrediction prediction = predict_error(off, top);
+    EXPECT_GT(error_term(Knob::SecondLayer, 0.0), 0.0) << "the sweep measured the layer off as no loss";
+    EXPECT_DOUBLE_EQ(prediction.excess, error_term(Knob::SecondLayer, 0.0));
+    EXPECT_EQ(prediction.dominant, "refraction second layer");
+    EXPECT_EQ(error_term(Knob::SecondLayer, 1.0), 0.0);
+    Quality without{1.0, 1024, 256, 64};
+    EXPECT_EQ(predict_error(without, without).excess, 0.0);
 }
 
 TEST(BudgetErrorModel, TheScenesOwnSettingsAddNothing) {

@@ -44,6 +44,36 @@ TEST(BudgetQuality, CandidatesNeverExceedTheScenesOwnSettings) {
     }
 }
 
+// The refraction view's second layer is a knob where the needs run it (lake), on or off in every
+// combination of the other knobs; where they do not (pool), it stays off.
+TEST(BudgetQuality, TheSecondLayerTurnsOffOnlyWhereTheNeedsRunIt) {
+    const Scene lake = load_scene(kLake);
+    const Quality top = scene_quality(lake, decide_frame_needs(lake, 4.0 / 3.0));
+    ASSERT_TRUE(top.second_layer);
+    const std::vector<Quality> candidates = quality_candidates(top);
+    const auto with_layer =
+        std::count_if(candidates.begin(), candidates.end(), [](const Quality& q) { return q.second_layer; });
+    EXPECT_GT(with_layer, 0);
+    EXPECT_EQ(2 * with_layer, static_cast<std::ptrdiff_t>(candidates.size()));
+    for (const Quality& q : candidates) {
+        Quality other = q;
+        other.second_layer = !q.second_layer;
+        EXPECT_NE(std::find(candidates.begin(), candidates.end(), other), candidates.end()) << describe_quality(q);
+    }
+    Quality off = top;
+    off.second_layer = false;
+    EXPECT_EQ(describe_arguments(quality_arguments(off, top)), "--set effects.refraction_second_layer.mode=off");
+    Scene applied = lake;
+    apply_quality(off, top, applied);
+    EXPECT_EQ(applied.effects[Effect::RefractionSecondLayer].mode, EffectMode::Off);
+    EXPECT_FALSE(scene_quality(applied, decide_frame_needs(applied, 4.0 / 3.0)).second_layer);
+
+    const Scene pool = load_scene(kPool);
+    const Quality pool_top = scene_quality(pool, decide_frame_needs(pool, 4.0 / 3.0));
+    EXPECT_FALSE(pool_top.second_layer) << "pool's refraction view is not drawn";
+    for (const Quality& q : quality_candidates(pool_top)) EXPECT_FALSE(q.second_layer);
+}
+
 // The kernel and the map's scale are knobs only where photons are splatted into the light-space
 // map: a scene already on the bilinear kernel keeps it, and at the lowest map scale there is no
 // lower one; the camera-space splats have neither knob.
@@ -120,9 +150,11 @@ TEST(BudgetQuality, ItsOptionsGiveTheSceneApplyQualityMakes) {
     ASSERT_EQ(top.godray_grid, 64u);
     ASSERT_GT(top.map_scale, 0.0) << "lake splats photons into the light-space map";
     const double half_map = std::max(kMinMapScale, 0.5 * top.map_scale);
+    ASSERT_TRUE(top.second_layer) << "lake's refraction view has a second layer";
+    // The first two turn the second layer off (its default in a Quality), the third keeps it.
     for (const Quality& q : {Quality{0.5, 128, 128, 0, 8, 2, CausticKernel::Bilinear, half_map},
                              Quality{1.0, 256, 256, 32, 64, 2, top.caustic_kernel, half_map},
-                             Quality{0.35, 64, 64, 16, 16, 2, CausticKernel::Bilinear, top.map_scale}, top}) {
+                             Quality{0.35, 64, 64, 16, 16, 2, CausticKernel::Bilinear, top.map_scale, 1, true}, top}) {
         Scene applied = original;
         apply_quality(q, top, applied);
         std::vector<std::string> overrides;
@@ -144,6 +176,8 @@ TEST(BudgetQuality, ItsOptionsGiveTheSceneApplyQualityMakes) {
         EXPECT_EQ(given.effects[Effect::Refraction].max_steps, applied.effects[Effect::Refraction].max_steps);
         EXPECT_EQ(given.effects.caustics.kernel, applied.effects.caustics.kernel);
         EXPECT_EQ(given.effects.caustics.map_scale, applied.effects.caustics.map_scale);
+        EXPECT_EQ(given.effects[Effect::RefractionSecondLayer].mode,
+                  applied.effects[Effect::RefractionSecondLayer].mode);
         Quality in_the_scene = q;  // the resolution scale is the renderer's option, not the scene's
         in_the_scene.render_scale = 1.0;
         EXPECT_EQ(scene_quality(given, decide_frame_needs(given, 4.0 / 3.0)), in_the_scene);

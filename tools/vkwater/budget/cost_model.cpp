@@ -31,13 +31,17 @@ PassFormula once(std::vector<std::pair<Driver, double>> ns_per_unit) {
 const std::vector<KnownPass>& known_passes() {
     using D = Driver;
     static const std::vector<KnownPass> table = {
-        {"water", {{{D::Pixels, 130.0}, {D::MeshTriangles, 300.0}, {D::LookupSteps, 1.6}}}},
+        // With the second layer the water pass costs lake 1.31-1.42 times as much (its refracted
+        // rays checked against the layer, a few marched through it; docs/performance.md "The
+        // refraction view's second layer"): about 150 ns a pixel on lake's prior of 200 ms.
+        {"water",
+         {{{D::Pixels, 130.0}, {D::MeshTriangles, 300.0}, {D::LookupSteps, 1.6}, {D::SecondLayerPixels, 150.0}}}},
         {"camera medium", {{{D::Pixels, 30.0}, {D::MeshTriangles, 100.0}}}},
         {"sky", {{{D::Pixels, 20.0}}}},
         {"floor", {{{D::Pixels, 5.0}}}},
         {"receivers", {{{D::Pixels, 40.0}}}},
         {"refraction view", {{{D::Pixels, 50.0}}}},
-        {"refraction view second layer", {{{D::Pixels, 50.0}}}},
+        {"refraction view second layer", {.ns_per_unit = {{D::SecondLayerPixels, 50.0}}, .second_layer = true}},
         {"mirrored reflection view", {{{D::Pixels, 50.0}}}},
         {"calibration", {{{D::Pixels, 2.0}}}},
         {"water surface (wave sum)", {{{D::SurfaceVertices, 20.0}}}},
@@ -77,7 +81,8 @@ double sub_frames(const CostDrivers& drivers) { return std::max(1.0, at(drivers,
 
 bool runs(const PassFormula& formula, const CostDrivers& drivers, bool godrays, bool upscale) {
     return (godrays || !formula.godray) && (upscale || !formula.upscale) &&
-           (sub_frames(drivers) > 1.0 || !formula.supersampled);
+           (sub_frames(drivers) > 1.0 || !formula.supersampled) &&
+           (at(drivers, Driver::SecondLayerPixels) > 0.0 || !formula.second_layer);
 }
 
 }  // namespace
@@ -112,6 +117,7 @@ CostDrivers cost_drivers(const Scene& scene, const Quality& quality, uint32_t wi
         }
     }
     at(drivers, Driver::LookupSteps) = at(drivers, Driver::Pixels) * quality.scene_lookups * quality.lookup_steps;
+    if (quality.second_layer) at(drivers, Driver::SecondLayerPixels) = at(drivers, Driver::Pixels);
     if (quality.godray_grid > 0) {
         const double beams = double(quality.godray_grid) * quality.godray_grid;
         const double godray_scale = scene.effects.godrays.resolution_scale;
@@ -178,25 +184,30 @@ double CostModel::typical_factor() const {
 
 double CostModel::predict_passes_ms(const CostDrivers& drivers, bool godrays, bool upscale) const {
     double ms = 0.0;
-    bool has_godrays = false, has_upscale = false, has_supersampled = false;
+    bool has_godrays = false, has_upscale = false, has_supersampled = false, has_second_layer = false;
     for (const auto& [name, pass] : passes_) {
         has_godrays = has_godrays || pass.formula.godray;
         has_upscale = has_upscale || pass.formula.upscale;
         has_supersampled = has_supersampled || pass.formula.supersampled;
+        has_second_layer = has_second_layer || pass.formula.second_layer;
         if (!runs(pass.formula, drivers, godrays, upscale)) continue;
         ms += pass.formula.ns_per_unit.empty() ? pass.fixed_ms * sub_frames(drivers)
                                                : pass.factor * pass.formula.prior_ms(drivers);
     }
     // Passes the timed frame did not run (godrays it had turned off, the upscale at full
-    // resolution, the kept photon map at one sample): their priors, at the factor typical of this device.
+    // resolution, the kept photon map at one sample, the second layer turned off): their priors, at
+    // the factor typical of this device.
     const bool supersampled = sub_frames(drivers) > 1.0;
-    if ((godrays && !has_godrays) || (upscale && !has_upscale) || (supersampled && !has_supersampled)) {
+    const bool second_layer = at(drivers, Driver::SecondLayerPixels) > 0.0;
+    if ((godrays && !has_godrays) || (upscale && !has_upscale) || (supersampled && !has_supersampled) ||
+        (second_layer && !has_second_layer)) {
         const double factor = typical_factor();
         for (const KnownPass& known : known_passes()) {
             const bool missing =
                 (godrays && !has_godrays && known.formula.godray) ||
                 (upscale && !has_upscale && known.formula.upscale && std::string(known.name) == "upscale") ||
-                (supersampled && !has_supersampled && known.formula.supersampled);
+                (supersampled && !has_supersampled && known.formula.supersampled) ||
+                (second_layer && !has_second_layer && known.formula.second_layer);
             if (missing) ms += factor * known.formula.prior_ms(drivers);
         }
     }

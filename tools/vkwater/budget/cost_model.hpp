@@ -25,21 +25,22 @@ namespace vkw::budget {
 
 // What a frame's passes cost in proportion to.
 enum class Driver : uint8_t {
-    Pixels,           // the scene's passes' pixels: the output's times the resolution scale squared
-    OutputPixels,     // the output's pixels: the upscale, the readback, the window's hand-off
-    SurfaceVertices,  // the water surface grid's vertices, (photon grid + 1)^2
-    MeshVertices,     // the water mesh's vertices
-    MeshTriangles,    // the water mesh's triangles
-    Photons,          // photons traced
-    HatPhotons,       // photons whose kernel is shaped by their 4 neighbours, traced too (not the bilinear tent)
-    PhotonTaps,       // photons times the texels each one's kernel adds to (about; see cost_drivers)
-    MapTexels,        // the light-space caustic map's texels
-    Beams,            // godray beams
-    BeamColumns,      // godray beams times the godray image's columns (a beam's walk)
-    GodrayPixels,     // the godray image's pixels
-    LookupSteps,      // pixels times scene lookups times their most steps
-    SubFrames,        // the frame's sub-frames (its samples per pixel): every pass runs in each, but
-                      // the light-space photon map's, made once by the first
+    Pixels,             // the scene's passes' pixels: the output's times the resolution scale squared
+    OutputPixels,       // the output's pixels: the upscale, the readback, the window's hand-off
+    SurfaceVertices,    // the water surface grid's vertices, (photon grid + 1)^2
+    MeshVertices,       // the water mesh's vertices
+    MeshTriangles,      // the water mesh's triangles
+    Photons,            // photons traced
+    HatPhotons,         // photons whose kernel is shaped by their 4 neighbours, traced too (not the bilinear tent)
+    PhotonTaps,         // photons times the texels each one's kernel adds to (about; see cost_drivers)
+    MapTexels,          // the light-space caustic map's texels
+    Beams,              // godray beams
+    BeamColumns,        // godray beams times the godray image's columns (a beam's walk)
+    GodrayPixels,       // the godray image's pixels
+    LookupSteps,        // pixels times scene lookups times their most steps
+    SecondLayerPixels,  // the scene's passes' pixels where the refraction view's second layer runs, else 0
+    SubFrames,          // the frame's sub-frames (its samples per pixel): every pass runs in each, but
+                        // the light-space photon map's, made once by the first
     Count
 };
 
@@ -56,6 +57,7 @@ struct PassFormula {
     bool upscale = false;         // runs only below resolution scale 1
     bool once_per_frame = false;  // the photon map's: in the first sub-frame only
     bool supersampled = false;    // runs only with more than one sub-frame (keeps the photon map for the others)
+    bool second_layer = false;    // runs only with the refraction view's second layer
     // Over all of the frame's sub-frames.
     double prior_ms(const CostDrivers& drivers) const;
     double runs_per_frame(const CostDrivers& drivers) const;

@@ -60,6 +60,8 @@ Quality scene_quality(const Scene& scene, const fg::FrameNeeds& needs, uint32_t 
             ++quality.scene_lookups;
             quality.lookup_steps = std::max<uint32_t>(quality.lookup_steps, scene.effects[lookup].max_steps);
         }
+        const fg::EffectDecision* second_layer = needs.find(Effect::RefractionSecondLayer);
+        quality.second_layer = second_layer && second_layer->needed;
         // The kernel and the map's scale are knobs only where photons are splatted into the
         // light-space map (not the procedural caustics, not the camera-space splats).
         const fg::EffectDecision* caustics = needs.find(Effect::SurfaceCaustics);
@@ -116,6 +118,8 @@ std::vector<Quality> quality_candidates(const Quality& top) {
     vary(below(top.lookup_steps, kLookupSteps), [](Quality& q, uint32_t v) { q.lookup_steps = v; });
     vary(kernels, [](Quality& q, CausticKernel v) { q.caustic_kernel = v; });
     vary(map_scales, [](Quality& q, double v) { q.map_scale = v; });
+    vary(top.second_layer ? std::vector<bool>{true, false} : std::vector<bool>{false},
+         [](Quality& q, bool v) { q.second_layer = v; });
     std::vector<Quality> distinct;
     for (const Quality& candidate : candidates) {
         if (std::find(distinct.begin(), distinct.end(), candidate) == distinct.end()) distinct.push_back(candidate);
@@ -149,6 +153,9 @@ void apply_quality(const Quality& quality, const Quality& top, Scene& scene) {
     if (top.map_scale > 0.0) {
         scene.effects.caustics.kernel = quality.caustic_kernel;
         scene.effects.caustics.map_scale = quality.map_scale;
+    }
+    if (top.second_layer && !quality.second_layer) {
+        scene.effects[Effect::RefractionSecondLayer].mode = EffectMode::Off;
     }
 }
 
@@ -184,6 +191,9 @@ std::vector<std::string> quality_arguments(const Quality& quality, const Quality
     if (quality.map_scale != top.map_scale) {
         arguments.push_back("--set effects.caustics.map_scale=" + format_number(quality.map_scale));
     }
+    if (top.second_layer && !quality.second_layer) {
+        arguments.push_back("--set effects.refraction_second_layer.mode=off");
+    }
     return arguments;
 }
 
@@ -201,6 +211,7 @@ std::string describe_quality(const Quality& quality) {
     }
     if (quality.godray_grid > 0) text += ", godrays " + std::to_string(quality.godray_grid) + "^2";
     if (quality.lookup_steps > 0) text += ", lookup steps " + std::to_string(quality.lookup_steps);
+    if (quality.second_layer) text += ", second layer";
     if (quality.map_scale > 0.0) {
         text += std::string(", kernel ") + caustic_kernel_name(quality.caustic_kernel) + ", map scale " +
                 format_number(quality.map_scale);

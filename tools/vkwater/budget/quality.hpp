@@ -15,6 +15,9 @@
 //                    hat's taps, which span the photons' spacing in texels
 //   samples          --spp: the sub-frames of a box-filtered frame, each one every camera pass
 //                    again (the photon map once); at most the samples the command asked for
+//   second_layer     effects.refraction_second_layer: the refraction view's depth-peeled layer
+//                    (its pass, and the water's refracted rays marched again through it), on or
+//                    off where the needs run it
 #pragma once
 
 #include "engine/framegraph/frame_needs.hpp"
@@ -34,8 +37,9 @@ struct Quality {
     uint32_t lookup_steps = 0;     // 0: the water looks no scene view up
     uint32_t scene_lookups = 0;    // how many of reflection and refraction look the scene up (0 to 2)
     CausticKernel caustic_kernel = CausticKernel::Adaptive;  // the light-space map's splat kernel
-    double map_scale = 0.0;  // the light-space map's texels per water cell; 0: the frame makes no photon map
-    uint32_t samples = 1;    // samples per pixel, k^2 (engine/scene/pixel_filter.hpp)
+    double map_scale = 0.0;     // the light-space map's texels per water cell; 0: the frame makes no photon map
+    uint32_t samples = 1;       // samples per pixel, k^2 (engine/scene/pixel_filter.hpp)
+    bool second_layer = false;  // the refraction view's second layer runs (only where the needs run it)
     // Not a knob: the scene's caustic_visibility (below), the same in every candidate; the error
     // model scales the caustic knobs' terms by it.
     double caustic_visibility = 1.0;
