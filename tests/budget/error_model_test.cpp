@@ -82,6 +82,19 @@ TEST(BudgetErrorModel, TheSecondLayerOffCostsItsMeasuredExcess) {
     EXPECT_EQ(error_term(Knob::SecondLayer, 1.0), 0.0);
     Quality without{1.0, 1024, 256, 64};
     EXPECT_EQ(predict_error(without, without).excess, 0.0);
+
+    // Below the scene's lookup steps the layer finds nothing (its march takes a quarter of them):
+    // the steps' term holds its loss, and turning it off there costs nothing more.
+    top.lookup_steps = 64;
+    top.scene_lookups = 2;
+    for (uint32_t steps : {16u, 8u}) {
+        Quality fewer = top;
+        fewer.lookup_steps = steps;
+        Quality fewer_off = fewer;
+        fewer_off.second_layer = false;
+        EXPECT_EQ(predict_error(fewer_off, top).excess, predict_error(fewer, top).excess) << steps << " steps";
+        EXPECT_DOUBLE_EQ(predict_error(fewer, top).excess, error_term(Knob::LookupSteps, steps));
+    }
 }
 
 TEST(BudgetErrorModel, TheScenesOwnSettingsAddNothing) {
