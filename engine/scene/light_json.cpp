@@ -40,6 +40,8 @@ Sun read_sun(FieldReader& fields) {
     const auto azimuth = fields.optional_number("azimuth_deg", Range::closed(-360.0, 360.0, "degrees"));
     Sun sun;
     sun.irradiance = fields.vec3("irradiance", Range::radiometric("W m^-2"), defaults.irradiance);
+    sun.shadow_texels = static_cast<uint32_t>(
+        fields.integer("shadow_texels", Range::closed(16.0, 8192.0, "texels per side"), defaults.shadow_texels));
     // A misspelt "elevaton_deg" is the real reason when no form is found below.
     fields.finish();
 

@@ -45,6 +45,9 @@ struct Sun {
     // Irradiance on a plane normal to the beam, W m^-2 per channel. The default of 1 makes
     // radiances read directly as multiples of the sun's irradiance.
     glm::dvec3 irradiance{1.0, 1.0, 1.0};
+    // Texels per side of the sun shadow map that receiver meshes cast into (the floor, the
+    // caustic photons and the godrays read it): 1024 resolves about 2 cm over a 20 m floor.
+    uint32_t shadow_texels = 1024;
 };
 
 enum class SkyModel : uint8_t { Constant, Gradient };

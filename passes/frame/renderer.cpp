@@ -68,9 +68,6 @@ uint32_t caustic_map_texels(uint32_t grid_resolution, double map_scale) {
 
 VkDeviceSize hdr_bytes(uint32_t width, uint32_t height) { return VkDeviceSize{width} * height * 4 * sizeof(float); }
 
-// Texels per side of the sun shadow map: 1024 resolves about 2 cm over the default 20 m floor.
-constexpr uint32_t kSunShadowTexels = 1024;
-
 // The sun's direction under the flat surface (Snell; the sun is above the horizon, so it
 // always enters).
 glm::dvec3 refracted_sun(const Scene& scene) {
@@ -177,7 +174,7 @@ void build_frame_graph(fg::FrameGraph& graph, const Scene& scene, const FrameCon
         const double e = scene.floor.half_extent;
         shadow.bounds_lo = glm::min(receivers->bounds_lo(), glm::dvec3(-e, scene.floor.height, -e));
         shadow.bounds_hi = glm::max(receivers->bounds_hi(), glm::dvec3(e, scene.floor.height, e));
-        shadow.size = kSunShadowTexels;
+        shadow.size = scene.sun.shadow_texels;
         if (scene.water) shadow.beam = passes::UnderwaterBeam{refracted_sun(scene), scene.water->level};
         sun_shadow = passes::add_sun_shadow_pass(graph, *receivers, shadow);
         graph.blackboard().put(keys::kSunShadow, *sun_shadow);

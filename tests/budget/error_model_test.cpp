@@ -57,7 +57,8 @@ TEST(BudgetErrorModel, TableIsTheLargestMeasuredExcessOfEachKnob) {
                                                {"bilinear_kernel", Knob::BilinearKernel},
                                                {"map_scale_fraction", Knob::MapScaleFraction},
                                                {"samples_per_pixel", Knob::SamplesPerPixel},
-                                               {"second_layer", Knob::SecondLayer}};
+                                               {"second_layer", Knob::SecondLayer},
+                                               {"shadow_texels", Knob::ShadowTexels}};
     for (const auto& [key, excess] : largest) {
         ASSERT_TRUE(knobs.count(key.first)) << key.first;
         if (key.first == "godray_grid" && key.second > 64) continue;  // finer than the table: 0 by definition
@@ -95,6 +96,24 @@ TEST(BudgetErrorModel, TheSecondLayerOffCostsItsMeasuredExcess) {
         EXPECT_EQ(predict_error(fewer_off, top).excess, predict_error(fewer, top).excess) << steps << " steps";
         EXPECT_DOUBLE_EQ(predict_error(fewer, top).excess, error_term(Knob::LookupSteps, steps));
     }
+}
+
+// A smaller sun shadow map costs what the table measured below the scene's own map.
+TEST(BudgetErrorModel, ASmallerShadowMapCostsItsMeasuredExcess) {
+    Quality top{1.0, 1024, 256, 64};
+    top.shadow_texels = 1024;
+    Quality smaller = top;
+    smaller.shadow_texels = 256;
+    EXPECT_GT(error_term(Knob::ShadowTexels, 256), error_term(Knob::ShadowTexels, 512));
+    EXPECT_GT(error_term(Knob::ShadowTexels, 512), 0.0);
+    EXPECT_EQ(error_term(Knob::ShadowTexels, 2048), 0.0) << "finer than the table: nothing lost";
+    EXPECT_DOUBLE_EQ(predict_error(smaller, top).excess, error_term(Knob::ShadowTexels, 256));
+    EXPECT_EQ(predict_error(smaller, top).dominant, "sun shadow map");
+    // From a scene's own 512, 256 costs the difference.
+    Quality own = top;
+    own.shadow_texels = 512;
+    EXPECT_DOUBLE_EQ(predict_error(smaller, own).excess,
+                     error_term(Knob::ShadowTexels, 256) - error_term(Knob::ShadowTexels, 512));
 }
 
 TEST(BudgetErrorModel, TheScenesOwnSettingsAddNothing) {

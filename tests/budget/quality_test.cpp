@@ -74,6 +74,29 @@ TEST(BudgetQuality, TheSecondLayerTurnsOffOnlyWhereTheNeedsRunIt) {
     for (const Quality& q : quality_candidates(pool_top)) EXPECT_FALSE(q.second_layer);
 }
 
+// The sun shadow map's texels are a knob where receiver meshes cast into it (lake: 1024, 512 and
+// 256 in every combination of the other knobs); pool, with no receiver mesh, makes no shadow map.
+TEST(BudgetQuality, TheShadowMapTurnsDownOnlyWhereReceiversCastIntoIt) {
+    Scene lake = load_scene(kLake);
+    const Quality top = scene_quality(lake, decide_frame_needs(lake, 4.0 / 3.0));
+    ASSERT_EQ(top.shadow_texels, 1024u);
+    const std::vector<Quality> candidates = quality_candidates(top);
+    for (uint32_t texels : kShadowTexels) {
+        const auto count = std::count_if(candidates.begin(), candidates.end(),
+                                         [&](const Quality& q) { return q.shadow_texels == texels; });
+        EXPECT_EQ(3 * count, static_cast<std::ptrdiff_t>(candidates.size())) << texels;
+    }
+    Quality lower = top;
+    lower.shadow_texels = 256;
+    EXPECT_EQ(describe_arguments(quality_arguments(lower, top)), "--set sun.shadow_texels=256");
+    lake.sun.shadow_texels = 512;  // a scene's own lower map has only the lower steps below it
+    const Quality own = scene_quality(lake, decide_frame_needs(lake, 4.0 / 3.0));
+    for (const Quality& q : quality_candidates(own)) EXPECT_TRUE(q.shadow_texels == 512 || q.shadow_texels == 256);
+
+    const Scene pool = load_scene(kPool);
+    EXPECT_EQ(scene_quality(pool, decide_frame_needs(pool, 4.0 / 3.0)).shadow_texels, 0u);
+}
+
 // The kernel and the map's scale are knobs only where photons are splatted into the light-space
 // map: a scene already on the bilinear kernel keeps it, and at the lowest map scale there is no
 // lower one; the camera-space splats have neither knob.
@@ -151,10 +174,12 @@ TEST(BudgetQuality, ItsOptionsGiveTheSceneApplyQualityMakes) {
     ASSERT_GT(top.map_scale, 0.0) << "lake splats photons into the light-space map";
     const double half_map = std::max(kMinMapScale, 0.5 * top.map_scale);
     ASSERT_TRUE(top.second_layer) << "lake's refraction view has a second layer";
-    // The first two turn the second layer off (its default in a Quality), the third keeps it.
-    for (const Quality& q : {Quality{0.5, 128, 128, 0, 8, 2, CausticKernel::Bilinear, half_map},
-                             Quality{1.0, 256, 256, 32, 64, 2, top.caustic_kernel, half_map},
-                             Quality{0.35, 64, 64, 16, 16, 2, CausticKernel::Bilinear, top.map_scale, 1, true}, top}) {
+    ASSERT_EQ(top.shadow_texels, 1024u) << "lake's receivers cast into the sun shadow map";
+    // The first two turn the second layer off, the third keeps it; each has its own shadow map.
+    for (const Quality& q :
+         {Quality{0.5, 128, 128, 0, 8, 2, CausticKernel::Bilinear, half_map, 1, false, 256},
+          Quality{1.0, 256, 256, 32, 64, 2, top.caustic_kernel, half_map, 1, false, 1024},
+          Quality{0.35, 64, 64, 16, 16, 2, CausticKernel::Bilinear, top.map_scale, 1, true, 512}, top}) {
         Scene applied = original;
         apply_quality(q, top, applied);
         std::vector<std::string> overrides;
@@ -178,6 +203,7 @@ TEST(BudgetQuality, ItsOptionsGiveTheSceneApplyQualityMakes) {
         EXPECT_EQ(given.effects.caustics.map_scale, applied.effects.caustics.map_scale);
         EXPECT_EQ(given.effects[Effect::RefractionSecondLayer].mode,
                   applied.effects[Effect::RefractionSecondLayer].mode);
+        EXPECT_EQ(given.sun.shadow_texels, applied.sun.shadow_texels);
         Quality in_the_scene = q;  // the resolution scale is the renderer's option, not the scene's
         in_the_scene.render_scale = 1.0;
         EXPECT_EQ(scene_quality(given, decide_frame_needs(given, 4.0 / 3.0)), in_the_scene);

@@ -15,7 +15,8 @@
 # where photons are splatted into the light-space map (`caustic photons` among the passes), the
 # bilinear kernel in place of the scene's (the value: the photon grid fraction it is measured at,
 # the excess over the scene's kernel at that grid) and the map's scale as a fraction of the
-# scene's; where the needs run the refraction view's second layer, the layer off. Writes
+# scene's; where the needs run the refraction view's second layer, the layer off; where receiver
+# meshes cast into the sun shadow map, its texels per side at 512 and 256. Writes
 # docs/sweeps/budget_error_terms.csv, under a first line that says where it comes from. About 12 min
 # on 2 cores.
 set -euo pipefail
@@ -118,6 +119,12 @@ PY
     if $photon_map; then
         half_map=$(python3 -c "print(max(0.25, $map_scale * 0.5))")
         row map_scale_fraction 0.5 "$(relmse "$scene" --set "effects.caustics.map_scale=$half_map")"
+    fi
+    # The sun shadow map's texels per side, where receiver meshes cast into it.
+    if grep -qE '^ +[0-9]+\. sun shadow map ' <<<"$needs"; then
+        for texels in 512 256; do
+            row shadow_texels "$texels" "$(relmse "$scene" --set "sun.shadow_texels=$texels")"
+        done
     fi
     # The refraction view's second layer, where the needs run it: turned off (value 0).
     if grep -qE '^  refraction_second_layer: on' <<<"$needs"; then

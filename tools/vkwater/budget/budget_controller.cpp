@@ -24,7 +24,10 @@ BudgetController::BudgetController(double budget_ms, const Quality& top,
       drivers_(std::move(drivers)),
       output_rows_(std::move(output_rows)),
       candidates_(quality_candidates(top)),
-      current_(top) {}
+      current_(top) {
+    candidate_drivers_.reserve(candidates_.size());
+    for (const Quality& candidate : candidates_) candidate_drivers_.push_back(drivers_(candidate));
+}
 
 Choice BudgetController::describe(const Quality& quality) const {
     Choice choice;
@@ -35,20 +38,36 @@ Choice BudgetController::describe(const Quality& quality) const {
 }
 
 Choice BudgetController::choose(double limit_ms) const {
-    std::optional<Choice> best, cheapest;
+    // The viewer asks on every frame over the budget: each candidate's error and drivers are made
+    // once, and only its time is predicted again from the model as timed so far.
+    const double rows = output_rows_();
+    if (rows != error_rows_) {
+        candidate_errors_.clear();
+        for (const Quality& candidate : candidates_)
+            candidate_errors_.push_back(predict_error(candidate, top_, rows).excess);
+        error_rows_ = rows;
+    }
+    std::optional<size_t> best, cheapest;
+    double best_ms = 0.0, cheapest_ms = 0.0;
     for (size_t i = 0; i < candidates_.size(); ++i) {
-        const Choice choice = describe(candidates_[i]);
-        if (!cheapest || choice.predicted_ms < cheapest->predicted_ms) cheapest = choice;
+        const Quality& candidate = candidates_[i];
+        const double ms =
+            model_.predict_ms(candidate_drivers_[i], candidate.godray_grid > 0, candidate.render_scale < 1.0);
+        if (!cheapest || ms < cheapest_ms) {
+            cheapest = i;
+            cheapest_ms = ms;
+        }
         const auto ban = banned_until_.find(i);
-        if (ban != banned_until_.end() && frame_ < ban->second && candidates_[i] != current_) continue;
-        if (choice.predicted_ms > limit_ms) continue;
+        if (ban != banned_until_.end() && frame_ < ban->second && candidate != current_) continue;
+        if (ms > limit_ms) continue;
         // The lowest error; at equal error the cheaper.
-        if (!best || choice.error.excess < best->error.excess ||
-            (choice.error.excess == best->error.excess && choice.predicted_ms < best->predicted_ms)) {
-            best = choice;
+        const double error = candidate_errors_[i];
+        if (!best || error < candidate_errors_[*best] || (error == candidate_errors_[*best] && ms < best_ms)) {
+            best = i;
+            best_ms = ms;
         }
     }
-    return best ? *best : *cheapest;
+    return describe(candidates_[best ? *best : *cheapest]);
 }
 
 void BudgetController::add_pass_times(const std::vector<fg::PassTime>& passes) {

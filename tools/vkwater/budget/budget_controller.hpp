@@ -84,6 +84,11 @@ private:
     std::function<CostDrivers(const Quality&)> drivers_;
     std::function<double()> output_rows_;
     std::vector<Quality> candidates_;
+    // What choose() needs of each candidate that the timings do not change: its cost drivers, and
+    // its predicted error at the output's rows (`error_rows_`; made again when they change).
+    std::vector<CostDrivers> candidate_drivers_;
+    mutable std::vector<double> candidate_errors_;
+    mutable double error_rows_ = -1.0;
     CostModel model_;
     Quality current_;
     std::vector<double> frames_at_current_;

@@ -39,6 +39,8 @@ enum class Driver : uint8_t {
     GodrayPixels,       // the godray image's pixels
     LookupSteps,        // pixels times scene lookups times their most steps
     SecondLayerPixels,  // the scene's passes' pixels where the refraction view's second layer runs, else 0
+    ShadowTexels,       // the sun shadow map's texels (both of its halves), 0 where the frame makes none
+    ShadowTriangles,    // the receiver meshes' triangles drawn into the sun shadow map
     SubFrames,          // the frame's sub-frames (its samples per pixel): every pass runs in each, but
                         // the light-space photon map's, made once by the first
     Count

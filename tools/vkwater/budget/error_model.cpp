@@ -35,6 +35,7 @@ const std::vector<Entry>& table(Knob knob) {
         {1.0, 0.00991741}, {0.5, 0.00941222}, {0.25, 0.0214294}, {0.125, 0.0}};
     static const std::vector<Entry> map_scale_fraction = {{1.0, 0.0}, {0.5, 0.0270338}};
     static const std::vector<Entry> second_layer = {{1.0, 0.0}, {0.0, 0.0013903}};
+    static const std::vector<Entry> shadow_texels = {{1024, 0.0}, {512, 0.00042679}, {256, 0.00165248}};
     switch (knob) {
         case Knob::LookupSteps: return lookup_steps;
         case Knob::RenderScale: return render_scale;
@@ -45,6 +46,7 @@ const std::vector<Entry>& table(Knob knob) {
         case Knob::BilinearKernel: return bilinear_kernel;
         case Knob::MapScaleFraction: return map_scale_fraction;
         case Knob::SecondLayer: return second_layer;
+        case Knob::ShadowTexels: return shadow_texels;
     }
     return render_scale;
 }
@@ -62,6 +64,7 @@ const char* knob_name(Knob knob) {
         case Knob::BilinearKernel: return "bilinear_kernel";
         case Knob::MapScaleFraction: return "map_scale_fraction";
         case Knob::SecondLayer: return "second_layer";
+        case Knob::ShadowTexels: return "shadow_texels";
     }
     return "";
 }
@@ -160,6 +163,10 @@ ErrorPrediction predict_error(const Quality& quality, const Quality& top, double
     // against 0.0013903 and 0.00098328), so the layer's term counts only at the scene's own steps.
     if (top.second_layer && quality.lookup_steps >= top.lookup_steps) {
         terms.push_back({"refraction second layer", error_term(Knob::SecondLayer, quality.second_layer ? 1.0 : 0.0)});
+    }
+    if (top.shadow_texels > 0) {
+        terms.push_back({"sun shadow map", error_term(Knob::ShadowTexels, quality.shadow_texels) -
+                                               error_term(Knob::ShadowTexels, top.shadow_texels)});
     }
     ErrorPrediction prediction;
     double largest = 0.0;

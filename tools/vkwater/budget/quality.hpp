@@ -18,6 +18,8 @@
 //   second_layer     effects.refraction_second_layer: the refraction view's depth-peeled layer
 //                    (its pass, and the water's refracted rays marched again through it), on or
 //                    off where the needs run it
+//   shadow_texels    sun.shadow_texels: the sun shadow map's texels per side, where receiver
+//                    meshes cast into it
 #pragma once
 
 #include "engine/framegraph/frame_needs.hpp"
@@ -37,9 +39,10 @@ struct Quality {
     uint32_t lookup_steps = 0;     // 0: the water looks no scene view up
     uint32_t scene_lookups = 0;    // how many of reflection and refraction look the scene up (0 to 2)
     CausticKernel caustic_kernel = CausticKernel::Adaptive;  // the light-space map's splat kernel
-    double map_scale = 0.0;     // the light-space map's texels per water cell; 0: the frame makes no photon map
-    uint32_t samples = 1;       // samples per pixel, k^2 (engine/scene/pixel_filter.hpp)
-    bool second_layer = false;  // the refraction view's second layer runs (only where the needs run it)
+    double map_scale = 0.0;      // the light-space map's texels per water cell; 0: the frame makes no photon map
+    uint32_t samples = 1;        // samples per pixel, k^2 (engine/scene/pixel_filter.hpp)
+    bool second_layer = false;   // the refraction view's second layer runs (only where the needs run it)
+    uint32_t shadow_texels = 0;  // the sun shadow map's texels per side; 0: the frame makes none
     // Not a knob: the scene's caustic_visibility (below), the same in every candidate; the error
     // model scales the caustic knobs' terms by it.
     double caustic_visibility = 1.0;
@@ -89,5 +92,6 @@ inline constexpr uint32_t kLookupSteps[] = {16, 8};
 inline constexpr double kMapScaleFractions[] = {1.0, 0.5};  // of the scene's, at least kMinMapScale
 inline constexpr double kMinMapScale = 0.25;                // effects.caustics.map_scale's lower limit
 inline constexpr uint32_t kSampleCounts[] = {16, 9, 4, 1};  // k^2 strata, at most the command's --spp
+inline constexpr uint32_t kShadowTexels[] = {1024, 512, 256};
 
 }  // namespace vkw::budget
