@@ -50,61 +50,55 @@ uint32_t FrameGraph::add_pass_decl(std::string_view name, PassKind kind) {
         if (pass.name == name) throw InternalError("frame graph: two passes are named '" + std::string(name) + "'");
     }
     compiled_.reset();
+    // A new declaration with every field at its default, in the buffers of the name, the uses and
+    // the note that clear() kept (emptied) where there are some.
+    PassDecl pass{};
     if (spare_passes_.empty()) {
-        passes_.emplace_back().uses.reserve(kReservedUses);
+        pass.uses.reserve(kReservedUses);
     } else {
-        passes_.push_back(std::move(spare_passes_.back()));
+        PassDecl& kept = spare_passes_.back();
+        pass.name = std::move(kept.name);
+        pass.uses = std::move(kept.uses);
+        pass.note = std::move(kept.note);
         spare_passes_.pop_back();
     }
-    // Every field anew but the buffers of the name and the uses, which clear() emptied.
-    PassDecl& pass = passes_.back();
     pass.name.assign(name);
     pass.kind = kind;
-    pass.side_effect = false;
-    pass.serves.reset();
-    pass.recording.reset();
-    pass.execute = {};
+    passes_.push_back(std::move(pass));
     return static_cast<uint32_t>(passes_.size() - 1);
 }
 
-ResourceDecl& FrameGraph::add_resource(std::string_view name) {
+uint32_t FrameGraph::add_resource(std::string_view name, ResourceDecl decl) {
     compiled_.reset();
-    if (spare_resources_.empty()) {
-        resources_.emplace_back();
-    } else {
-        resources_.push_back(std::move(spare_resources_.back()));
+    // The name's and the writers' buffers that clear() kept (emptied), where there are some.
+    if (!spare_resources_.empty()) {
+        ResourceDecl& kept = spare_resources_.back();
+        decl.name = std::move(kept.name);
+        decl.writer_of_version = std::move(kept.writer_of_version);
         spare_resources_.pop_back();
     }
-    ResourceDecl& decl = resources_.back();
     decl.name.assign(name);
-    decl.is_image = true;
-    decl.imported = false;
-    decl.image = {};
-    decl.buffer = {};
-    decl.imported_image = {};
-    decl.imported_buffer = {};
-    decl.version = 0;
     decl.writer_of_version.push_back(Handle<ImageTag>::kInvalid);  // version 0 has no writer
-    decl.image_usage = 0;
-    decl.buffer_usage = 0;
-    return decl;
+    resources_.push_back(std::move(decl));
+    return static_cast<uint32_t>(resources_.size() - 1);
 }
 
 ImageHandle FrameGraph::import_image(std::string_view name, const ImportedImage& image) {
-    ResourceDecl& decl = add_resource(name);
+    ResourceDecl decl;
+    decl.is_image = true;
     decl.imported = true;
     decl.imported_image = image;
     decl.image = {image.format, SizeClass::Absolute, 1.0f, image.width, image.height};
-    return {static_cast<uint32_t>(resources_.size() - 1), 0};
+    return {add_resource(name, std::move(decl)), 0};
 }
 
 BufferHandle FrameGraph::import_buffer(std::string_view name, const ImportedBuffer& buffer) {
-    ResourceDecl& decl = add_resource(name);
+    ResourceDecl decl;
     decl.is_image = false;
     decl.imported = true;
     decl.imported_buffer = buffer;
     decl.buffer.size = buffer.size;
-    return {static_cast<uint32_t>(resources_.size() - 1), 0};
+    return {add_resource(name, std::move(decl)), 0};
 }
 
 void FrameGraph::check_current(uint32_t pass, uint32_t resource, uint32_t version, const char* verb) const {
@@ -159,15 +153,17 @@ uint32_t FrameGraph::image_height(uint32_t resource) const {
 }
 
 ImageHandle PassBuilder::create_image(std::string_view name, const ImageInfo& info) {
-    graph_.add_resource(name).image = info;
-    return {static_cast<uint32_t>(graph_.resources_.size() - 1), 0};
+    ResourceDecl decl;
+    decl.is_image = true;
+    decl.image = info;
+    return {graph_.add_resource(name, std::move(decl)), 0};
 }
 
 BufferHandle PassBuilder::create_buffer(std::string_view name, const BufferInfo& info) {
-    ResourceDecl& decl = graph_.add_resource(name);
+    ResourceDecl decl;
     decl.is_image = false;
     decl.buffer = info;
-    return {static_cast<uint32_t>(graph_.resources_.size() - 1), 0};
+    return {graph_.add_resource(name, std::move(decl)), 0};
 }
 
 template <class Tag>

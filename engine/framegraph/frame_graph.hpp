@@ -319,9 +319,8 @@ public:
 private:
     friend class PassBuilder;
     uint32_t add_pass_decl(std::string_view name, PassKind kind);
-    // A new resource, its fields at their defaults but its name (from the last declaration's
-    // storage where clear() kept one).
-    ResourceDecl& add_resource(std::string_view name);
+    // `decl` named `name` (its name and writers in the buffers clear() kept, where there are some).
+    uint32_t add_resource(std::string_view name, ResourceDecl decl);
     void check_current(uint32_t pass, uint32_t resource, uint32_t version, const char* verb) const;
     void check_requestable(uint32_t resource, uint32_t version) const;
     std::vector<ResourceTimeline> build_timelines(const std::vector<uint32_t>& order) const;
