@@ -16,7 +16,8 @@
 # bilinear kernel in place of the scene's (the value: the photon grid fraction it is measured at,
 # the excess over the scene's kernel at that grid) and the map's scale as a fraction of the
 # scene's; where the needs run the refraction view's second layer, the layer off; where receiver
-# meshes cast into the sun shadow map, its texels per side at 512 and 256. Writes
+# meshes cast into the sun shadow map, its texels per side at 512 and 256; where the scene has
+# terrain receivers, their cells per side at half and a quarter of their own. Writes
 # docs/sweeps/budget_error_terms.csv, under a first line that says where it comes from. About 12 min
 # on 2 cores.
 set -euo pipefail
@@ -126,6 +127,21 @@ PY
             row shadow_texels "$texels" "$(relmse "$scene" --set "sun.shadow_texels=$texels")"
         done
     fi
+    # The terrain receivers' cells per side as a fraction of each one's own (at least 2), where the
+    # scene has terrain: every terrain receiver at once, as the budget turns them.
+    for fraction in 0.5 0.25; do
+        terrain=()
+        while read -r option; do terrain+=(--set "$option"); done < <(python3 - "scenes/$scene.json" "$fraction" <<'PY'
+import json, sys
+scene = json.load(open(sys.argv[1]))
+for i, receiver in enumerate(scene.get("receivers", [])):
+    if receiver.get("type") == "terrain":
+        print(f"receivers[{i}].resolution={max(2, round(receiver.get('resolution', 64) * float(sys.argv[2])))}")
+PY
+        )
+        [ ${#terrain[@]} -gt 0 ] || break
+        row terrain_fraction "$fraction" "$(relmse "$scene" "${terrain[@]}")"
+    done
     # The refraction view's second layer, where the needs run it: turned off (value 0).
     if grep -qE '^  refraction_second_layer: on' <<<"$needs"; then
         row second_layer 0 "$(relmse "$scene" --set effects.refraction_second_layer.mode=off)"
