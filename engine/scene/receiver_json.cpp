@@ -61,8 +61,9 @@ Mesh read_gltf(FieldReader& fields, const FileScope& scope, const std::optional<
     return mesh;
 }
 
-Mesh read_shape(FieldReader& fields, ReceiverType type, const FileScope& scope,
-                const std::optional<glm::dvec3>& albedo) {
+// The receiver's mesh in object space; a terrain's shape in `terrain` too.
+Mesh read_shape(FieldReader& fields, ReceiverType type, const FileScope& scope, const std::optional<glm::dvec3>& albedo,
+                std::optional<TerrainShape>& terrain) {
     switch (type) {
         case ReceiverType::Plane: return make_plane_mesh(fields.vec2("half_size", Range::positive_length()));
         case ReceiverType::Box: return make_box_mesh(fields.vec3("half_size", Range::positive_length()));
@@ -77,6 +78,7 @@ Mesh read_shape(FieldReader& fields, ReceiverType type, const FileScope& scope,
             shape.seed = static_cast<uint64_t>(
                 fields.integer("seed", Range::closed(0.0, kMaxExactInteger), static_cast<int64_t>(defaults.seed)));
             fields.finish();  // no mesh from placeholders of missing fields
+            terrain = shape;
             return make_terrain_mesh(shape);
         }
         case ReceiverType::Gltf: return read_gltf(fields, scope, albedo);
@@ -100,7 +102,7 @@ Receiver read_receiver(FieldReader& fields, const FileScope& scope) {
         fields.finish();  // reports a misspelt type, or the missing one
     }
     receiver.type = *type;
-    receiver.mesh = read_shape(fields, receiver.type, scope, albedo);
+    receiver.mesh = read_shape(fields, receiver.type, scope, albedo, receiver.terrain);
     fields.finish();
     receiver.albedo = albedo.value_or(receiver.albedo);
 

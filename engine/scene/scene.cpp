@@ -85,6 +85,20 @@ glm::dmat4 projection_matrix(const Camera& camera, double aspect) {
     return shift * projection;
 }
 
+uint32_t terrain_cells(const TerrainShape& shape, double fraction) {
+    return std::max<uint32_t>(2, static_cast<uint32_t>(std::lround(shape.resolution * fraction)));
+}
+
+void set_terrain_detail(Receiver& receiver, double fraction) {
+    if (!receiver.terrain) return;
+    TerrainShape shape = *receiver.terrain;
+    shape.resolution = terrain_cells(shape, fraction);
+    const size_t vertices = size_t(shape.resolution + 1) * (shape.resolution + 1);
+    if (receiver.mesh.positions.size() == vertices) return;
+    receiver.mesh = make_terrain_mesh(shape);
+    transform_mesh(receiver.mesh, receiver.object_to_world);
+}
+
 std::vector<std::string> scene_warnings(const Scene& scene) {
     std::vector<std::string> warnings;
     for (const Receiver& receiver : scene.receivers) {

@@ -17,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include "engine/scene/builtin_meshes.hpp"
 #include "engine/scene/effects.hpp"
 #include "engine/scene/medium.hpp"
 #include "engine/scene/mesh.hpp"
@@ -138,7 +139,17 @@ struct Receiver {
     glm::dvec3 albedo{0.5, 0.5, 0.5};
     glm::dmat4 object_to_world{1.0};  // translation * rotation * scale, as in the file
     Mesh mesh;                        // world space
+    // A terrain's shape as the file gives it; its mesh may be drawn coarser (set_terrain_detail).
+    std::optional<TerrainShape> terrain;
 };
+
+// A terrain receiver's cells per side at `fraction` of the file's (at least 2, the schema's least).
+uint32_t terrain_cells(const TerrainShape& shape, double fraction);
+
+// Rebuilds a terrain receiver's mesh at `fraction` of its file's cells per side (1: the file's
+// own), for the frame-time budget's receiver-detail knob; nothing for other receivers or where the
+// mesh already has that many cells.
+void set_terrain_detail(Receiver& receiver, double fraction);
 
 // The receiver's triangles grouped by their Lambertian albedo, as both renderers shade them: the
 // mesh's material parts, or one part of `albedo` over every index.

@@ -4,6 +4,8 @@
 #include "passes/receivers/receiver_meshes.hpp"
 #include "passes/water/water_surface_spectrum.hpp"
 
+#include <algorithm>
+
 namespace vkw {
 
 SceneUploads::SceneUploads(Context& context) : context_(context) {}
@@ -12,12 +14,15 @@ SceneUploads::~SceneUploads() = default;
 
 std::shared_ptr<const passes::ReceiverMeshes> SceneUploads::receiver_meshes(const Scene& scene) {
     if (scene.receivers.empty()) return nullptr;
-    if (!receivers_ || receivers_source_ != &scene || receivers_load_id_ != scene.load_id ||
-        receivers_count_ != scene.receivers.size()) {
+    const bool same_sizes = std::equal(
+        receivers_vertices_.begin(), receivers_vertices_.end(), scene.receivers.begin(), scene.receivers.end(),
+        [](size_t vertices, const Receiver& receiver) { return vertices == receiver.mesh.positions.size(); });
+    if (!receivers_ || receivers_source_ != &scene || receivers_load_id_ != scene.load_id || !same_sizes) {
         receivers_ = std::make_shared<const passes::ReceiverMeshes>(context_, scene.receivers);
         receivers_source_ = &scene;
         receivers_load_id_ = scene.load_id;
-        receivers_count_ = scene.receivers.size();
+        receivers_vertices_.clear();
+        for (const Receiver& receiver : scene.receivers) receivers_vertices_.push_back(receiver.mesh.positions.size());
         ++receiver_uploads_;
     }
     return receivers_;

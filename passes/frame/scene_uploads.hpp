@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace vkw {
 class Context;
@@ -33,7 +34,8 @@ public:
     ~SceneUploads();
 
     // The scene's receiver meshes; null when it has none. Receivers are static: they are uploaded
-    // once per scene object, load and count.
+    // once per scene object, load and mesh sizes (the budget draws a terrain with fewer cells,
+    // set_terrain_detail, which changes its mesh's size).
     std::shared_ptr<const passes::ReceiverMeshes> receiver_meshes(const Scene& scene);
     // The FFT ocean's spectrum h0; null unless the water is the FFT ocean. Made again for a new
     // spectrum (new settings or seed).
@@ -47,7 +49,7 @@ private:
     std::shared_ptr<const passes::ReceiverMeshes> receivers_;
     const void* receivers_source_ = nullptr;  // the scene whose receivers they are
     uint64_t receivers_load_id_ = 0;          // and its Scene::load_id
-    size_t receivers_count_ = 0;
+    std::vector<size_t> receivers_vertices_;  // each receiver's vertex count
     size_t receiver_uploads_ = 0;
     std::shared_ptr<const passes::OceanSpectrumBuffer> ocean_;
     std::shared_ptr<const FftOceanSpectrum> ocean_source_;  // the CPU spectrum it was made from

@@ -58,7 +58,8 @@ TEST(BudgetErrorModel, TableIsTheLargestMeasuredExcessOfEachKnob) {
                                                {"map_scale_fraction", Knob::MapScaleFraction},
                                                {"samples_per_pixel", Knob::SamplesPerPixel},
                                                {"second_layer", Knob::SecondLayer},
-                                               {"shadow_texels", Knob::ShadowTexels}};
+                                               {"shadow_texels", Knob::ShadowTexels},
+                                               {"terrain_fraction", Knob::TerrainFraction}};
     for (const auto& [key, excess] : largest) {
         ASSERT_TRUE(knobs.count(key.first)) << key.first;
         if (key.first == "godray_grid" && key.second > 64) continue;  // finer than the table: 0 by definition
@@ -114,6 +115,19 @@ TEST(BudgetErrorModel, ASmallerShadowMapCostsItsMeasuredExcess) {
     own.shadow_texels = 512;
     EXPECT_DOUBLE_EQ(predict_error(smaller, own).excess,
                      error_term(Knob::ShadowTexels, 256) - error_term(Knob::ShadowTexels, 512));
+}
+
+// A coarser terrain costs what the table measured at that fraction of the scene's own cells.
+TEST(BudgetErrorModel, ACoarserTerrainCostsItsMeasuredExcess) {
+    Quality top{1.0, 512, 256, 64};
+    top.terrain_fraction = 1.0;
+    EXPECT_EQ(predict_error(top, top).excess, 0.0);
+    Quality quarter = top;
+    quarter.terrain_fraction = 0.25;
+    EXPECT_GT(error_term(Knob::TerrainFraction, 0.25), 0.0);
+    EXPECT_GE(error_term(Knob::TerrainFraction, 0.25), error_term(Knob::TerrainFraction, 0.5));
+    EXPECT_DOUBLE_EQ(predict_error(quarter, top).excess, error_term(Knob::TerrainFraction, 0.25));
+    EXPECT_EQ(predict_error(quarter, top).dominant, "terrain detail");
 }
 
 TEST(BudgetErrorModel, TheScenesOwnSettingsAddNothing) {

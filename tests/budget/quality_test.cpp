@@ -62,7 +62,7 @@ TEST(BudgetQuality, TheSecondLayerTurnsOffOnlyWhereTheNeedsRunIt) {
     }
     Quality off = top;
     off.second_layer = false;
-    EXPECT_EQ(describe_arguments(quality_arguments(off, top)), "--set effects.refraction_second_layer.mode=off");
+    EXPECT_EQ(describe_arguments(quality_arguments(off, top, lake)), "--set effects.refraction_second_layer.mode=off");
     Scene applied = lake;
     apply_quality(off, top, applied);
     EXPECT_EQ(applied.effects[Effect::RefractionSecondLayer].mode, EffectMode::Off);
@@ -88,13 +88,48 @@ TEST(BudgetQuality, TheShadowMapTurnsDownOnlyWhereReceiversCastIntoIt) {
     }
     Quality lower = top;
     lower.shadow_texels = 256;
-    EXPECT_EQ(describe_arguments(quality_arguments(lower, top)), "--set sun.shadow_texels=256");
+    EXPECT_EQ(describe_arguments(quality_arguments(lower, top, lake)), "--set sun.shadow_texels=256");
     lake.sun.shadow_texels = 512;  // a scene's own lower map has only the lower steps below it
     const Quality own = scene_quality(lake, decide_frame_needs(lake, 4.0 / 3.0));
     for (const Quality& q : quality_candidates(own)) EXPECT_TRUE(q.shadow_texels == 512 || q.shadow_texels == 256);
 
     const Scene pool = load_scene(kPool);
     EXPECT_EQ(scene_quality(pool, decide_frame_needs(pool, 4.0 / 3.0)).shadow_texels, 0u);
+}
+
+// The terrain's cells are a knob where the scene has a terrain receiver (lake's bed: its own 128,
+// 64 and 32 in every combination of the other knobs), set per receiver in the options and quoted
+// for a shell; applying a setting rebuilds only the terrain, and the top rebuilds it back.
+TEST(BudgetQuality, TheTerrainTurnsDownOnlyWhereTheSceneHasOne) {
+    const Scene lake = load_scene(kLake);
+    const Quality top = scene_quality(lake, decide_frame_needs(lake, 4.0 / 3.0));
+    ASSERT_EQ(top.terrain_fraction, 1.0);
+    ASSERT_EQ(lake.receivers[0].terrain->resolution, 128u);
+    const std::vector<Quality> candidates = quality_candidates(top);
+    for (double fraction : kTerrainFractions) {
+        const auto count = std::count_if(candidates.begin(), candidates.end(),
+                                         [&](const Quality& q) { return q.terrain_fraction == fraction; });
+        EXPECT_EQ(3 * count, static_cast<std::ptrdiff_t>(candidates.size())) << fraction;
+    }
+    Quality lower = top;
+    lower.terrain_fraction = 0.25;
+    EXPECT_EQ(quality_arguments(lower, top, lake), std::vector<std::string>{"--set receivers[0].resolution=32"});
+    EXPECT_EQ(describe_arguments(quality_arguments(lower, top, lake)), "--set 'receivers[0].resolution=32'");
+    Scene applied = lake;
+    apply_quality(lower, top, applied);
+    EXPECT_EQ(applied.receivers[0].mesh.positions.size(), 33u * 33u);
+    EXPECT_EQ(applied.receivers[0].mesh.indices.size(), 6u * 32u * 32u);
+    for (size_t i = 1; i < lake.receivers.size(); ++i) {
+        EXPECT_EQ(applied.receivers[i].mesh.positions, lake.receivers[i].mesh.positions) << i;
+    }
+    apply_quality(top, top, applied);
+    EXPECT_EQ(applied.receivers[0].mesh.positions, lake.receivers[0].mesh.positions);
+    EXPECT_EQ(applied.receivers[0].mesh.normals, lake.receivers[0].mesh.normals);
+
+    const Scene pool = load_scene(kPool);
+    const Quality pool_top = scene_quality(pool, decide_frame_needs(pool, 4.0 / 3.0));
+    EXPECT_EQ(pool_top.terrain_fraction, 0.0);
+    for (const Quality& q : quality_candidates(pool_top)) EXPECT_EQ(q.terrain_fraction, 0.0);
 }
 
 // The kernel and the map's scale are knobs only where photons are splatted into the light-space
@@ -129,12 +164,12 @@ TEST(BudgetQuality, TheSamplesAreSquaresUpToTheCommands) {
     std::set<uint32_t> samples;
     for (const Quality& q : candidates) samples.insert(q.samples);
     EXPECT_EQ(samples, (std::set<uint32_t>{1, 4, 9}));
-    EXPECT_TRUE(quality_arguments(one, one).empty());
-    EXPECT_EQ(describe_arguments(quality_arguments(nine, nine)), "--spp 9");
+    EXPECT_TRUE(quality_arguments(one, one, scene).empty());
+    EXPECT_EQ(describe_arguments(quality_arguments(nine, nine, scene)), "--spp 9");
     Quality four = nine;
     four.samples = 4;
     four.render_scale = 0.5;
-    EXPECT_EQ(describe_arguments(quality_arguments(four, nine)), "--render-scale 0.5 --spp 4");
+    EXPECT_EQ(describe_arguments(quality_arguments(four, nine, scene)), "--render-scale 0.5 --spp 4");
 }
 
 TEST(BudgetQuality, ASceneWithoutWaterTurnsOnlyTheResolution) {
@@ -157,7 +192,7 @@ TEST(BudgetQuality, InfiniteWaterKeepsTheScreensGrid) {
         apply_quality(q, top, applied);
         EXPECT_FALSE(applied.water->mesh_resolution.has_value());
         EXPECT_EQ(applied.water->screen_mesh_cell_pixels(), original.water->screen_mesh_cell_pixels());
-        for (const std::string& argument : quality_arguments(q, top)) {
+        for (const std::string& argument : quality_arguments(q, top, original)) {
             EXPECT_EQ(argument.find("mesh_resolution"), std::string::npos) << argument;
         }
     }
@@ -175,16 +210,18 @@ TEST(BudgetQuality, ItsOptionsGiveTheSceneApplyQualityMakes) {
     const double half_map = std::max(kMinMapScale, 0.5 * top.map_scale);
     ASSERT_TRUE(top.second_layer) << "lake's refraction view has a second layer";
     ASSERT_EQ(top.shadow_texels, 1024u) << "lake's receivers cast into the sun shadow map";
-    // The first two turn the second layer off, the third keeps it; each has its own shadow map.
+    ASSERT_EQ(top.terrain_fraction, 1.0) << "lake's bed is a terrain";
+    // The first two turn the second layer off, the third keeps it; each has its own shadow map and
+    // its own terrain detail.
     for (const Quality& q :
-         {Quality{0.5, 128, 128, 0, 8, 2, CausticKernel::Bilinear, half_map, 1, false, 256},
-          Quality{1.0, 256, 256, 32, 64, 2, top.caustic_kernel, half_map, 1, false, 1024},
-          Quality{0.35, 64, 64, 16, 16, 2, CausticKernel::Bilinear, top.map_scale, 1, true, 512}, top}) {
+         {Quality{0.5, 128, 128, 0, 8, 2, CausticKernel::Bilinear, half_map, 1, false, 256, 0.25},
+          Quality{1.0, 256, 256, 32, 64, 2, top.caustic_kernel, half_map, 1, false, 1024, 1.0},
+          Quality{0.35, 64, 64, 16, 16, 2, CausticKernel::Bilinear, top.map_scale, 1, true, 512, 0.5}, top}) {
         Scene applied = original;
         apply_quality(q, top, applied);
         std::vector<std::string> overrides;
         double scale = 1.0;
-        for (const std::string& argument : quality_arguments(q, top)) {
+        for (const std::string& argument : quality_arguments(q, top, original)) {
             std::istringstream words(argument);
             std::string option, value;
             words >> option >> value;
@@ -204,11 +241,17 @@ TEST(BudgetQuality, ItsOptionsGiveTheSceneApplyQualityMakes) {
         EXPECT_EQ(given.effects[Effect::RefractionSecondLayer].mode,
                   applied.effects[Effect::RefractionSecondLayer].mode);
         EXPECT_EQ(given.sun.shadow_texels, applied.sun.shadow_texels);
+        ASSERT_EQ(given.receivers.size(), applied.receivers.size());
+        for (size_t i = 0; i < given.receivers.size(); ++i) {
+            EXPECT_EQ(given.receivers[i].mesh.positions, applied.receivers[i].mesh.positions) << i;
+            EXPECT_EQ(given.receivers[i].mesh.indices, applied.receivers[i].mesh.indices) << i;
+        }
         Quality in_the_scene = q;  // the resolution scale is the renderer's option, not the scene's
         in_the_scene.render_scale = 1.0;
+        in_the_scene.terrain_fraction = 1.0;  // the given terrain's own cells are the lowered ones
         EXPECT_EQ(scene_quality(given, decide_frame_needs(given, 4.0 / 3.0)), in_the_scene);
     }
-    EXPECT_EQ(describe_arguments(quality_arguments(top, top)), "the scene's own settings");
+    EXPECT_EQ(describe_arguments(quality_arguments(top, top, original)), "the scene's own settings");
 }
 
 }  // namespace

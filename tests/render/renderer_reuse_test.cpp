@@ -147,6 +147,31 @@ TEST_F(RendererReuse, RenderersSharingUploadsUploadTheReceiversOnce) {
     }
 }
 
+// The budget draws a terrain with fewer cells by rebuilding its mesh in the same scene
+// (set_terrain_detail): the renderer uploads the new mesh, whose image is the one a scene loaded at
+// those cells renders, bit for bit, and back at the file's cells the first image again.
+TEST_F(RendererReuse, ATerrainDrawnWithFewerCellsIsUploadedAgain) {
+    const auto uploads = std::make_shared<SceneUploads>(context());
+    Renderer renderer(context(), nullptr, uploads), fresh(context());
+    const RenderOptions options{33, 33, true, fg::TimingMode::None};
+    const auto terrain = [](int cells) {
+        return overhead_receiver_scene(R"({"type": "terrain", "size": 4, "height": 0.5, "seed": 7, "resolution": )" +
+                                           std::to_string(cells) + R"(, "translation": [0, 0.5, 0]})",
+                                       "terrain.json");
+    };
+    Scene scene = terrain(64);
+    const ImageRGBA32F own = renderer.render(scene, options).image;
+    const size_t uploaded = uploads->receiver_uploads();
+    set_terrain_detail(scene.receivers[0], 0.25);
+    const ImageRGBA32F coarse = renderer.render(scene, options).image;
+    EXPECT_EQ(uploads->receiver_uploads(), uploaded + 1);
+    EXPECT_EQ(coarse.rgba, fresh.render(terrain(16), options).image.rgba);
+    EXPECT_NE(coarse.rgba, own.rgba) << "16 cells of a terrain with 4 waves across it draw other triangles";
+    set_terrain_detail(scene.receivers[0], 1.0);
+    EXPECT_EQ(renderer.render(scene, options).image.rgba, own.rgba);
+    EXPECT_EQ(uploads->receiver_uploads(), uploaded + 2);
+}
+
 // A caller that hands each frame to another image of the same size and format (a host's next
 // target, the embedding library's) keeps the frame's device objects under dynamic rendering, where
 // the executor reads imported images from the graph it runs; a VkRenderPass frame's framebuffers

@@ -44,7 +44,11 @@ for scene in "${scenes[@]}"; do
     fps=$(python3 -c "print(f'{1000 / $median:.1f}')")
     settings=$(sed -n 's/.*settings at exit: \(.*\) (\([0-9]*\) changes)$/\1/p' "$log")
     changes=$(sed -n 's/.*settings at exit: .* (\([0-9]*\) changes)$/\1/p' "$log")
-    if [ "$settings" = "the scene's own settings" ]; then args=(); else read -r -a args <<<"$settings"; fi
+    # Split as a shell would: a --set value with brackets comes quoted ("receivers[0].resolution").
+    args=()
+    if [ "$settings" != "the scene's own settings" ]; then
+        mapfile -t args < <(python3 -c 'import shlex, sys; print("\n".join(shlex.split(sys.argv[1])))' "$settings")
+    fi
     own=$(relmse_at_reference_size "$scene")
     chosen=$(relmse_at_reference_size "$scene" "${args[@]}")
     echo "| $scene | $median | $fps | $changes | \`$settings\` | $own | $chosen |"

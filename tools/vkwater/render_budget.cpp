@@ -84,7 +84,7 @@ BudgetedSettings choose_budgeted_settings(Renderer& renderer, Scene& scene, Rend
 
     BudgetedSettings settings;
     settings.quality = chosen.quality;
-    settings.arguments = budget::quality_arguments(chosen.quality, top);
+    settings.arguments = budget::quality_arguments(chosen.quality, top, original);
     settings.measured_ms = chosen.measured_ms;
     // The prediction made before it ran (the scene's own settings ran first, unpredicted).
     settings.predicted_ms = chosen.predicted_ms > 0.0 ? chosen.predicted_ms : chosen.measured_ms;

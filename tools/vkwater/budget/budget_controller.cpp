@@ -47,12 +47,20 @@ Choice BudgetController::choose(double limit_ms) const {
             candidate_errors_.push_back(predict_error(candidate, top_, rows).excess);
         error_rows_ = rows;
     }
+    if (model_.passes_revision() != passes_revision_) {
+        candidate_passes_ms_.clear();
+        for (size_t i = 0; i < candidates_.size(); ++i) {
+            const Quality& candidate = candidates_[i];
+            candidate_passes_ms_.push_back(model_.predict_passes_ms(candidate_drivers_[i], candidate.godray_grid > 0,
+                                                                    candidate.render_scale < 1.0));
+        }
+        passes_revision_ = model_.passes_revision();
+    }
     std::optional<size_t> best, cheapest;
     double best_ms = 0.0, cheapest_ms = 0.0;
     for (size_t i = 0; i < candidates_.size(); ++i) {
         const Quality& candidate = candidates_[i];
-        const double ms =
-            model_.predict_ms(candidate_drivers_[i], candidate.godray_grid > 0, candidate.render_scale < 1.0);
+        const double ms = model_.frame_factor() * candidate_passes_ms_[i];  // as predict_ms makes it
         if (!cheapest || ms < cheapest_ms) {
             cheapest = i;
             cheapest_ms = ms;

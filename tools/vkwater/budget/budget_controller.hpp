@@ -89,6 +89,11 @@ private:
     std::vector<CostDrivers> candidate_drivers_;
     mutable std::vector<double> candidate_errors_;
     mutable double error_rows_ = -1.0;
+    // Each candidate's passes' predicted sum, before the frame factor, as of the cost model's
+    // `passes_revision_`: only a per-pass timing refits the passes, every 30 frames, while the
+    // frame factor moves with every frame.
+    mutable std::vector<double> candidate_passes_ms_;
+    mutable uint64_t passes_revision_ = ~uint64_t{0};
     CostModel model_;
     Quality current_;
     std::vector<double> frames_at_current_;

@@ -39,15 +39,21 @@ const std::vector<KnownPass>& known_passes() {
         {"camera medium", {{{D::Pixels, 30.0}, {D::MeshTriangles, 100.0}}}},
         {"sky", {{{D::Pixels, 20.0}}}},
         {"floor", {{{D::Pixels, 5.0}}}},
-        {"receivers", {{{D::Pixels, 40.0}}}},
-        {"refraction view", {{{D::Pixels, 50.0}}}},
-        {"refraction view second layer", {.ns_per_unit = {{D::SecondLayerPixels, 50.0}}, .second_layer = true}},
-        {"mirrored reflection view", {{{D::Pixels, 50.0}}}},
+        // The views of the receiver meshes: their triangles' rates from lake's cheapest setting at
+        // 200x150 with its bed at 128, 64 and 32 cells per side, 37,500, 12,900 and 6,800 triangles
+        // (docs/performance.md "The frame-time budget"); the second layer draws what the refraction
+        // view draws.
+        {"receivers", {{{D::Pixels, 40.0}, {D::ReceiverTriangles, 340.0}}}},
+        {"refraction view", {{{D::Pixels, 50.0}, {D::ReceiverTriangles, 550.0}}}},
+        {"refraction view second layer",
+         {.ns_per_unit = {{D::SecondLayerPixels, 50.0}, {D::ReceiverTriangles, 550.0}}, .second_layer = true}},
+        {"mirrored reflection view", {{{D::Pixels, 50.0}, {D::ReceiverTriangles, 250.0}}}},
         {"calibration", {{{D::Pixels, 2.0}}}},
         // Lake's cheapest setting at 200x150 (its receivers' 37,500 triangles, each drawn into both
         // halves): 72 ms with 1024^2 texels a half, 39 ms with 256^2 (the machine shared with a
-        // build, so only the split between texels and triangles counts).
-        {"sun shadow map", {{{D::ShadowTexels, 17.6}, {D::ShadowTriangles, 980.0}}}},
+        // build); at 256^2, 15.0, 6.8 and 3.8 ms with the bed at 128, 64 and 32 cells (the
+        // triangles' rate, as the views' above).
+        {"sun shadow map", {{{D::ShadowTexels, 17.6}, {D::ShadowTriangles, 350.0}}}},
         {"water surface (wave sum)", {{{D::SurfaceVertices, 20.0}}}},
         {"water surface (ocean grid)", {{{D::SurfaceVertices, 20.0}}}},
         {"water mesh (wave sum)", {{{D::MeshVertices, 21.0}}}},
@@ -122,11 +128,19 @@ CostDrivers cost_drivers(const Scene& scene, const Quality& quality, uint32_t wi
     }
     at(drivers, Driver::LookupSteps) = at(drivers, Driver::Pixels) * quality.scene_lookups * quality.lookup_steps;
     if (quality.second_layer) at(drivers, Driver::SecondLayerPixels) = at(drivers, Driver::Pixels);
+    double triangles = 0.0;
+    for (const Receiver& receiver : scene.receivers) {
+        if (receiver.terrain && quality.terrain_fraction > 0.0) {
+            const double cells = terrain_cells(*receiver.terrain, quality.terrain_fraction);
+            triangles += 2.0 * cells * cells;
+        } else {
+            triangles += double(receiver.mesh.indices.size()) / 3.0;
+        }
+    }
+    at(drivers, Driver::ReceiverTriangles) = triangles;
     if (quality.shadow_texels > 0) {
         const double texels = quality.shadow_texels;
         at(drivers, Driver::ShadowTexels) = 2.0 * texels * texels;  // two halves (passes/receivers/sun_shadow.hpp)
-        double triangles = 0.0;
-        for (const Receiver& receiver : scene.receivers) triangles += double(receiver.mesh.indices.size()) / 3.0;
         at(drivers, Driver::ShadowTriangles) = triangles;
     }
     if (quality.godray_grid > 0) {
@@ -144,6 +158,7 @@ double PassFormula::runs_per_frame(const CostDrivers& drivers) const {
 }
 
 double PassFormula::prior_ms(const CostDrivers& drivers) const {
+    if (second_layer && at(drivers, Driver::SecondLayerPixels) == 0.0) return 0.0;  // the pass does not run
     double ns = 0.0;
     for (const auto& [driver, rate] : ns_per_unit) ns += rate * at(drivers, driver);
     return ns * 1e-6 * runs_per_frame(drivers);
@@ -158,6 +173,7 @@ PassFormula pass_formula(const std::string& pass) {
 
 void CostModel::observe_passes(const std::vector<fg::PassTime>& passes, const CostDrivers& drivers) {
     passes_.clear();  // the frame's pass list is the one to predict from
+    ++passes_revision_;
     for (const fg::PassTime& pass : passes) {
         FittedPass fitted;
         fitted.formula = pass_formula(pass.pass);

@@ -41,6 +41,7 @@ enum class Driver : uint8_t {
     SecondLayerPixels,  // the scene's passes' pixels where the refraction view's second layer runs, else 0
     ShadowTexels,       // the sun shadow map's texels (both of its halves), 0 where the frame makes none
     ShadowTriangles,    // the receiver meshes' triangles drawn into the sun shadow map
+    ReceiverTriangles,  // the receiver meshes' triangles, drawn by each view of them (terrain at its fraction)
     SubFrames,          // the frame's sub-frames (its samples per pixel): every pass runs in each, but
                         // the light-space photon map's, made once by the first
     Count
@@ -78,6 +79,8 @@ public:
     // The same before the frame factor: the sum of the passes' predictions.
     double predict_passes_ms(const CostDrivers& drivers, bool godrays, bool upscale) const;
     bool fitted() const { return !passes_.empty(); }
+    // Counts the per-pass refits: predict_passes_ms changes only when it does.
+    uint64_t passes_revision() const { return passes_revision_; }
     double frame_factor() const { return frame_factor_; }
 
 private:
@@ -89,6 +92,7 @@ private:
     double typical_factor() const;  // for passes never timed: the median of the fitted ones
     std::map<std::string, FittedPass> passes_;
     double frame_factor_ = 1.0;
+    uint64_t passes_revision_ = 0;
 };
 
 }  // namespace vkw::budget

@@ -36,6 +36,7 @@ const std::vector<Entry>& table(Knob knob) {
     static const std::vector<Entry> map_scale_fraction = {{1.0, 0.0}, {0.5, 0.0270338}};
     static const std::vector<Entry> second_layer = {{1.0, 0.0}, {0.0, 0.0013903}};
     static const std::vector<Entry> shadow_texels = {{1024, 0.0}, {512, 0.00042679}, {256, 0.00165248}};
+    static const std::vector<Entry> terrain_fraction = {{1.0, 0.0}, {0.5, 0.0}, {0.25, 0.000222}};
     switch (knob) {
         case Knob::LookupSteps: return lookup_steps;
         case Knob::RenderScale: return render_scale;
@@ -47,6 +48,7 @@ const std::vector<Entry>& table(Knob knob) {
         case Knob::MapScaleFraction: return map_scale_fraction;
         case Knob::SecondLayer: return second_layer;
         case Knob::ShadowTexels: return shadow_texels;
+        case Knob::TerrainFraction: return terrain_fraction;
     }
     return render_scale;
 }
@@ -65,6 +67,7 @@ const char* knob_name(Knob knob) {
         case Knob::MapScaleFraction: return "map_scale_fraction";
         case Knob::SecondLayer: return "second_layer";
         case Knob::ShadowTexels: return "shadow_texels";
+        case Knob::TerrainFraction: return "terrain_fraction";
     }
     return "";
 }
@@ -167,6 +170,9 @@ ErrorPrediction predict_error(const Quality& quality, const Quality& top, double
     if (top.shadow_texels > 0) {
         terms.push_back({"sun shadow map", error_term(Knob::ShadowTexels, quality.shadow_texels) -
                                                error_term(Knob::ShadowTexels, top.shadow_texels)});
+    }
+    if (top.terrain_fraction > 0.0) {
+        terms.push_back({"terrain detail", error_term(Knob::TerrainFraction, quality.terrain_fraction)});
     }
     ErrorPrediction prediction;
     double largest = 0.0;

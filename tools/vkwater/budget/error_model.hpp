@@ -51,8 +51,8 @@ double resolution_error(double rows_fraction);
 // One knob's term: the table's excess at `value` (a resolution scale, a photon grid fraction, a
 // mesh resolution, a godray grid, lookup steps, the photon grid fraction at which the bilinear
 // kernel replaces the scene's, the map scale as a fraction of the scene's, samples per pixel, the
-// second layer on or off, the shadow map's texels), the nearest step's where the table has no such
-// value.
+// second layer on or off, the shadow map's texels, the terrain's cells as a fraction of its own),
+// the nearest step's where the table has no such value.
 enum class Knob : uint8_t {
     RenderScale,
     SamplesPerPixel,  // gains (negative) over one sample, which resolution_error counts as rows
@@ -62,8 +62,9 @@ enum class Knob : uint8_t {
     LookupSteps,
     BilinearKernel,
     MapScaleFraction,
-    SecondLayer,  // 1: the refraction view's second layer runs, 0: turned off
-    ShadowTexels  // the sun shadow map's texels per side
+    SecondLayer,     // 1: the refraction view's second layer runs, 0: turned off
+    ShadowTexels,    // the sun shadow map's texels per side
+    TerrainFraction  // the terrain receivers' cells per side over their own
 };
 double error_term(Knob knob, double value);
 const char* knob_name(Knob knob);  // its name in docs/sweeps/budget_error_terms.csv

@@ -74,6 +74,9 @@ Quality scene_quality(const Scene& scene, const fg::FrameNeeds& needs, uint32_t 
     }
     // The renderer makes the sun shadow map where receiver meshes can cast into it.
     if (!scene.receivers.empty() && scene.sun.direction.y < 0.0) quality.shadow_texels = scene.sun.shadow_texels;
+    for (const Receiver& receiver : scene.receivers) {
+        if (receiver.terrain) quality.terrain_fraction = 1.0;
+    }
     return quality;
 }
 
@@ -129,6 +132,9 @@ std::vector<Quality> quality_candidates(const Quality& top) {
     vary(top.second_layer ? std::vector<bool>{true, false} : std::vector<bool>{false},
          [](Quality& q, bool v) { q.second_layer = v; });
     vary(below(top.shadow_texels, kShadowTexels), [](Quality& q, uint32_t v) { q.shadow_texels = v; });
+    vary(top.terrain_fraction > 0.0 ? std::vector<double>(std::begin(kTerrainFractions), std::end(kTerrainFractions))
+                                    : std::vector<double>{0.0},
+         [](Quality& q, double v) { q.terrain_fraction = v; });
     return candidates;
 }
 
@@ -163,9 +169,13 @@ void apply_quality(const Quality& quality, const Quality& top, Scene& scene) {
         scene.effects[Effect::RefractionSecondLayer].mode = EffectMode::Off;
     }
     if (quality.shadow_texels != top.shadow_texels) scene.sun.shadow_texels = quality.shadow_texels;
+    // At the top too: the viewer applies every frame to the scene it applied the last setting to.
+    if (top.terrain_fraction > 0.0) {
+        for (Receiver& receiver : scene.receivers) set_terrain_detail(receiver, quality.terrain_fraction);
+    }
 }
 
-std::vector<std::string> quality_arguments(const Quality& quality, const Quality& top) {
+std::vector<std::string> quality_arguments(const Quality& quality, const Quality& top, const Scene& scene) {
     std::vector<std::string> arguments;
     if (quality.render_scale != top.render_scale)
         arguments.push_back("--render-scale " + format_number(quality.render_scale));
@@ -203,12 +213,26 @@ std::vector<std::string> quality_arguments(const Quality& quality, const Quality
     if (quality.shadow_texels != top.shadow_texels) {
         arguments.push_back("--set sun.shadow_texels=" + std::to_string(quality.shadow_texels));
     }
+    if (quality.terrain_fraction != top.terrain_fraction) {
+        for (size_t i = 0; i < scene.receivers.size(); ++i) {
+            const std::optional<TerrainShape>& terrain = scene.receivers[i].terrain;
+            if (!terrain) continue;
+            arguments.push_back("--set receivers[" + std::to_string(i) +
+                                "].resolution=" + std::to_string(terrain_cells(*terrain, quality.terrain_fraction)));
+        }
+    }
     return arguments;
 }
 
 std::string describe_arguments(const std::vector<std::string>& arguments) {
     std::string text;
-    for (const std::string& argument : arguments) text += (text.empty() ? "" : " ") + argument;
+    for (const std::string& argument : arguments) {
+        // "--set receivers[0].resolution=32": quoted, or a shell would take the brackets as a pattern.
+        const size_t value = argument.find(' ') + 1;
+        const bool quote = argument.rfind("--set ", 0) == 0 && argument.find('[') != std::string::npos;
+        text += (text.empty() ? "" : " ") +
+                (quote ? argument.substr(0, value) + "'" + argument.substr(value) + "'" : argument);
+    }
     return text.empty() ? "the scene's own settings" : text;
 }
 
@@ -222,6 +246,7 @@ std::string describe_quality(const Quality& quality) {
     if (quality.lookup_steps > 0) text += ", lookup steps " + std::to_string(quality.lookup_steps);
     if (quality.second_layer) text += ", second layer";
     if (quality.shadow_texels > 0) text += ", shadow map " + std::to_string(quality.shadow_texels) + "^2";
+    if (quality.terrain_fraction > 0.0) text += ", terrain cells x" + format_number(quality.terrain_fraction);
     if (quality.map_scale > 0.0) {
         text += std::string(", kernel ") + caustic_kernel_name(quality.caustic_kernel) + ", map scale " +
                 format_number(quality.map_scale);

@@ -20,6 +20,9 @@
 //                    off where the needs run it
 //   shadow_texels    sun.shadow_texels: the sun shadow map's texels per side, where receiver
 //                    meshes cast into it
+//   terrain_fraction the terrain receivers' cells per side over the file's (receivers[i].resolution):
+//                    the triangles every view of the receivers draws (the camera's, the scene
+//                    views', the sun shadow map's), where the scene has terrain
 #pragma once
 
 #include "engine/framegraph/frame_needs.hpp"
@@ -39,10 +42,11 @@ struct Quality {
     uint32_t lookup_steps = 0;     // 0: the water looks no scene view up
     uint32_t scene_lookups = 0;    // how many of reflection and refraction look the scene up (0 to 2)
     CausticKernel caustic_kernel = CausticKernel::Adaptive;  // the light-space map's splat kernel
-    double map_scale = 0.0;      // the light-space map's texels per water cell; 0: the frame makes no photon map
-    uint32_t samples = 1;        // samples per pixel, k^2 (engine/scene/pixel_filter.hpp)
-    bool second_layer = false;   // the refraction view's second layer runs (only where the needs run it)
-    uint32_t shadow_texels = 0;  // the sun shadow map's texels per side; 0: the frame makes none
+    double map_scale = 0.0;         // the light-space map's texels per water cell; 0: the frame makes no photon map
+    uint32_t samples = 1;           // samples per pixel, k^2 (engine/scene/pixel_filter.hpp)
+    bool second_layer = false;      // the refraction view's second layer runs (only where the needs run it)
+    uint32_t shadow_texels = 0;     // the sun shadow map's texels per side; 0: the frame makes none
+    double terrain_fraction = 0.0;  // the terrain receivers' cells per side over their own; 0: no terrain
     // Not a knob: the scene's caustic_visibility (below), the same in every candidate; the error
     // model scales the caustic knobs' terms by it.
     double caustic_visibility = 1.0;
@@ -76,8 +80,10 @@ void apply_quality(const Quality& quality, const Quality& top, Scene& scene);
 // The command-line options that give `quality` explicitly, relative to the scene's own settings
 // `top`: "--render-scale 0.5 --set water.grid_resolution=256 ..." ("" when it is `top` at one
 // sample per pixel; --spp whenever it is above one). Given to vkwater render, they reproduce the
-// budget's image bit for bit.
-std::vector<std::string> quality_arguments(const Quality& quality, const Quality& top);
+// budget's image bit for bit. The terrain's cells are set per receiver ("--set
+// receivers[0].resolution=32"), so `scene` (as loaded: its terrains' own cells) names them.
+std::vector<std::string> quality_arguments(const Quality& quality, const Quality& top, const Scene& scene);
+// The arguments as one line for a shell: a --set value with brackets is quoted.
 std::string describe_arguments(const std::vector<std::string>& arguments);
 
 // A short line for the overlay: "scale 0.5, photons 256^2, mesh 128, godrays 32^2" (", 4 spp" above one).
@@ -93,5 +99,6 @@ inline constexpr double kMapScaleFractions[] = {1.0, 0.5};  // of the scene's, a
 inline constexpr double kMinMapScale = 0.25;                // effects.caustics.map_scale's lower limit
 inline constexpr uint32_t kSampleCounts[] = {16, 9, 4, 1};  // k^2 strata, at most the command's --spp
 inline constexpr uint32_t kShadowTexels[] = {1024, 512, 256};
+inline constexpr double kTerrainFractions[] = {1.0, 0.5, 0.25};
 
 }  // namespace vkw::budget

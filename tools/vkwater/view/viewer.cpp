@@ -660,9 +660,10 @@ void Viewer::run() {
     frames_->wait_all();
     std::printf("%s", stats_.summary(frame_).c_str());
     if (budget_) {
-        std::printf("%s; settings at exit: %s (%llu changes)\n", budget_->status().c_str(),
-                    budget::describe_arguments(budget::quality_arguments(budget_->current(), budget_->top())).c_str(),
-                    static_cast<unsigned long long>(budget_->changes()));
+        std::printf(
+            "%s; settings at exit: %s (%llu changes)\n", budget_->status().c_str(),
+            budget::describe_arguments(budget::quality_arguments(budget_->current(), budget_->top(), *scene_)).c_str(),
+            static_cast<unsigned long long>(budget_->changes()));
     }
     std::printf("frame graph device objects made %zu times; present mode %s\n", renderer_->realize_count(),
                 present_mode_name(swapchain_->mode()));
