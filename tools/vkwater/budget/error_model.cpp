@@ -36,7 +36,7 @@ const std::vector<Entry>& table(Knob knob) {
     static const std::vector<Entry> map_scale_fraction = {{1.0, 0.0}, {0.5, 0.0270338}};
     static const std::vector<Entry> second_layer = {{1.0, 0.0}, {0.0, 0.0013903}};
     static const std::vector<Entry> shadow_texels = {{1024, 0.0}, {512, 0.00042679}, {256, 0.00165248}};
-    static const std::vector<Entry> terrain_fraction = {{1.0, 0.0}, {0.5, 0.0}, {0.25, 0.000222}};
+    static const std::vector<Entry> terrain_fraction = {{1.0, 0.0}, {0.5, 0.0}, {0.25, 0.0002221}};
     switch (knob) {
         case Knob::LookupSteps: return lookup_steps;
         case Knob::RenderScale: return render_scale;
