@@ -74,6 +74,17 @@ TEST(BudgetQuality, TheSecondLayerTurnsOffOnlyWhereTheNeedsRunIt) {
     for (const Quality& q : quality_candidates(pool_top)) EXPECT_FALSE(q.second_layer);
 }
 
+// Each of a knob's `values` in an equal share of the candidates: every combination of the other
+// knobs at each of them.
+template <typename Value, size_t N>
+void expect_every_combination(const std::vector<Quality>& candidates, Value Quality::*knob, const Value (&values)[N]) {
+    for (const Value value : values) {
+        const auto count =
+            std::count_if(candidates.begin(), candidates.end(), [&](const Quality& q) { return q.*knob == value; });
+        EXPECT_EQ(static_cast<std::ptrdiff_t>(N) * count, static_cast<std::ptrdiff_t>(candidates.size())) << value;
+    }
+}
+
 // The sun shadow map's texels are a knob where receiver meshes cast into it (lake: 1024, 512 and
 // 256 in every combination of the other knobs); pool, with no receiver mesh, makes no shadow map.
 TEST(BudgetQuality, TheShadowMapTurnsDownOnlyWhereReceiversCastIntoIt) {
@@ -81,11 +92,7 @@ TEST(BudgetQuality, TheShadowMapTurnsDownOnlyWhereReceiversCastIntoIt) {
     const Quality top = scene_quality(lake, decide_frame_needs(lake, 4.0 / 3.0));
     ASSERT_EQ(top.shadow_texels, 1024u);
     const std::vector<Quality> candidates = quality_candidates(top);
-    for (uint32_t texels : kShadowTexels) {
-        const auto count = std::count_if(candidates.begin(), candidates.end(),
-                                         [&](const Quality& q) { return q.shadow_texels == texels; });
-        EXPECT_EQ(3 * count, static_cast<std::ptrdiff_t>(candidates.size())) << texels;
-    }
+    expect_every_combination(candidates, &Quality::shadow_texels, kShadowTexels);
     Quality lower = top;
     lower.shadow_texels = 256;
     EXPECT_EQ(describe_arguments(quality_arguments(lower, top, lake)), "--set sun.shadow_texels=256");
@@ -106,11 +113,7 @@ TEST(BudgetQuality, TheTerrainTurnsDownOnlyWhereTheSceneHasOne) {
     ASSERT_EQ(top.terrain_fraction, 1.0);
     ASSERT_EQ(lake.receivers[0].terrain->resolution, 128u);
     const std::vector<Quality> candidates = quality_candidates(top);
-    for (double fraction : kTerrainFractions) {
-        const auto count = std::count_if(candidates.begin(), candidates.end(),
-                                         [&](const Quality& q) { return q.terrain_fraction == fraction; });
-        EXPECT_EQ(3 * count, static_cast<std::ptrdiff_t>(candidates.size())) << fraction;
-    }
+    expect_every_combination(candidates, &Quality::terrain_fraction, kTerrainFractions);
     Quality lower = top;
     lower.terrain_fraction = 0.25;
     EXPECT_EQ(quality_arguments(lower, top, lake), std::vector<std::string>{"--set receivers[0].resolution=32"});
