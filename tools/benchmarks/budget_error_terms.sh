@@ -136,7 +136,8 @@ import json, sys
 scene = json.load(open(sys.argv[1]))
 for i, receiver in enumerate(scene.get("receivers", [])):
     if receiver.get("type") == "terrain":
-        print(f"receivers[{i}].resolution={max(2, round(receiver.get('resolution', 64) * float(sys.argv[2])))}")
+        # Rounded half up, as terrain_cells (engine/scene/scene.hpp) rounds: Python's round() goes to even.
+        print(f"receivers[{i}].resolution={max(2, int(receiver.get('resolution', 64) * float(sys.argv[2]) + 0.5))}")
 PY
         )
         [ ${#terrain[@]} -gt 0 ] || break

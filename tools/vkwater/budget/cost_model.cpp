@@ -158,7 +158,6 @@ double PassFormula::runs_per_frame(const CostDrivers& drivers) const {
 }
 
 double PassFormula::prior_ms(const CostDrivers& drivers) const {
-    if (second_layer && at(drivers, Driver::SecondLayerPixels) == 0.0) return 0.0;  // the pass does not run
     double ns = 0.0;
     for (const auto& [driver, rate] : ns_per_unit) ns += rate * at(drivers, driver);
     return ns * 1e-6 * runs_per_frame(drivers);
