@@ -11,7 +11,8 @@
 # rows, for the error model's resolution term); where the scene has a box reference, 4, 9 and 16
 # samples per pixel (signed gains too: k^2 samples are k times the rows); the photon grid as a fraction of the
 # scene's; the water mesh's cells per side; the godray grid (0: godrays off); where the water
-# looks the scene up (`vkwater passes` says reflection or refraction: on), the lookups' steps; and,
+# looks the scene up (`vkwater passes` says reflection or refraction: on), the lookups' steps and
+# each lookup turned off; and,
 # where photons are splatted into the light-space map (`caustic photons` among the passes), the
 # bilinear kernel in place of the scene's (the value: the photon grid fraction it is measured at,
 # the excess over the scene's kernel at that grid) and the map's scale as a fraction of the
@@ -117,6 +118,13 @@ PY
                 --set "effects.refraction.max_steps=$steps")"
         done
     fi
+    # Each lookup turned off alone (value 0), where the needs run it: its rays keep the exact floor
+    # and sky and miss the receiver meshes.
+    for lookup in reflection refraction; do
+        if grep -qE "^  $lookup: on" <<<"$needs"; then
+            row "${lookup}_lookup" 0 "$(relmse "$scene" --set "effects.$lookup.mode=off")"
+        fi
+    done
     if $photon_map; then
         half_map=$(python3 -c "print(max(0.25, $map_scale * 0.5))")
         row map_scale_fraction 0.5 "$(relmse "$scene" --set "effects.caustics.map_scale=$half_map")"
