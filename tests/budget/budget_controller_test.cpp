@@ -258,6 +258,7 @@ TEST(BudgetController, TheSecondLayerCostsItsPassAndTheWatersExtra) {
         std::vector<fg::PassTime> passes = {
             {"water", 2.0 * pass_formula("water").prior_ms(drivers)},
             {"refraction view", 1.5 * pass_formula("refraction view").prior_ms(drivers)},
+            {"mirrored reflection view", 1.5 * pass_formula("mirrored reflection view").prior_ms(drivers)},
             {"sky", 1.5 * pass_formula("sky").prior_ms(drivers)}};
         if (q.second_layer) passes.push_back({"refraction view second layer", 1.5 * layer.prior_ms(drivers)});
         return passes;
@@ -274,11 +275,70 @@ TEST(BudgetController, TheSecondLayerCostsItsPassAndTheWatersExtra) {
         model.observe_frame(sum(times(timed)), drivers);
         for (const Quality& q : {on, off}) {
             // Exact but for the layer's pass when it was not timed: taken at the typical factor of
-            // the timed passes (the median of 2, 1.5, 1.5: 1.5, this device's own for it).
+            // the timed passes (the median of 2, 1.5, 1.5, 1.5: 1.5, this device's own for it).
             EXPECT_NEAR(model.predict_ms(cost_drivers(scene, q, kWidth, kHeight), false, false), sum(times(q)),
                         1e-9 * sum(times(q)))
                 << "timed " << (timed.second_layer ? "with" : "without") << " the layer, predicting "
                 << (q.second_layer ? "with" : "without");
+        }
+    }
+}
+
+// The scene lookups' views run only with their lookups, and each lookup costs the water pass its
+// pixels and steps. Fitted to a frame with both lookups, the model predicts the frames with the
+// reflected rays' lookup off and with both off from the same factors; fitted to one with both off,
+// it takes the views' passes at the device's typical factor (the median of 2, 1.5, 1.5: 1.5, this
+// device's own for them).
+TEST(BudgetController, TheSceneLookupsCostTheirViewsAndTheWatersLookups) {
+    static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/lake.json");
+    Quality both = scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0));
+    ASSERT_TRUE(both.reflection_lookup && both.refraction_lookup);
+    both.second_layer = false;
+    both.lookup_steps = 8;
+    Quality refraction_only = both;
+    refraction_only.reflection_lookup = false;
+    Quality none = both;
+    none.lookup_steps = 0;
+    none.refraction_lookup = none.reflection_lookup = false;
+    const double pixels = double(kWidth) * kHeight;
+    const auto water_ms = [](const Quality& q) {
+        return pass_formula("water").prior_ms(cost_drivers(scene, q, kWidth, kHeight));
+    };
+    // 200 ns a pixel and lookup, and 1.6 ns a pixel, lookup and step.
+    EXPECT_DOUBLE_EQ(water_ms(both) - water_ms(refraction_only), (200.0 + 8 * 1.6) * pixels * 1e-6);
+    EXPECT_DOUBLE_EQ(water_ms(refraction_only) - water_ms(none), (200.0 + 8 * 1.6) * pixels * 1e-6);
+
+    const auto times = [&](const Quality& q) {
+        const CostDrivers drivers = cost_drivers(scene, q, kWidth, kHeight);
+        std::vector<fg::PassTime> passes = {{"water", 2.0 * pass_formula("water").prior_ms(drivers)},
+                                            {"receivers", 1.5 * pass_formula("receivers").prior_ms(drivers)},
+                                            {"sky", 1.5 * pass_formula("sky").prior_ms(drivers)}};
+        if (q.reflection_lookup) {
+            passes.push_back(
+                {"mirrored reflection view", 1.5 * pass_formula("mirrored reflection view").prior_ms(drivers)});
+        }
+        if (q.refraction_lookup) {
+            passes.push_back({"refraction view", 1.5 * pass_formula("refraction view").prior_ms(drivers)});
+        }
+        return passes;
+    };
+    EXPECT_EQ(times(both).size(), 5u);
+    EXPECT_EQ(times(refraction_only).size(), 4u);
+    EXPECT_EQ(times(none).size(), 3u);
+    const auto sum = [](const std::vector<fg::PassTime>& passes) {
+        double ms = 0.0;
+        for (const fg::PassTime& pass : passes) ms += pass.ms;
+        return ms;
+    };
+    for (const Quality& timed : {both, refraction_only, none}) {
+        CostModel model;
+        const CostDrivers drivers = cost_drivers(scene, timed, kWidth, kHeight);
+        model.observe_passes(times(timed), drivers);
+        model.observe_frame(sum(times(timed)), drivers);
+        for (const Quality& q : {both, refraction_only, none}) {
+            EXPECT_NEAR(model.predict_ms(cost_drivers(scene, q, kWidth, kHeight), false, false), sum(times(q)),
+                        1e-9 * sum(times(q)))
+                << "timed with " << timed.scene_lookups() << " lookups, predicting " << q.scene_lookups();
         }
     }
 }

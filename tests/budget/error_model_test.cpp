@@ -59,7 +59,9 @@ TEST(BudgetErrorModel, TableIsTheLargestMeasuredExcessOfEachKnob) {
                                                {"samples_per_pixel", Knob::SamplesPerPixel},
                                                {"second_layer", Knob::SecondLayer},
                                                {"shadow_texels", Knob::ShadowTexels},
-                                               {"terrain_fraction", Knob::TerrainFraction}};
+                                               {"terrain_fraction", Knob::TerrainFraction},
+                                               {"reflection_lookup", Knob::ReflectionLookup},
+                                               {"refraction_lookup", Knob::RefractionLookup}};
     for (const auto& [key, excess] : largest) {
         ASSERT_TRUE(knobs.count(key.first)) << key.first;
         if (key.first == "godray_grid" && key.second > 64) continue;  // finer than the table: 0 by definition
@@ -88,7 +90,7 @@ TEST(BudgetErrorModel, TheSecondLayerOffCostsItsMeasuredExcess) {
     // Below the scene's lookup steps the layer finds nothing (its march takes a quarter of them):
     // the steps' term holds its loss, and turning it off there costs nothing more.
     top.lookup_steps = 64;
-    top.scene_lookups = 2;
+    top.reflection_lookup = top.refraction_lookup = true;
     for (uint32_t steps : {16u, 8u}) {
         Quality fewer = top;
         fewer.lookup_steps = steps;
@@ -213,7 +215,7 @@ TEST(BudgetErrorModel, TheCausticTermsFollowTheScenesCausticVisibility) {
     EXPECT_LT(pool, 1.0);
     EXPECT_LT(ocean, 1e-3);
     EXPECT_EQ(caustic_visibility(scene("lake.json")), 1.0) << "its post and rock break the surface";
-    Quality top{1.0, 1024, 256, 64, 0, 0, CausticKernel::Adaptive, 1.0};
+    Quality top{1.0, 1024, 256, 64, 0, false, false, CausticKernel::Adaptive, 1.0};
     Quality lower = top;
     lower.photon_grid = 128;
     lower.mesh_resolution = 128;
@@ -228,7 +230,7 @@ TEST(BudgetErrorModel, TheCausticTermsFollowTheScenesCausticVisibility) {
 // The kernel's term counts only where the scene's own kernel is not already the bilinear one; the
 // map scale's follows the fraction of the scene's.
 TEST(BudgetErrorModel, TheCausticKnobsAddTheirTerms) {
-    const Quality top{1.0, 1024, 256, 64, 0, 0, CausticKernel::Adaptive, 1.0};
+    const Quality top{1.0, 1024, 256, 64, 0, false, false, CausticKernel::Adaptive, 1.0};
     Quality bilinear = top;
     bilinear.caustic_kernel = CausticKernel::Bilinear;
     EXPECT_GT(error_term(Knob::BilinearKernel, 1.0), 0.0) << "the measured scenes lose accuracy with it";
@@ -246,6 +248,39 @@ TEST(BudgetErrorModel, TheCausticKnobsAddTheirTerms) {
     Quality own_bilinear = top;
     own_bilinear.caustic_kernel = CausticKernel::Bilinear;
     EXPECT_EQ(predict_error(own_bilinear, own_bilinear).excess, 0.0);
+}
+
+// A scene lookup turned off costs what the table measured for it, and the steps' term no longer
+// counts once neither lookup runs: lake's ladder (64, 16, 8 steps, then the reflected rays' lookup
+// off at 8, then both off) rises in predicted error at every rung.
+TEST(BudgetErrorModel, ASceneLookupTurnedOffCostsItsMeasuredExcess) {
+    Quality top{1.0, 512, 256, 64};
+    top.lookup_steps = 64;
+    top.reflection_lookup = top.refraction_lookup = true;
+    EXPECT_GT(error_term(Knob::ReflectionLookup, 0.0), 0.0);
+    EXPECT_GT(error_term(Knob::RefractionLookup, 0.0), error_term(Knob::ReflectionLookup, 0.0))
+        << "the ladder turns the reflected rays' lookup off first because its loss is the smaller";
+    EXPECT_EQ(error_term(Knob::ReflectionLookup, 1.0), 0.0);
+    Quality reflection_off = top;
+    reflection_off.reflection_lookup = false;
+    EXPECT_DOUBLE_EQ(predict_error(reflection_off, top).excess, error_term(Knob::ReflectionLookup, 0.0));
+    EXPECT_EQ(predict_error(reflection_off, top).dominant, "reflection lookup off");
+    reflection_off.lookup_steps = 8;
+    EXPECT_DOUBLE_EQ(predict_error(reflection_off, top).excess,
+                     error_term(Knob::LookupSteps, 8) + error_term(Knob::ReflectionLookup, 0.0));
+    Quality both_off = top;
+    both_off.lookup_steps = 0;
+    both_off.reflection_lookup = both_off.refraction_lookup = false;
+    EXPECT_DOUBLE_EQ(predict_error(both_off, top).excess,
+                     error_term(Knob::ReflectionLookup, 0.0) + error_term(Knob::RefractionLookup, 0.0));
+    EXPECT_EQ(predict_error(both_off, top).dominant, "refraction lookup off");
+    double last = -1.0;
+    for (const Quality& rung : {top, Quality{1.0, 512, 256, 64, 16, true, true},
+                                Quality{1.0, 512, 256, 64, 8, true, true}, reflection_off, both_off}) {
+        const double excess = predict_error(rung, top).excess;
+        EXPECT_GT(excess, last) << describe_quality(rung);
+        last = excess;
+    }
 }
 
 }  // namespace

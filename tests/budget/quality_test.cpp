@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 namespace vkw::budget {
 namespace {
@@ -50,7 +51,9 @@ TEST(BudgetQuality, TheSecondLayerTurnsOffOnlyWhereTheNeedsRunIt) {
     const Scene lake = load_scene(kLake);
     const Quality top = scene_quality(lake, decide_frame_needs(lake, 4.0 / 3.0));
     ASSERT_TRUE(top.second_layer);
-    const std::vector<Quality> candidates = quality_candidates(top);
+    std::vector<Quality> candidates = quality_candidates(top);
+    // Where the refracted rays still look the scene up (the layer is the refraction view's).
+    std::erase_if(candidates, [](const Quality& q) { return !q.refraction_lookup; });
     const auto with_layer =
         std::count_if(candidates.begin(), candidates.end(), [](const Quality& q) { return q.second_layer; });
     EXPECT_GT(with_layer, 0);
@@ -135,6 +138,61 @@ TEST(BudgetQuality, TheTerrainTurnsDownOnlyWhereTheSceneHasOne) {
     for (const Quality& q : quality_candidates(pool_top)) EXPECT_EQ(q.terrain_fraction, 0.0);
 }
 
+// The scene lookups' ladder where the water looks the scene up (lake): the steps 64, 16 and 8 with
+// both lookups, then at 8 the reflected rays' lookup off, then both off, each rung in every
+// combination of the other knobs; with a lookup off its view's second layer is off too. Pool looks
+// nothing up and has no rung.
+TEST(BudgetQuality, TheSceneLookupsTurnOffAfterTheirFewestSteps) {
+    const Scene lake = load_scene(kLake);
+    const Quality top = scene_quality(lake, decide_frame_needs(lake, 4.0 / 3.0));
+    ASSERT_TRUE(top.reflection_lookup && top.refraction_lookup);
+    const std::vector<Quality> candidates = quality_candidates(top);
+    std::set<std::tuple<uint32_t, bool, bool>> rungs;
+    for (const Quality& q : candidates) {
+        rungs.insert({q.lookup_steps, q.reflection_lookup, q.refraction_lookup});
+        if (!q.refraction_lookup) {
+            EXPECT_FALSE(q.second_layer) << describe_quality(q);
+        }
+    }
+    const std::set<std::tuple<uint32_t, bool, bool>> ladder = {
+        {64, true, true}, {16, true, true}, {8, true, true}, {8, false, true}, {0, false, false}};
+    EXPECT_EQ(rungs, ladder);
+    const auto at_rung = [&](uint32_t steps, bool reflection, bool refraction) {
+        return std::count_if(candidates.begin(), candidates.end(), [&](const Quality& q) {
+            return q.lookup_steps == steps && q.reflection_lookup == reflection && q.refraction_lookup == refraction;
+        });
+    };
+    // With both lookups off there is no second layer to turn: half as many candidates at that rung.
+    const std::ptrdiff_t each = at_rung(64, true, true), none = at_rung(0, false, false);
+    EXPECT_EQ(at_rung(8, false, true), each);
+    EXPECT_EQ(2 * none, each);
+    EXPECT_EQ(static_cast<std::ptrdiff_t>(candidates.size()), 4 * each + none);
+
+    Quality reflection_off = top;
+    reflection_off.lookup_steps = 8;
+    reflection_off.reflection_lookup = false;
+    EXPECT_EQ(describe_arguments(quality_arguments(reflection_off, top, lake)),
+              "--set effects.reflection.max_steps=8 --set effects.refraction.max_steps=8 --set "
+              "effects.reflection.mode=off");
+    Quality both_off = reflection_off;
+    both_off.lookup_steps = 0;
+    both_off.refraction_lookup = false;
+    both_off.second_layer = false;
+    EXPECT_EQ(describe_arguments(quality_arguments(both_off, top, lake)),
+              "--set effects.reflection.mode=off --set effects.refraction.mode=off "
+              "--set effects.refraction_second_layer.mode=off");
+    Scene applied = lake;
+    apply_quality(both_off, top, applied);
+    const fg::FrameNeeds needs = decide_frame_needs(applied, 4.0 / 3.0);
+    EXPECT_FALSE(needs.find(Effect::Reflection)->needed);
+    EXPECT_FALSE(needs.find(Effect::Refraction)->needed);
+
+    const Scene pool = load_scene(kPool);
+    const Quality pool_top = scene_quality(pool, decide_frame_needs(pool, 4.0 / 3.0));
+    EXPECT_EQ(pool_top.scene_lookups(), 0u);
+    for (const Quality& q : quality_candidates(pool_top)) EXPECT_EQ(q.scene_lookups(), 0u);
+}
+
 // The kernel and the map's scale are knobs only where photons are splatted into the light-space
 // map: a scene already on the bilinear kernel keeps it, and at the lowest map scale there is no
 // lower one; the camera-space splats have neither knob.
@@ -206,7 +264,7 @@ TEST(BudgetQuality, InfiniteWaterKeepsTheScreensGrid) {
 TEST(BudgetQuality, ItsOptionsGiveTheSceneApplyQualityMakes) {
     const Scene original = load_scene(kLake);
     const Quality top = scene_quality(original, decide_frame_needs(original, 4.0 / 3.0));
-    ASSERT_EQ(top.scene_lookups, 2u) << "lake looks up both scene views";
+    ASSERT_EQ(top.scene_lookups(), 2u) << "lake looks up both scene views";
     ASSERT_EQ(top.lookup_steps, 64u);
     ASSERT_EQ(top.godray_grid, 64u);
     ASSERT_GT(top.map_scale, 0.0) << "lake splats photons into the light-space map";
@@ -215,11 +273,13 @@ TEST(BudgetQuality, ItsOptionsGiveTheSceneApplyQualityMakes) {
     ASSERT_EQ(top.shadow_texels, 1024u) << "lake's receivers cast into the sun shadow map";
     ASSERT_EQ(top.terrain_fraction, 1.0) << "lake's bed is a terrain";
     // The first two turn the second layer off, the third keeps it; each has its own shadow map and
-    // its own terrain detail.
+    // its own terrain detail; the last two turn the reflected rays' lookup off, then both.
     for (const Quality& q :
-         {Quality{0.5, 128, 128, 0, 8, 2, CausticKernel::Bilinear, half_map, 1, false, 256, 0.25},
-          Quality{1.0, 256, 256, 32, 64, 2, top.caustic_kernel, half_map, 1, false, 1024, 1.0},
-          Quality{0.35, 64, 64, 16, 16, 2, CausticKernel::Bilinear, top.map_scale, 1, true, 512, 0.5}, top}) {
+         {Quality{0.5, 128, 128, 0, 8, true, true, CausticKernel::Bilinear, half_map, 1, false, 256, 0.25},
+          Quality{1.0, 256, 256, 32, 64, true, true, top.caustic_kernel, half_map, 1, false, 1024, 1.0},
+          Quality{0.35, 64, 64, 16, 16, true, true, CausticKernel::Bilinear, top.map_scale, 1, true, 512, 0.5},
+          Quality{0.25, 64, 64, 0, 8, false, true, CausticKernel::Bilinear, half_map, 1, false, 256, 0.25},
+          Quality{0.25, 64, 64, 0, 0, false, false, CausticKernel::Bilinear, half_map, 1, false, 256, 0.25}, top}) {
         Scene applied = original;
         apply_quality(q, top, applied);
         std::vector<std::string> overrides;
@@ -239,6 +299,8 @@ TEST(BudgetQuality, ItsOptionsGiveTheSceneApplyQualityMakes) {
         EXPECT_EQ(given.effects.godrays.grid, applied.effects.godrays.grid);
         EXPECT_EQ(given.effects[Effect::Reflection].max_steps, applied.effects[Effect::Reflection].max_steps);
         EXPECT_EQ(given.effects[Effect::Refraction].max_steps, applied.effects[Effect::Refraction].max_steps);
+        EXPECT_EQ(given.effects[Effect::Reflection].mode, applied.effects[Effect::Reflection].mode);
+        EXPECT_EQ(given.effects[Effect::Refraction].mode, applied.effects[Effect::Refraction].mode);
         EXPECT_EQ(given.effects.caustics.kernel, applied.effects.caustics.kernel);
         EXPECT_EQ(given.effects.caustics.map_scale, applied.effects.caustics.map_scale);
         EXPECT_EQ(given.effects[Effect::RefractionSecondLayer].mode,

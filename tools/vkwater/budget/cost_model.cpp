@@ -4,7 +4,10 @@
 #include "passes/frame/upscale.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
+#include <string_view>
 
 namespace vkw::budget {
 namespace {
@@ -27,15 +30,28 @@ struct KnownPass {
 PassFormula once(std::vector<std::pair<Driver, double>> ns_per_unit) {
     return {.ns_per_unit = std::move(ns_per_unit), .once_per_frame = true};
 }
+// A pass that runs only under `condition`.
+PassFormula when(PassCondition condition, std::vector<std::pair<Driver, double>> ns_per_unit) {
+    return {.ns_per_unit = std::move(ns_per_unit), .condition = condition};
+}
 
 const std::vector<KnownPass>& known_passes() {
     using D = Driver;
     static const std::vector<KnownPass> table = {
         // With the second layer the water pass costs lake 1.31-1.42 times as much (its refracted
         // rays checked against the layer, a few marched through it; docs/performance.md "The
-        // refraction view's second layer"): about 150 ns a pixel on lake's prior of 200 ms.
+        // refraction view's second layer"): about 150 ns a pixel on lake's prior of 200 ms. Each
+        // scene lookup costs about 200 ns a pixel before its steps: lake's, the showcase pool's
+        // and the lagoon's water passes at their cheapest settings (200x150) took 17.7, 28 and 22
+        // ms more with both lookups than without, 190-230 ns a pixel and lookup at the factors
+        // their passes without lookups fitted (docs/performance.md "The scene lookups turned off").
         {"water",
-         {{{D::Pixels, 130.0}, {D::MeshTriangles, 300.0}, {D::LookupSteps, 1.6}, {D::SecondLayerPixels, 150.0}}}},
+         {{{D::Pixels, 130.0},
+           {D::MeshTriangles, 300.0},
+           {D::LookupSteps, 1.6},
+           {D::ReflectionLookupPixels, 200.0},
+           {D::RefractionLookupPixels, 200.0},
+           {D::SecondLayerPixels, 150.0}}}},
         {"camera medium", {{{D::Pixels, 30.0}, {D::MeshTriangles, 100.0}}}},
         {"sky", {{{D::Pixels, 20.0}}}},
         {"floor", {{{D::Pixels, 5.0}}}},
@@ -44,10 +60,12 @@ const std::vector<KnownPass>& known_passes() {
         // (docs/performance.md "The frame-time budget"); the second layer draws what the refraction
         // view draws.
         {"receivers", {{{D::Pixels, 40.0}, {D::ReceiverTriangles, 340.0}}}},
-        {"refraction view", {{{D::Pixels, 50.0}, {D::ReceiverTriangles, 550.0}}}},
+        {"refraction view",
+         when(PassCondition::RefractionView, {{D::RefractionLookupPixels, 50.0}, {D::ReceiverTriangles, 550.0}})},
         {"refraction view second layer",
-         {.ns_per_unit = {{D::SecondLayerPixels, 50.0}, {D::ReceiverTriangles, 550.0}}, .second_layer = true}},
-        {"mirrored reflection view", {{{D::Pixels, 50.0}, {D::ReceiverTriangles, 250.0}}}},
+         when(PassCondition::SecondLayer, {{D::SecondLayerPixels, 50.0}, {D::ReceiverTriangles, 550.0}})},
+        {"mirrored reflection view",
+         when(PassCondition::ReflectionView, {{D::ReflectionLookupPixels, 50.0}, {D::ReceiverTriangles, 250.0}})},
         {"calibration", {{{D::Pixels, 2.0}}}},
         // Lake's cheapest setting at 200x150 (its receivers' 37,500 triangles, each drawn into both
         // halves): 72 ms with 1024^2 texels a half, 39 ms with 256^2 (the machine shared with a
@@ -66,18 +84,19 @@ const std::vector<KnownPass>& known_passes() {
         {"caustic resolve", once({{D::MapTexels, 18.0}})},
         {"caustic blur x", once({{D::MapTexels, 5.0}})},
         {"caustic blur y", once({{D::MapTexels, 5.0}})},
-        {"keep caustic map", {.ns_per_unit = {{D::MapTexels, 10.0}}, .once_per_frame = true, .supersampled = true}},
-        {"godray lines", {{{D::BeamColumns, 46.0}}, true}},
-        {"godray beams", {{{D::Beams, 190.0}}, true}},
-        {"godray depth", {{{D::GodrayPixels, 34.0}}, true}},
-        {"godray clear", {{{D::GodrayPixels, 5.0}}, true}},
-        {"godray resolve", {{{D::GodrayPixels, 180.0}}, true}},
-        {"godray blur x", {{{D::GodrayPixels, 32.0}}, true}},
-        {"godray blur y", {{{D::GodrayPixels, 32.0}}, true}},
-        {"godray composite", {{{D::Pixels, 32.0}}, true}},
-        {"upscale", {{{D::OutputPixels, 4.0}}, false, true}},
-        {"caustic layer upscale", {{{D::OutputPixels, 4.0}}, false, true}},
-        {"in-scatter layer upscale", {{{D::OutputPixels, 4.0}}, false, true}},
+        {"keep caustic map",
+         {.ns_per_unit = {{D::MapTexels, 10.0}}, .condition = PassCondition::Supersampled, .once_per_frame = true}},
+        {"godray lines", when(PassCondition::Godrays, {{D::BeamColumns, 46.0}})},
+        {"godray beams", when(PassCondition::Godrays, {{D::Beams, 190.0}})},
+        {"godray depth", when(PassCondition::Godrays, {{D::GodrayPixels, 34.0}})},
+        {"godray clear", when(PassCondition::Godrays, {{D::GodrayPixels, 5.0}})},
+        {"godray resolve", when(PassCondition::Godrays, {{D::GodrayPixels, 180.0}})},
+        {"godray blur x", when(PassCondition::Godrays, {{D::GodrayPixels, 32.0}})},
+        {"godray blur y", when(PassCondition::Godrays, {{D::GodrayPixels, 32.0}})},
+        {"godray composite", when(PassCondition::Godrays, {{D::Pixels, 32.0}})},
+        {"upscale", when(PassCondition::Upscale, {{D::OutputPixels, 4.0}})},
+        {"caustic layer upscale", when(PassCondition::Upscale, {{D::OutputPixels, 4.0}})},
+        {"in-scatter layer upscale", when(PassCondition::Upscale, {{D::OutputPixels, 4.0}})},
         {"readback", {{{D::OutputPixels, 2.0}}}},
         {"caustic layer readback", {{{D::OutputPixels, 2.0}}}},
         {"in-scatter layer readback", {{{D::OutputPixels, 2.0}}}},
@@ -89,10 +108,21 @@ const std::vector<KnownPass>& known_passes() {
 // The frame's sub-frames: every pass runs in each but the photon map's.
 double sub_frames(const CostDrivers& drivers) { return std::max(1.0, at(drivers, Driver::SubFrames)); }
 
+bool holds(PassCondition condition, const CostDrivers& drivers, bool godrays, bool upscale) {
+    switch (condition) {
+        case PassCondition::Always: return true;
+        case PassCondition::Godrays: return godrays;
+        case PassCondition::Upscale: return upscale;
+        case PassCondition::Supersampled: return sub_frames(drivers) > 1.0;
+        case PassCondition::SecondLayer: return at(drivers, Driver::SecondLayerPixels) > 0.0;
+        case PassCondition::ReflectionView: return at(drivers, Driver::ReflectionLookupPixels) > 0.0;
+        case PassCondition::RefractionView: return at(drivers, Driver::RefractionLookupPixels) > 0.0;
+    }
+    return true;
+}
+
 bool runs(const PassFormula& formula, const CostDrivers& drivers, bool godrays, bool upscale) {
-    return (godrays || !formula.godray) && (upscale || !formula.upscale) &&
-           (sub_frames(drivers) > 1.0 || !formula.supersampled) &&
-           (at(drivers, Driver::SecondLayerPixels) > 0.0 || !formula.second_layer);
+    return holds(formula.condition, drivers, godrays, upscale);
 }
 
 }  // namespace
@@ -126,7 +156,9 @@ CostDrivers cost_drivers(const Scene& scene, const Quality& quality, uint32_t wi
             at(drivers, Driver::PhotonTaps) = span * span * at(drivers, Driver::Photons);
         }
     }
-    at(drivers, Driver::LookupSteps) = at(drivers, Driver::Pixels) * quality.scene_lookups * quality.lookup_steps;
+    at(drivers, Driver::LookupSteps) = at(drivers, Driver::Pixels) * quality.scene_lookups() * quality.lookup_steps;
+    if (quality.reflection_lookup) at(drivers, Driver::ReflectionLookupPixels) = at(drivers, Driver::Pixels);
+    if (quality.refraction_lookup) at(drivers, Driver::RefractionLookupPixels) = at(drivers, Driver::Pixels);
     if (quality.second_layer) at(drivers, Driver::SecondLayerPixels) = at(drivers, Driver::Pixels);
     double triangles = 0.0;
     for (const Receiver& receiver : scene.receivers) {
@@ -191,8 +223,8 @@ void CostModel::observe_passes(const std::vector<fg::PassTime>& passes, const Co
 void CostModel::observe_frame(double ms, const CostDrivers& drivers) {
     bool godrays = false, upscale = false;
     for (const auto& [name, pass] : passes_) {
-        godrays = godrays || pass.formula.godray;
-        upscale = upscale || pass.formula.upscale;
+        godrays = godrays || pass.formula.condition == PassCondition::Godrays;
+        upscale = upscale || pass.formula.condition == PassCondition::Upscale;
     }
     const double passes = predict_passes_ms(drivers, godrays, upscale);
     if (passes > 0.0 && ms > 0.0) frame_factor_ = ms / passes;
@@ -210,32 +242,28 @@ double CostModel::typical_factor() const {
 
 double CostModel::predict_passes_ms(const CostDrivers& drivers, bool godrays, bool upscale) const {
     double ms = 0.0;
-    bool has_godrays = false, has_upscale = false, has_supersampled = false, has_second_layer = false;
+    constexpr size_t kConditions = static_cast<size_t>(PassCondition::RefractionView) + 1;
+    std::array<bool, kConditions> timed{};  // the conditions some timed pass ran under
     for (const auto& [name, pass] : passes_) {
-        has_godrays = has_godrays || pass.formula.godray;
-        has_upscale = has_upscale || pass.formula.upscale;
-        has_supersampled = has_supersampled || pass.formula.supersampled;
-        has_second_layer = has_second_layer || pass.formula.second_layer;
+        timed[static_cast<size_t>(pass.formula.condition)] = true;
         if (!runs(pass.formula, drivers, godrays, upscale)) continue;
         ms += pass.formula.ns_per_unit.empty() ? pass.fixed_ms * sub_frames(drivers)
                                                : pass.factor * pass.formula.prior_ms(drivers);
     }
     // Passes the timed frame did not run (godrays it had turned off, the upscale at full
-    // resolution, the kept photon map at one sample, the second layer turned off): their priors, at
-    // the factor typical of this device.
-    const bool supersampled = sub_frames(drivers) > 1.0;
-    const bool second_layer = at(drivers, Driver::SecondLayerPixels) > 0.0;
-    if ((godrays && !has_godrays) || (upscale && !has_upscale) || (supersampled && !has_supersampled) ||
-        (second_layer && !has_second_layer)) {
-        const double factor = typical_factor();
-        for (const KnownPass& known : known_passes()) {
-            const bool missing =
-                (godrays && !has_godrays && known.formula.godray) ||
-                (upscale && !has_upscale && known.formula.upscale && std::string(known.name) == "upscale") ||
-                (supersampled && !has_supersampled && known.formula.supersampled) ||
-                (second_layer && !has_second_layer && known.formula.second_layer);
-            if (missing) ms += factor * known.formula.prior_ms(drivers);
+    // resolution, the kept photon map at one sample, the second layer or a scene lookup turned
+    // off): their priors, at the factor typical of this device. Of the upscales only the frame's:
+    // the caustic and in-scatter layers' run only where a render writes those layers.
+    std::optional<double> factor;
+    for (const KnownPass& known : known_passes()) {
+        const PassCondition condition = known.formula.condition;
+        if (condition == PassCondition::Always || timed[static_cast<size_t>(condition)] ||
+            !holds(condition, drivers, godrays, upscale)) {
+            continue;
         }
+        if (condition == PassCondition::Upscale && std::string_view(known.name) != "upscale") continue;
+        if (!factor) factor = typical_factor();
+        ms += *factor * known.formula.prior_ms(drivers);
     }
     return ms;
 }

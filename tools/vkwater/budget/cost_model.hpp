@@ -25,25 +25,27 @@ namespace vkw::budget {
 
 // What a frame's passes cost in proportion to.
 enum class Driver : uint8_t {
-    Pixels,             // the scene's passes' pixels: the output's times the resolution scale squared
-    OutputPixels,       // the output's pixels: the upscale, the readback, the window's hand-off
-    SurfaceVertices,    // the water surface grid's vertices, (photon grid + 1)^2
-    MeshVertices,       // the water mesh's vertices
-    MeshTriangles,      // the water mesh's triangles
-    Photons,            // photons traced
-    HatPhotons,         // photons whose kernel is shaped by their 4 neighbours, traced too (not the bilinear tent)
-    PhotonTaps,         // photons times the texels each one's kernel adds to (about; see cost_drivers)
-    MapTexels,          // the light-space caustic map's texels
-    Beams,              // godray beams
-    BeamColumns,        // godray beams times the godray image's columns (a beam's walk)
-    GodrayPixels,       // the godray image's pixels
-    LookupSteps,        // pixels times scene lookups times their most steps
-    SecondLayerPixels,  // the scene's passes' pixels where the refraction view's second layer runs, else 0
-    ShadowTexels,       // the sun shadow map's texels (both of its halves), 0 where the frame makes none
-    ShadowTriangles,    // the receiver meshes' triangles drawn into the sun shadow map
-    ReceiverTriangles,  // the receiver meshes' triangles, drawn by each view of them (terrain at its fraction)
-    SubFrames,          // the frame's sub-frames (its samples per pixel): every pass runs in each, but
-                        // the light-space photon map's, made once by the first
+    Pixels,                  // the scene's passes' pixels: the output's times the resolution scale squared
+    OutputPixels,            // the output's pixels: the upscale, the readback, the window's hand-off
+    SurfaceVertices,         // the water surface grid's vertices, (photon grid + 1)^2
+    MeshVertices,            // the water mesh's vertices
+    MeshTriangles,           // the water mesh's triangles
+    Photons,                 // photons traced
+    HatPhotons,              // photons whose kernel is shaped by their 4 neighbours, traced too (not the bilinear tent)
+    PhotonTaps,              // photons times the texels each one's kernel adds to (about; see cost_drivers)
+    MapTexels,               // the light-space caustic map's texels
+    Beams,                   // godray beams
+    BeamColumns,             // godray beams times the godray image's columns (a beam's walk)
+    GodrayPixels,            // the godray image's pixels
+    LookupSteps,             // pixels times scene lookups times their most steps
+    ReflectionLookupPixels,  // the scene's passes' pixels where the reflected rays look the scene up, else 0
+    RefractionLookupPixels,  // the same for the refracted rays
+    SecondLayerPixels,       // the scene's passes' pixels where the refraction view's second layer runs, else 0
+    ShadowTexels,            // the sun shadow map's texels (both of its halves), 0 where the frame makes none
+    ShadowTriangles,         // the receiver meshes' triangles drawn into the sun shadow map
+    ReceiverTriangles,       // the receiver meshes' triangles, drawn by each view of them (terrain at its fraction)
+    SubFrames,               // the frame's sub-frames (its samples per pixel): every pass runs in each, but
+                             // the light-space photon map's, made once by the first
     Count
 };
 
@@ -52,15 +54,23 @@ using CostDrivers = std::array<double, static_cast<size_t>(Driver::Count)>;
 // The drivers of a frame of `scene` at `quality` for an output of width x height.
 CostDrivers cost_drivers(const Scene& scene, const Quality& quality, uint32_t width, uint32_t height);
 
+// What a pass needs to run, beyond the frame itself.
+enum class PassCondition : uint8_t {
+    Always,
+    Godrays,         // the godrays
+    Upscale,         // resolution scale below 1
+    Supersampled,    // more than one sub-frame (keeps the photon map for the others)
+    SecondLayer,     // the refraction view's second layer
+    ReflectionView,  // the reflected rays' scene lookup
+    RefractionView,  // the refracted rays' scene lookup
+};
+
 // A pass's prior cost formula: nanoseconds per unit of each driver on lavapipe; empty terms when
 // the table does not know the pass.
 struct PassFormula {
     std::vector<std::pair<Driver, double>> ns_per_unit;
-    bool godray = false;          // runs only with the godrays
-    bool upscale = false;         // runs only below resolution scale 1
+    PassCondition condition = PassCondition::Always;
     bool once_per_frame = false;  // the photon map's: in the first sub-frame only
-    bool supersampled = false;    // runs only with more than one sub-frame (keeps the photon map for the others)
-    bool second_layer = false;    // runs only with the refraction view's second layer
     // Over all of the frame's sub-frames.
     double prior_ms(const CostDrivers& drivers) const;
     double runs_per_frame(const CostDrivers& drivers) const;

@@ -51,7 +51,8 @@ double resolution_error(double rows_fraction);
 // One knob's term: the table's excess at `value` (a resolution scale, a photon grid fraction, a
 // mesh resolution, a godray grid, lookup steps, the photon grid fraction at which the bilinear
 // kernel replaces the scene's, the map scale as a fraction of the scene's, samples per pixel, the
-// second layer on or off, the shadow map's texels, the terrain's cells as a fraction of its own),
+// second layer on or off, the shadow map's texels, the terrain's cells as a fraction of its own,
+// a scene lookup on or off),
 // the nearest step's where the table has no such value.
 enum class Knob : uint8_t {
     RenderScale,
@@ -62,9 +63,11 @@ enum class Knob : uint8_t {
     LookupSteps,
     BilinearKernel,
     MapScaleFraction,
-    SecondLayer,     // 1: the refraction view's second layer runs, 0: turned off
-    ShadowTexels,    // the sun shadow map's texels per side
-    TerrainFraction  // the terrain receivers' cells per side over their own
+    SecondLayer,       // 1: the refraction view's second layer runs, 0: turned off
+    ShadowTexels,      // the sun shadow map's texels per side
+    TerrainFraction,   // the terrain receivers' cells per side over their own
+    ReflectionLookup,  // 1: the reflected rays look the scene up, 0: turned off
+    RefractionLookup   // 1: the refracted rays look the scene up, 0: turned off
 };
 double error_term(Knob knob, double value);
 const char* knob_name(Knob knob);  // its name in docs/sweeps/budget_error_terms.csv

@@ -10,13 +10,36 @@
 namespace vkw::budget {
 namespace {
 
-// Each knob's values for a scene whose own value is `own`: its own, then the steps below it.
-std::vector<uint32_t> steps_below(uint32_t own, const uint32_t* steps, size_t count) {
+// Each knob's values for a scene whose own value is `own`: its own, then the steps below it (0
+// alone where the scene has none of it).
+template <size_t N>
+std::vector<uint32_t> steps_below(uint32_t own, const uint32_t (&steps)[N]) {
     std::vector<uint32_t> values = {own};
-    for (size_t i = 0; i < count; ++i) {
-        if (steps[i] < own) values.push_back(steps[i]);
+    for (uint32_t step : steps) {
+        if (own > 0 && step < own) values.push_back(step);
     }
     return values;
+}
+
+// The scene lookups' steps and which lookups run.
+struct SceneLookups {
+    uint32_t steps;
+    bool reflection;
+    bool refraction;
+    bool operator==(const SceneLookups&) const = default;
+};
+
+// The lookups' ladder: the top's steps and the lower ones with the top's lookups, then, at the
+// fewest steps, the reflected rays' lookup off, then both. Reflection goes first because its loss
+// was the smaller in the error table (docs/sweeps/budget_error_terms.csv: at most 0.005 against
+// 0.13 for the refracted rays, lake's bed seen through the water).
+std::vector<SceneLookups> lookup_ladder(const Quality& top) {
+    std::vector<SceneLookups> ladder;
+    const std::vector<uint32_t> steps = steps_below(top.lookup_steps, kLookupSteps);
+    for (uint32_t s : steps) ladder.push_back({s, top.reflection_lookup, top.refraction_lookup});
+    if (top.reflection_lookup && top.refraction_lookup) ladder.push_back({steps.back(), false, true});
+    if (top.scene_lookups() > 0) ladder.push_back({0, false, false});
+    return ladder;
 }
 
 }  // namespace
@@ -57,7 +80,7 @@ Quality scene_quality(const Scene& scene, const fg::FrameNeeds& needs, uint32_t 
         for (Effect lookup : {Effect::Reflection, Effect::Refraction}) {
             const fg::EffectDecision* decision = needs.find(lookup);
             if (!decision || !decision->needed) continue;
-            ++quality.scene_lookups;
+            (lookup == Effect::Reflection ? quality.reflection_lookup : quality.refraction_lookup) = true;
             quality.lookup_steps = std::max<uint32_t>(quality.lookup_steps, scene.effects[lookup].max_steps);
         }
         const fg::EffectDecision* second_layer = needs.find(Effect::RefractionSecondLayer);
@@ -88,9 +111,6 @@ std::vector<Quality> quality_candidates(const Quality& top) {
             if (grid < top.photon_grid) grids.push_back(grid);
         }
     }
-    const auto below = [](uint32_t own, const auto& steps) {
-        return own > 0 ? steps_below(own, std::data(steps), std::size(steps)) : std::vector<uint32_t>{0};
-    };
     std::vector<CausticKernel> kernels = {top.caustic_kernel};
     std::vector<double> map_scales = {top.map_scale};
     if (top.map_scale > 0.0) {
@@ -119,19 +139,23 @@ std::vector<Quality> quality_candidates(const Quality& top) {
         }
         candidates = std::move(more);
     };
-    vary(below(top.samples, kSampleCounts), [](Quality& q, uint32_t v) { q.samples = v; });
+    vary(steps_below(top.samples, kSampleCounts), [](Quality& q, uint32_t v) { q.samples = v; });
     vary(kRenderScales, [](Quality& q, double v) { q.render_scale = v; });
     vary(grids, [](Quality& q, uint32_t v) { q.photon_grid = v; });
     // The mesh is drawn from the surface grid: it has at most as many cells.
-    vary(below(top.mesh_resolution, kMeshResolutions),
+    vary(steps_below(top.mesh_resolution, kMeshResolutions),
          [](Quality& q, uint32_t v) { q.mesh_resolution = std::min(v, q.photon_grid); });
-    vary(below(top.godray_grid, kGodrayGrids), [](Quality& q, uint32_t v) { q.godray_grid = v; });
-    vary(below(top.lookup_steps, kLookupSteps), [](Quality& q, uint32_t v) { q.lookup_steps = v; });
+    vary(steps_below(top.godray_grid, kGodrayGrids), [](Quality& q, uint32_t v) { q.godray_grid = v; });
+    vary(lookup_ladder(top), [](Quality& q, const SceneLookups& v) {
+        q.lookup_steps = v.steps;
+        q.reflection_lookup = v.reflection;
+        q.refraction_lookup = v.refraction;
+    });
     vary(kernels, [](Quality& q, CausticKernel v) { q.caustic_kernel = v; });
     vary(map_scales, [](Quality& q, double v) { q.map_scale = v; });
     vary(top.second_layer ? std::vector<bool>{true, false} : std::vector<bool>{false},
-         [](Quality& q, bool v) { q.second_layer = v; });
-    vary(below(top.shadow_texels, kShadowTexels), [](Quality& q, uint32_t v) { q.shadow_texels = v; });
+         [](Quality& q, bool v) { q.second_layer = v && q.refraction_lookup; });  // the layer is the refraction view's
+    vary(steps_below(top.shadow_texels, kShadowTexels), [](Quality& q, uint32_t v) { q.shadow_texels = v; });
     vary(top.terrain_fraction > 0.0 ? std::vector<double>(std::begin(kTerrainFractions), std::end(kTerrainFractions))
                                     : std::vector<double>{0.0},
          [](Quality& q, double v) { q.terrain_fraction = v; });
@@ -156,11 +180,13 @@ void apply_quality(const Quality& quality, const Quality& top, Scene& scene) {
             scene.effects.godrays.grid = quality.godray_grid;
         }
     }
-    if (quality.lookup_steps < top.lookup_steps) {
+    if (quality.lookup_steps > 0 && quality.lookup_steps < top.lookup_steps) {
         for (Effect lookup : {Effect::Reflection, Effect::Refraction}) {
             scene.effects[lookup].max_steps = static_cast<int>(quality.lookup_steps);
         }
     }
+    if (top.reflection_lookup && !quality.reflection_lookup) scene.effects[Effect::Reflection].mode = EffectMode::Off;
+    if (top.refraction_lookup && !quality.refraction_lookup) scene.effects[Effect::Refraction].mode = EffectMode::Off;
     if (top.map_scale > 0.0) {
         scene.effects.caustics.kernel = quality.caustic_kernel;
         scene.effects.caustics.map_scale = quality.map_scale;
@@ -194,12 +220,14 @@ std::vector<std::string> quality_arguments(const Quality& quality, const Quality
                                 ? "--set effects.godrays.mode=off"
                                 : "--set effects.godrays.grid=" + std::to_string(quality.godray_grid));
     }
-    if (quality.lookup_steps < top.lookup_steps) {
+    if (quality.lookup_steps > 0 && quality.lookup_steps < top.lookup_steps) {
         for (const char* lookup : {"reflection", "refraction"}) {
             arguments.push_back(std::string("--set effects.") + lookup +
                                 ".max_steps=" + std::to_string(quality.lookup_steps));
         }
     }
+    if (top.reflection_lookup && !quality.reflection_lookup) arguments.push_back("--set effects.reflection.mode=off");
+    if (top.refraction_lookup && !quality.refraction_lookup) arguments.push_back("--set effects.refraction.mode=off");
     if (quality.caustic_kernel != top.caustic_kernel) {
         arguments.push_back(std::string("--set effects.caustics.kernel=") +
                             caustic_kernel_name(quality.caustic_kernel));
@@ -243,7 +271,11 @@ std::string describe_quality(const Quality& quality) {
             ", photons " + std::to_string(quality.photon_grid) + "^2, mesh " + std::to_string(quality.mesh_resolution);
     }
     if (quality.godray_grid > 0) text += ", godrays " + std::to_string(quality.godray_grid) + "^2";
-    if (quality.lookup_steps > 0) text += ", lookup steps " + std::to_string(quality.lookup_steps);
+    if (quality.lookup_steps > 0) {
+        text += ", lookup steps " + std::to_string(quality.lookup_steps);
+        if (!quality.reflection_lookup) text += " (refraction only)";
+        if (!quality.refraction_lookup) text += " (reflection only)";
+    }
     if (quality.second_layer) text += ", second layer";
     if (quality.shadow_texels > 0) text += ", shadow map " + std::to_string(quality.shadow_texels) + "^2";
     if (quality.terrain_fraction > 0.0) text += ", terrain cells x" + format_number(quality.terrain_fraction);

@@ -8,7 +8,10 @@
 //   mesh_resolution  water.mesh_resolution: the triangles the water and its stencil draw
 //   godray_grid      effects.godrays.grid, the beams walked; 0 turns the godrays off
 //   lookup_steps     effects.reflection/refraction.max_steps: each pixel's refinement or march
-//                    steps through the scene views, where the water looks the scene up
+//                    steps through the scene views, where the water looks the scene up; below the
+//                    fewest steps, the reflected rays' lookup off (effects.reflection.mode), then
+//                    both (the views' passes and each pixel's lookups; the rays keep the exact
+//                    floor and sky and miss the receiver meshes)
 //   caustic_kernel   effects.caustics.kernel: the bilinear tent's 4 taps a photon against the
 //                    adaptive hat's 9 (and its 4 neighbours traced), where the light-space map is made
 //   map_scale        effects.caustics.map_scale: the map's texels (clear, resolve, blur) and the
@@ -36,11 +39,12 @@ namespace vkw::budget {
 
 struct Quality {
     double render_scale = 1.0;
-    uint32_t photon_grid = 0;      // 0: the scene has no water
-    uint32_t mesh_resolution = 0;  // 0: the scene has no water
-    uint32_t godray_grid = 0;      // 0: no godrays (the scene's decision, or turned off)
-    uint32_t lookup_steps = 0;     // 0: the water looks no scene view up
-    uint32_t scene_lookups = 0;    // how many of reflection and refraction look the scene up (0 to 2)
+    uint32_t photon_grid = 0;        // 0: the scene has no water
+    uint32_t mesh_resolution = 0;    // 0: the scene has no water
+    uint32_t godray_grid = 0;        // 0: no godrays (the scene's decision, or turned off)
+    uint32_t lookup_steps = 0;       // 0: the water looks no scene view up
+    bool reflection_lookup = false;  // the reflected rays look the scene up (the mirrored reflection view runs)
+    bool refraction_lookup = false;  // the refracted rays look the scene up (the refraction view runs)
     CausticKernel caustic_kernel = CausticKernel::Adaptive;  // the light-space map's splat kernel
     double map_scale = 0.0;         // the light-space map's texels per water cell; 0: the frame makes no photon map
     uint32_t samples = 1;           // samples per pixel, k^2 (engine/scene/pixel_filter.hpp)
@@ -51,6 +55,7 @@ struct Quality {
     // model scales the caustic knobs' terms by it.
     double caustic_visibility = 1.0;
     bool operator==(const Quality&) const = default;
+    uint32_t scene_lookups() const { return uint32_t(reflection_lookup) + uint32_t(refraction_lookup); }
 };
 
 // The scene's own settings at full resolution and `samples` per pixel (the command's --spp), for
@@ -74,7 +79,8 @@ std::vector<Quality> quality_candidates(const Quality& top);
 
 // The scene with `quality`'s knobs (the resolution scale and the samples are the renderer's
 // options, not the scene's).
-// Below the top's lookup steps both reflection and refraction take `quality.lookup_steps`.
+// Below the top's lookup steps both reflection and refraction take `quality.lookup_steps`; a
+// lookup the top has and `quality` has not is turned off (its effect's mode).
 void apply_quality(const Quality& quality, const Quality& top, Scene& scene);
 
 // The command-line options that give `quality` explicitly, relative to the scene's own settings
