@@ -193,6 +193,37 @@ TEST(BudgetQuality, TheSceneLookupsTurnOffAfterTheirFewestSteps) {
     for (const Quality& q : quality_candidates(pool_top)) EXPECT_EQ(q.scene_lookups(), 0u);
 }
 
+// The viewer applies each frame's setting to the scene it applied the last one to: with the scene's
+// own fields put back first, any setting followed by the top gives the scene as loaded (lake:
+// its mesh, second layer, shadow map, lookups and terrain all back).
+TEST(BudgetQuality, TheTopAfterALowerSettingGivesTheSceneBack) {
+    const Scene original = load_scene(kLake);
+    const Quality top = scene_quality(original, decide_frame_needs(original, 4.0 / 3.0));
+    const SceneKnobFields at_load = knob_fields(original);
+    const std::vector<Quality> candidates = quality_candidates(top);
+    const Quality& cheapest = candidates.back();  // every knob at its lowest step
+    ASSERT_LT(cheapest.mesh_resolution, top.mesh_resolution);
+    ASSERT_FALSE(cheapest.second_layer || cheapest.reflection_lookup || cheapest.refraction_lookup);
+    Scene scene = original;
+    for (const Quality& q : {cheapest, top}) {
+        restore_knob_fields(at_load, scene);
+        apply_quality(q, top, scene);
+    }
+    EXPECT_EQ(scene.water->drawn_mesh_resolution(), original.water->drawn_mesh_resolution());
+    EXPECT_EQ(scene.water->grid_resolution, original.water->grid_resolution);
+    for (Effect effect :
+         {Effect::VolumeCaustics, Effect::Reflection, Effect::Refraction, Effect::RefractionSecondLayer}) {
+        EXPECT_EQ(scene.effects[effect].mode, original.effects[effect].mode) << effect_name(effect);
+        EXPECT_EQ(scene.effects[effect].max_steps, original.effects[effect].max_steps) << effect_name(effect);
+    }
+    EXPECT_EQ(scene.effects.godrays.grid, original.effects.godrays.grid);
+    EXPECT_EQ(scene.effects.caustics.kernel, original.effects.caustics.kernel);
+    EXPECT_EQ(scene.effects.caustics.map_scale, original.effects.caustics.map_scale);
+    EXPECT_EQ(scene.sun.shadow_texels, original.sun.shadow_texels);
+    EXPECT_EQ(scene.receivers[0].mesh.positions, original.receivers[0].mesh.positions);
+    EXPECT_EQ(scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0)), top);
+}
+
 // The kernel and the map's scale are knobs only where photons are splatted into the light-space
 // map: a scene already on the bilinear kernel keeps it, and at the lowest map scale there is no
 // lower one; the camera-space splats have neither knob.

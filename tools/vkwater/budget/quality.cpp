@@ -201,6 +201,44 @@ void apply_quality(const Quality& quality, const Quality& top, Scene& scene) {
     }
 }
 
+SceneKnobFields knob_fields(const Scene& scene) {
+    SceneKnobFields fields;
+    if (scene.water) {
+        fields.grid_resolution = scene.water->grid_resolution;
+        fields.mesh_resolution = scene.water->mesh_resolution;
+        fields.mesh_cell_pixels = scene.water->mesh_cell_pixels;
+    }
+    fields.godray_grid = scene.effects.godrays.grid;
+    fields.godrays = scene.effects[Effect::VolumeCaustics].mode;
+    fields.reflection = scene.effects[Effect::Reflection].mode;
+    fields.refraction = scene.effects[Effect::Refraction].mode;
+    fields.second_layer = scene.effects[Effect::RefractionSecondLayer].mode;
+    fields.reflection_steps = scene.effects[Effect::Reflection].max_steps;
+    fields.refraction_steps = scene.effects[Effect::Refraction].max_steps;
+    fields.kernel = scene.effects.caustics.kernel;
+    fields.map_scale = scene.effects.caustics.map_scale;
+    fields.shadow_texels = scene.sun.shadow_texels;
+    return fields;
+}
+
+void restore_knob_fields(const SceneKnobFields& fields, Scene& scene) {
+    if (scene.water) {
+        scene.water->grid_resolution = fields.grid_resolution;
+        scene.water->mesh_resolution = fields.mesh_resolution;
+        scene.water->mesh_cell_pixels = fields.mesh_cell_pixels;
+    }
+    scene.effects.godrays.grid = fields.godray_grid;
+    scene.effects[Effect::VolumeCaustics].mode = fields.godrays;
+    scene.effects[Effect::Reflection].mode = fields.reflection;
+    scene.effects[Effect::Refraction].mode = fields.refraction;
+    scene.effects[Effect::RefractionSecondLayer].mode = fields.second_layer;
+    scene.effects[Effect::Reflection].max_steps = fields.reflection_steps;
+    scene.effects[Effect::Refraction].max_steps = fields.refraction_steps;
+    scene.effects.caustics.kernel = fields.kernel;
+    scene.effects.caustics.map_scale = fields.map_scale;
+    scene.sun.shadow_texels = fields.shadow_texels;
+}
+
 std::vector<std::string> quality_arguments(const Quality& quality, const Quality& top, const Scene& scene) {
     std::vector<std::string> arguments;
     if (quality.render_scale != top.render_scale)

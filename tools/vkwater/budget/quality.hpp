@@ -32,6 +32,7 @@
 #include "engine/scene/scene.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -82,6 +83,25 @@ std::vector<Quality> quality_candidates(const Quality& top);
 // Below the top's lookup steps both reflection and refraction take `quality.lookup_steps`; a
 // lookup the top has and `quality` has not is turned off (its effect's mode).
 void apply_quality(const Quality& quality, const Quality& top, Scene& scene);
+
+// The scene fields that apply_quality may change, as a scene has them. The viewer applies each
+// frame's setting to the scene it applied the last one to, and apply_quality sets only what lies
+// below the top: the viewer puts these back first, so that a setting above the last one gets the
+// scene's own values again (its mesh, its second layer, its shadow map, its lookups). The terrain's
+// cells are set by apply_quality at every setting, the top's too.
+struct SceneKnobFields {
+    uint32_t grid_resolution = 0;
+    std::optional<uint32_t> mesh_resolution, mesh_cell_pixels;
+    uint32_t godray_grid = 0;
+    EffectMode godrays = EffectMode::Auto, reflection = EffectMode::Auto, refraction = EffectMode::Auto,
+               second_layer = EffectMode::Auto;
+    int reflection_steps = 0, refraction_steps = 0;
+    CausticKernel kernel = CausticKernel::Adaptive;
+    double map_scale = 0.0;
+    uint32_t shadow_texels = 0;
+};
+SceneKnobFields knob_fields(const Scene& scene);
+void restore_knob_fields(const SceneKnobFields& fields, Scene& scene);
 
 // The command-line options that give `quality` explicitly, relative to the scene's own settings
 // `top`: "--render-scale 0.5 --set water.grid_resolution=256 ..." ("" when it is `top` at one

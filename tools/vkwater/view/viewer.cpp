@@ -160,9 +160,8 @@ private:
     std::unique_ptr<budget::BudgetController> budget_;  // with a budget, for the scene as loaded
     // What the budget changes and must give back when it steps up: the godrays' mode (it turns
     // them off) and the scene lookups' steps, as loaded.
-    EffectMode godray_mode_at_load_ = EffectMode::Auto;
-    int reflection_steps_at_load_ = 0, refraction_steps_at_load_ = 0;
-    uint64_t frame_ = 0;  // frames shown so far: the number of the next one
+    budget::SceneKnobFields knobs_at_load_;  // what the budget turns, as the scene was loaded
+    uint64_t frame_ = 0;                     // frames shown so far: the number of the next one
     uint64_t timing_due_ = FrameStats::kWarmupFrames;
     std::vector<std::string> pass_list_;           // the scene graph's living passes, last frame
     fg::FrameExecutor* scene_executor_ = nullptr;  // valid until the next prepare or reload
@@ -267,9 +266,7 @@ double Viewer::choose_budget_ms() const {
 }
 
 void Viewer::start_budget() {
-    godray_mode_at_load_ = scene_->effects[Effect::VolumeCaustics].mode;
-    reflection_steps_at_load_ = scene_->effects[Effect::Reflection].max_steps;
-    refraction_steps_at_load_ = scene_->effects[Effect::Refraction].max_steps;
+    knobs_at_load_ = budget::knob_fields(*scene_);
     const fg::FrameNeeds needs = decide_frame_needs(*scene_, double(options_.width) / double(options_.height));
     budget_ = std::make_unique<budget::BudgetController>(
         budget_ms_, budget::scene_quality(*scene_, needs, most_samples_),
@@ -282,11 +279,9 @@ void Viewer::start_budget() {
 
 void Viewer::apply_budget(RenderOptions& options) {
     if (!budget_) return;
-    // The budget's knobs over the scene as loaded (or as the panel left it): every frame, since a
-    // panel edit or a reload may have changed them.
-    scene_->effects[Effect::VolumeCaustics].mode = godray_mode_at_load_;
-    scene_->effects[Effect::Reflection].max_steps = reflection_steps_at_load_;
-    scene_->effects[Effect::Refraction].max_steps = refraction_steps_at_load_;
+    // The budget's knobs over the scene as loaded, every frame: the last frame's setting may have
+    // been lower. While the budget runs it owns these fields (a panel edit of one gives way to it).
+    budget::restore_knob_fields(knobs_at_load_, *scene_);
     budget::apply_quality(budget_->current(), budget_->top(), *scene_);
     options.render_scale = budget_->current().render_scale;
 }
