@@ -117,6 +117,7 @@ bool holds(PassCondition condition, const CostDrivers& drivers, bool godrays, bo
         case PassCondition::SecondLayer: return at(drivers, Driver::SecondLayerPixels) > 0.0;
         case PassCondition::ReflectionView: return at(drivers, Driver::ReflectionLookupPixels) > 0.0;
         case PassCondition::RefractionView: return at(drivers, Driver::RefractionLookupPixels) > 0.0;
+        case PassCondition::Count: break;
     }
     return true;
 }
@@ -242,8 +243,7 @@ double CostModel::typical_factor() const {
 
 double CostModel::predict_passes_ms(const CostDrivers& drivers, bool godrays, bool upscale) const {
     double ms = 0.0;
-    constexpr size_t kConditions = static_cast<size_t>(PassCondition::RefractionView) + 1;
-    std::array<bool, kConditions> timed{};  // the conditions some timed pass ran under
+    std::array<bool, static_cast<size_t>(PassCondition::Count)> timed{};  // the conditions some timed pass ran under
     for (const auto& [name, pass] : passes_) {
         timed[static_cast<size_t>(pass.formula.condition)] = true;
         if (!runs(pass.formula, drivers, godrays, upscale)) continue;

@@ -63,6 +63,7 @@ enum class PassCondition : uint8_t {
     SecondLayer,     // the refraction view's second layer
     ReflectionView,  // the reflected rays' scene lookup
     RefractionView,  // the refracted rays' scene lookup
+    Count
 };
 
 // A pass's prior cost formula: nanoseconds per unit of each driver on lavapipe; empty terms when
