@@ -30,9 +30,8 @@ std::string BudgetedSettings::describe(double budget_ms) const {
 BudgetedSettings choose_budgeted_settings(Renderer& renderer, Scene& scene, RenderOptions& options, double budget_ms,
                                           uint32_t samples) {
     const Scene original = scene;
-    const double aspect = double(options.width) / double(options.height);
-    const fg::FrameNeeds needs = decide_frame_needs(scene, aspect);
-    const budget::Quality top = budget::scene_quality(scene, needs, samples, aspect);
+    const fg::FrameNeeds needs = decide_frame_needs(scene, double(options.width) / double(options.height));
+    const budget::Quality top = budget::scene_quality(scene, needs, samples);
     const uint32_t width = options.width, height = options.height;
     budget::BudgetController controller(
         budget_ms, top,

@@ -37,10 +37,8 @@ const std::vector<Entry>& table(Knob knob) {
     static const std::vector<Entry> second_layer = {{1.0, 0.0}, {0.0, 0.0013903}};
     static const std::vector<Entry> shadow_texels = {{1024, 0.0}, {512, 0.00042679}, {256, 0.00165248}};
     static const std::vector<Entry> terrain_fraction = {{1.0, 0.0}, {0.5, 0.0}, {0.25, 0.0002221}};
-    // Per unit of the lookup's visibility (lookup_visibility.hpp): lake's reflected rays (0.0019356
-    // over 0.00147), the showcase pool's refracted rays (0.0177348 over 0.0626).
-    static const std::vector<Entry> reflection_lookup = {{1.0, 0.0}, {0.0, 1.31252}};
-    static const std::vector<Entry> refraction_lookup = {{1.0, 0.0}, {0.0, 0.283274}};
+    static const std::vector<Entry> reflection_lookup = {{1.0, 0.0}, {0.0, 0.0047184}};
+    static const std::vector<Entry> refraction_lookup = {{1.0, 0.0}, {0.0, 0.128119}};
     switch (knob) {
         case Knob::LookupSteps: return lookup_steps;
         case Knob::RenderScale: return render_scale;
@@ -150,19 +148,18 @@ ErrorPrediction predict_error(const Quality& quality, const Quality& top, double
         terms.push_back({"water mesh", error_term(Knob::MeshResolution, quality.mesh_resolution) -
                                            error_term(Knob::MeshResolution, top.mesh_resolution)});
     }
-    // The steps count where a lookup still runs; each lookup turned off adds its own term, its
-    // weight times the scene's visibility of it (measured at the scene's own steps: with both off,
-    // lake's 0.1283 and the showcase pool's 0.0180 lie under the sum of the two lookups' excesses,
-    // 0.1301 and 0.0224).
+    // The steps count where a lookup still runs; each lookup turned off adds its own term (measured
+    // at the scene's own steps: with both off, lake's 0.1283 and the showcase pool's 0.0180 lie
+    // under the sum of the two lookups' terms, 0.1301 and 0.0224).
     if (top.lookup_steps > 0 && quality.lookup_steps > 0) {
         terms.push_back({"scene lookup steps", error_term(Knob::LookupSteps, quality.lookup_steps) -
                                                    error_term(Knob::LookupSteps, top.lookup_steps)});
     }
     if (top.reflection_lookup && !quality.reflection_lookup) {
-        terms.push_back({"reflection lookup off", top.reflection_visibility * error_term(Knob::ReflectionLookup, 0.0)});
+        terms.push_back({"reflection lookup off", error_term(Knob::ReflectionLookup, 0.0)});
     }
     if (top.refraction_lookup && !quality.refraction_lookup) {
-        terms.push_back({"refraction lookup off", top.refraction_visibility * error_term(Knob::RefractionLookup, 0.0)});
+        terms.push_back({"refraction lookup off", error_term(Knob::RefractionLookup, 0.0)});
     }
     if (top.map_scale > 0.0) {
         const bool bilinear = quality.caustic_kernel == CausticKernel::Bilinear;

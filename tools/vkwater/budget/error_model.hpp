@@ -16,11 +16,6 @@
 // 30 m down in coastal water (visibility 3e-4), makes its caustic knobs nearly free, as the sweep
 // measured them (no excess at any photon grid).
 //
-// The scene lookups' terms are derived alike: weights per unit of each lookup's visibility
-// (lookup_visibility.hpp: the share of the frame's light its rays bring back from receiver meshes),
-// so that the lagoon, whose refracted rays meet almost nothing from under the water, loses almost
-// nothing in prediction by turning that lookup off, as the sweep measured.
-//
 // What it is not yet: the other error bounds derived per effect (the mesh's sag in pixels, the
 // photons seen per texel) with fitted weights, which would follow a scene's wavelengths and depths
 // instead of the measured scenes' worst case.

@@ -9,9 +9,9 @@
 //   godray_grid      effects.godrays.grid, the beams walked; 0 turns the godrays off
 //   lookup_steps     effects.reflection/refraction.max_steps: each pixel's refinement or march
 //                    steps through the scene views, where the water looks the scene up; below the
-//                    fewest steps, one lookup off (effects.reflection.mode or refraction.mode: the
-//                    one the error model says loses less), then both (the views' passes and each
-//                    pixel's lookups; the rays keep the exact floor and sky and miss the receivers)
+//                    fewest steps, the reflected rays' lookup off (effects.reflection.mode), then
+//                    both (the views' passes and each pixel's lookups; the rays keep the exact
+//                    floor and sky and miss the receiver meshes)
 //   caustic_kernel   effects.caustics.kernel: the bilinear tent's 4 taps a photon against the
 //                    adaptive hat's 9 (and its 4 neighbours traced), where the light-space map is made
 //   map_scale        effects.caustics.map_scale: the map's texels (clear, resolve, blur) and the
@@ -55,21 +55,14 @@ struct Quality {
     // Not a knob: the scene's caustic_visibility (below), the same in every candidate; the error
     // model scales the caustic knobs' terms by it.
     double caustic_visibility = 1.0;
-    // Not knobs either: the share of the frame's light that the reflected and the refracted rays'
-    // scene lookups bring back from receiver meshes (lookup_visibility.hpp), 0 where the lookup does
-    // not run; the error model scales each lookup's term by its own, and the lookups' ladder turns
-    // off first the one whose term is the smaller.
-    double reflection_visibility = 0.0;
-    double refraction_visibility = 0.0;
     bool operator==(const Quality&) const = default;
     uint32_t scene_lookups() const { return uint32_t(reflection_lookup) + uint32_t(refraction_lookup); }
 };
 
 // The scene's own settings at full resolution and `samples` per pixel (the command's --spp), for
 // the effects `needs` decides to run (a scene without godrays or scene lookups has nothing to turn
-// down there). Its lookup steps are the larger of reflection's and refraction's; the lookups'
-// visibilities are traced for a frame of `aspect` (width over height) from the scene's camera.
-Quality scene_quality(const Scene& scene, const fg::FrameNeeds& needs, uint32_t samples = 1, double aspect = 4.0 / 3.0);
+// down there). Its lookup steps are the larger of reflection's and refraction's.
+Quality scene_quality(const Scene& scene, const fg::FrameNeeds& needs, uint32_t samples = 1);
 
 // At most the share of the sun's light that reaches a receiver under the water and comes back to
 // the camera: exp(-sigma (d / cos_t + d_view)), sigma the medium's smallest extinction over its

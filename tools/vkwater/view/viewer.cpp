@@ -267,10 +267,9 @@ double Viewer::choose_budget_ms() const {
 
 void Viewer::start_budget() {
     knobs_at_load_ = budget::knob_fields(*scene_);
-    const double aspect = double(options_.width) / double(options_.height);
-    const fg::FrameNeeds needs = decide_frame_needs(*scene_, aspect);
+    const fg::FrameNeeds needs = decide_frame_needs(*scene_, double(options_.width) / double(options_.height));
     budget_ = std::make_unique<budget::BudgetController>(
-        budget_ms_, budget::scene_quality(*scene_, needs, most_samples_, aspect),
+        budget_ms_, budget::scene_quality(*scene_, needs, most_samples_),
         [this](const budget::Quality& q) {
             const VkExtent2D extent = output_extent();
             return budget::cost_drivers(*scene_, q, extent.width, extent.height);
