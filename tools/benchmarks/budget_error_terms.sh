@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # tools/benchmarks/budget_error_terms.sh [SCENE...]: the error table of the frame-time budget
-# (tools/vkwater/budget/error_model.hpp). For each scene (default: pool, lake and ocean, against
+# (tools/vkwater/budget/error_model.hpp). For each scene (default: pool, lake, ocean and box, against
 # their box-filtered references in tests/references/box/, and the two showcase scenes against their
-# point-sampled ones in tests/references/showcase/), renders it at 400x300 with one quality
+# point-sampled ones in tests/references/showcase/; box for its scene lookups, whose loss is the
+# largest there: a red box reflected against a sky without red, seen over a black floor), renders it at 400x300 with one quality
 # knob changed at a time from the scene's own settings, and prints one CSV row per render: the
 # knob, its value, the relMSE against the scene's box reference, and the excess over the
 # scene's own settings. The knobs and their values are the budget's candidates
@@ -25,7 +26,7 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 vk=${VKWATER:-build/tools/vkwater/vkwater}
 scenes=("$@")
-[ ${#scenes[@]} -gt 0 ] || scenes=(pool lake ocean showcase/pool showcase/lagoon)
+[ ${#scenes[@]} -gt 0 ] || scenes=(pool lake ocean box showcase/pool showcase/lagoon)
 csv=docs/sweeps/budget_error_terms.csv
 source tools/benchmarks/provenance.sh
 source tools/benchmarks/box_averaged.sh
