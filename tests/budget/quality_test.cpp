@@ -138,10 +138,10 @@ TEST(BudgetQuality, TheTerrainTurnsDownOnlyWhereTheSceneHasOne) {
     for (const Quality& q : quality_candidates(pool_top)) EXPECT_EQ(q.terrain_fraction, 0.0);
 }
 
-// The scene lookups' ladder where the water looks the scene up (lake): the steps 64, 16 and 8 with
-// both lookups, then at 8 the reflected rays' lookup off, then both off, each rung in every
-// combination of the other knobs; with a lookup off its view's second layer is off too. Pool looks
-// nothing up and has no rung.
+// The scene lookups' ladder where the water looks the scene up (lake, seen from above): the steps
+// 64, 16 and 8 with both lookups, then at 8 the reflected rays' lookup off, then both off, each rung
+// in every combination of the other knobs; with a lookup off its view's second layer is off too.
+// Pool looks nothing up and has no rung.
 TEST(BudgetQuality, TheSceneLookupsTurnOffAfterTheirFewestSteps) {
     const Scene lake = load_scene(kLake);
     const Quality top = scene_quality(lake, decide_frame_needs(lake, 4.0 / 3.0));
@@ -186,6 +186,14 @@ TEST(BudgetQuality, TheSceneLookupsTurnOffAfterTheirFewestSteps) {
     const fg::FrameNeeds needs = decide_frame_needs(applied, 4.0 / 3.0);
     EXPECT_FALSE(needs.find(Effect::Reflection)->needed);
     EXPECT_FALSE(needs.find(Effect::Refraction)->needed);
+
+    // Seen from under the water (the lagoon) the refracted rays' lookup goes first.
+    const Scene lagoon = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/showcase/lagoon.json");
+    const Quality lagoon_top = scene_quality(lagoon, decide_frame_needs(lagoon, 4.0 / 3.0));
+    ASSERT_TRUE(lagoon_top.camera_in_water && lagoon_top.reflection_lookup && lagoon_top.refraction_lookup);
+    for (const Quality& q : quality_candidates(lagoon_top)) {
+        EXPECT_FALSE(!q.reflection_lookup && q.refraction_lookup) << describe_quality(q);
+    }
 
     const Scene pool = load_scene(kPool);
     const Quality pool_top = scene_quality(pool, decide_frame_needs(pool, 4.0 / 3.0));

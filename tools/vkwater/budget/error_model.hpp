@@ -1,6 +1,6 @@
 // The frame-time budget's error model: how much error a candidate setting adds to the scene's own
 // settings, without a reference. One term per knob, looked up in a table measured once on the
-// five scenes that have a reference (tools/benchmarks/budget_error_terms.sh writes
+// six of the scenes that have a reference (tools/benchmarks/budget_error_terms.sh writes
 // docs/sweeps/budget_error_terms.csv): each entry is the largest relMSE excess any of those scenes
 // showed with that knob alone at that value, so the table errs towards overestimating. Terms add
 // up: docs/performance.md "The frame-time budget" checks that against combined settings.

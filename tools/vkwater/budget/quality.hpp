@@ -9,7 +9,8 @@
 //   godray_grid      effects.godrays.grid, the beams walked; 0 turns the godrays off
 //   lookup_steps     effects.reflection/refraction.max_steps: each pixel's refinement or march
 //                    steps through the scene views, where the water looks the scene up; below the
-//                    fewest steps, the reflected rays' lookup off (effects.reflection.mode), then
+//                    fewest steps, one lookup off (effects.reflection.mode or refraction.mode: the
+//                    reflected rays' from above the water, the refracted rays' from below), then
 //                    both (the views' passes and each pixel's lookups; the rays keep the exact
 //                    floor and sky and miss the receiver meshes)
 //   caustic_kernel   effects.caustics.kernel: the bilinear tent's 4 taps a photon against the
@@ -55,6 +56,9 @@ struct Quality {
     // Not a knob: the scene's caustic_visibility (below), the same in every candidate; the error
     // model scales the caustic knobs' terms by it.
     double caustic_visibility = 1.0;
+    // Not a knob: the camera is under the mean water level, which orders the lookups' ladder
+    // (quality.cpp, lookup_ladder).
+    bool camera_in_water = false;
     bool operator==(const Quality&) const = default;
     uint32_t scene_lookups() const { return uint32_t(reflection_lookup) + uint32_t(refraction_lookup); }
 };
