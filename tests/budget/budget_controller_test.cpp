@@ -232,6 +232,33 @@ TEST(BudgetController, TheFittedModelPredictsSupersampledFrames) {
     EXPECT_DOUBLE_EQ(pass_formula("water").prior_ms(four), 4.0 * pass_formula("water").prior_ms(one));
 }
 
+// A step up measured over the budget stops every step up for kBanFrames frames, however cheap the
+// frames after it: the model had underestimated what the step adds, and the next candidate up
+// would share that error (the picture would flicker between the two). After the ban a step up may
+// come again. Frame times are given directly, whatever the setting.
+TEST(BudgetController, AStepUpMeasuredOverTheBudgetStopsStepsUpForABan) {
+    static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
+    ScriptedDevice device(scene);
+    const Quality top = scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0));
+    BudgetController controller(
+        100.0, top, [](const Quality& q) { return cost_drivers(scene, q, kWidth, kHeight); },
+        [] { return double(kHeight); });
+    controller.add_pass_times(device.pass_times(top));
+    const auto frames = [&](uint32_t count, double ms) {
+        for (uint32_t i = 0; i < count; ++i) controller.add_frame(ms);
+    };
+    frames(BudgetController::kQuickFrames, 500.0);  // far over: down at once
+    ASSERT_EQ(controller.changes(), 1u);
+    frames(BudgetController::kUpgradeFrames, 30.0);  // well under: up
+    ASSERT_EQ(controller.changes(), 2u);
+    frames(BudgetController::kSettleFrames, 150.0);  // the step up is over: down again
+    ASSERT_EQ(controller.changes(), 3u);
+    frames(BudgetController::kBanFrames - 2 * BudgetController::kSettleFrames, 30.0);
+    EXPECT_EQ(controller.changes(), 3u) << "stepped up again within the ban";
+    frames(2 * BudgetController::kSettleFrames + 1, 30.0);
+    EXPECT_EQ(controller.changes(), 4u) << "no step up after the ban";
+}
+
 // The second layer's pass runs only with the layer, and the water pass costs more with it. Fitted
 // to a frame with the layer, the model predicts the frame without it from the same factors; fitted
 // to one without, it takes the layer's pass at the device's typical factor.

@@ -111,15 +111,19 @@ bool BudgetController::add_frame(double ms) {
     if (measured > budget_ms_) {
         const size_t index = std::find(candidates_.begin(), candidates_.end(), current_) - candidates_.begin();
         banned_until_[index] = frame_ + kBanFrames;
+        if (stepped_up_) no_step_up_until_ = frame_ + kBanFrames;
         const Choice next = choose(kTargetFraction * budget_ms_);
         if (next.quality == current_) return false;  // already the cheapest there is
         change_to(next.quality);
+        stepped_up_ = false;
         return true;
     }
-    if (measured < kUpgradeFraction * budget_ms_ && frames_at_current_.size() >= kUpgradeFrames) {
+    if (measured < kUpgradeFraction * budget_ms_ && frames_at_current_.size() >= kUpgradeFrames &&
+        frame_ >= no_step_up_until_) {
         const Choice next = choose(kTargetFraction * budget_ms_);
         if (next.error.excess >= predict_error(current_, top_, output_rows_()).excess) return false;
         change_to(next.quality);
+        stepped_up_ = true;
         return true;
     }
     return false;

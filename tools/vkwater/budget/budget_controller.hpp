@@ -13,7 +13,11 @@
 //   - it steps up only when the median stays below kUpgradeFraction of the budget for
 //     kUpgradeFrames, to a candidate predicted within kTargetFraction, and only for a lower
 //     predicted error;
-//   - a setting measured over the budget is not stepped up to again for kBanFrames frames.
+//   - a setting measured over the budget is not stepped up to again for kBanFrames frames;
+//   - a step up that is measured over the budget stops every step up for kBanFrames frames: the
+//     model had underestimated what the step adds, and the candidates near it share that error
+//     (the showcase pool, stepping up from its scene lookups off to the refraction's lookup on,
+//     tried one such candidate after another, its walls appearing and going every 8-30 frames).
 #pragma once
 
 #include "tools/vkwater/budget/cost_model.hpp"
@@ -100,6 +104,8 @@ private:
     uint64_t frame_ = 0;
     uint64_t changes_ = 0;
     std::map<size_t, uint64_t> banned_until_;  // candidate index -> frame
+    bool stepped_up_ = false;                  // current() was reached by a step up
+    uint64_t no_step_up_until_ = 0;            // frame
 };
 
 }  // namespace vkw::budget
