@@ -96,6 +96,19 @@ private:
     bool noiseless_ = false;
 };
 
+// Pool, loaded once for every test here.
+const Scene& pool() {
+    static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
+    return scene;
+}
+
+// A controller of pool at 800x600 under `budget_ms`, at the scene's own settings.
+BudgetController pool_controller(double budget_ms) {
+    return BudgetController(
+        budget_ms, scene_quality(pool(), decide_frame_needs(pool(), 4.0 / 3.0)),
+        [](const Quality& q) { return cost_drivers(pool(), q, kWidth, kHeight); }, [] { return double(kHeight); });
+}
+
 struct BudgetRun {
     std::vector<Quality> settings;  // the setting of each frame
     uint64_t changes = 0;
@@ -103,11 +116,8 @@ struct BudgetRun {
 
 // `frames` frames of pool under `budget_ms`; `load_at(frame)` is the machine's load.
 BudgetRun run_budget(double budget_ms, uint32_t frames, const std::function<double(uint32_t)>& load_at) {
-    static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
-    ScriptedDevice device(scene);
-    BudgetController controller(
-        budget_ms, scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0)),
-        [](const Quality& q) { return cost_drivers(scene, q, kWidth, kHeight); }, [] { return double(kHeight); });
+    ScriptedDevice device(pool());
+    BudgetController controller = pool_controller(budget_ms);
     BudgetRun run;
     uint64_t timing_due = 3;  // after the warm-up frames, as the viewer
     for (uint32_t frame = 0; frame < frames; ++frame) {
@@ -124,7 +134,7 @@ BudgetRun run_budget(double budget_ms, uint32_t frames, const std::function<doub
 }
 
 double true_ms(const Quality& q, double load) {
-    static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
+    const Scene& scene = pool();
     ScriptedDevice device(scene);
     device.load = load;
     return device.true_frame_ms(q);
@@ -161,12 +171,9 @@ TEST(BudgetController, ReactsToAStepInLoadWithinBoundedFrames) {
 }
 
 TEST(BudgetController, NeverPicksASettingTheTableRanksWorseAtEqualCost) {
-    static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
-    ScriptedDevice device(scene);
-    const Quality top = scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0));
-    BudgetController controller(
-        100.0, top, [](const Quality& q) { return cost_drivers(scene, q, kWidth, kHeight); },
-        [] { return double(kHeight); });
+    ScriptedDevice device(pool());
+    BudgetController controller = pool_controller(100.0);
+    const Quality& top = controller.top();
     controller.add_pass_times(device.pass_times(top));
     const std::vector<Quality> candidates = quality_candidates(top);
     for (double limit : {20.0, 50.0, 100.0, 200.0, 400.0}) {
@@ -184,7 +191,7 @@ TEST(BudgetController, NeverPicksASettingTheTableRanksWorseAtEqualCost) {
 }
 
 TEST(BudgetController, TheFittedModelPredictsTheDevice) {
-    static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
+    const Scene& scene = pool();
     ScriptedDevice device(scene);
     const Quality top = scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0));
     CostModel model;
@@ -206,7 +213,7 @@ TEST(BudgetController, TheFittedModelPredictsTheDevice) {
 // samples or at 1, the model predicts both. Fitted at one sample it has not timed the kept map's
 // copy, and takes its prior at the device's typical factor (the wider tolerance).
 TEST(BudgetController, TheFittedModelPredictsSupersampledFrames) {
-    static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
+    const Scene& scene = pool();
     ScriptedDevice device(scene);
     const Quality top = scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0), 4);
     ASSERT_EQ(top.samples, 4u);
@@ -237,12 +244,9 @@ TEST(BudgetController, TheFittedModelPredictsSupersampledFrames) {
 // would share that error (the picture would flicker between the two). After the ban a step up may
 // come again. Frame times are given directly, whatever the setting.
 TEST(BudgetController, AStepUpMeasuredOverTheBudgetStopsStepsUpForABan) {
-    static const Scene scene = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/pool.json");
-    ScriptedDevice device(scene);
-    const Quality top = scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0));
-    BudgetController controller(
-        100.0, top, [](const Quality& q) { return cost_drivers(scene, q, kWidth, kHeight); },
-        [] { return double(kHeight); });
+    ScriptedDevice device(pool());
+    BudgetController controller = pool_controller(100.0);
+    const Quality& top = controller.top();
     controller.add_pass_times(device.pass_times(top));
     const auto frames = [&](uint32_t count, double ms) {
         for (uint32_t i = 0; i < count; ++i) controller.add_frame(ms);

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <optional>
 #include <string_view>
 
 namespace vkw::budget {
@@ -120,10 +119,6 @@ bool holds(PassCondition condition, const CostDrivers& drivers, bool godrays, bo
         case PassCondition::Count: break;
     }
     return true;
-}
-
-bool runs(const PassFormula& formula, const CostDrivers& drivers, bool godrays, bool upscale) {
-    return holds(formula.condition, drivers, godrays, upscale);
 }
 
 }  // namespace
@@ -243,27 +238,33 @@ double CostModel::typical_factor() const {
 
 double CostModel::predict_passes_ms(const CostDrivers& drivers, bool godrays, bool upscale) const {
     double ms = 0.0;
-    std::array<bool, static_cast<size_t>(PassCondition::Count)> timed{};  // the conditions some timed pass ran under
+    constexpr size_t kConditions = static_cast<size_t>(PassCondition::Count);
+    std::array<bool, kConditions> timed{};  // the conditions some timed pass ran under
     for (const auto& [name, pass] : passes_) {
         timed[static_cast<size_t>(pass.formula.condition)] = true;
-        if (!runs(pass.formula, drivers, godrays, upscale)) continue;
+        if (!holds(pass.formula.condition, drivers, godrays, upscale)) continue;
         ms += pass.formula.ns_per_unit.empty() ? pass.fixed_ms * sub_frames(drivers)
                                                : pass.factor * pass.formula.prior_ms(drivers);
     }
     // Passes the timed frame did not run (godrays it had turned off, the upscale at full
     // resolution, the kept photon map at one sample, the second layer or a scene lookup turned
     // off): their priors, at the factor typical of this device. Of the upscales only the frame's:
-    // the caustic and in-scatter layers' run only where a render writes those layers.
-    std::optional<double> factor;
+    // the caustic and in-scatter layers' run only where a render writes those layers. Most
+    // candidates miss none, and the choice predicts every candidate: the table is read only then.
+    std::array<bool, kConditions> missing{};
+    bool any_missing = false;
+    for (size_t c = 0; c < kConditions; ++c) {
+        const auto condition = static_cast<PassCondition>(c);
+        missing[c] = condition != PassCondition::Always && !timed[c] && holds(condition, drivers, godrays, upscale);
+        any_missing = any_missing || missing[c];
+    }
+    if (!any_missing) return ms;
+    const double factor = typical_factor();
     for (const KnownPass& known : known_passes()) {
         const PassCondition condition = known.formula.condition;
-        if (condition == PassCondition::Always || timed[static_cast<size_t>(condition)] ||
-            !holds(condition, drivers, godrays, upscale)) {
-            continue;
-        }
+        if (!missing[static_cast<size_t>(condition)]) continue;
         if (condition == PassCondition::Upscale && std::string_view(known.name) != "upscale") continue;
-        if (!factor) factor = typical_factor();
-        ms += *factor * known.formula.prior_ms(drivers);
+        ms += factor * known.formula.prior_ms(drivers);
     }
     return ms;
 }

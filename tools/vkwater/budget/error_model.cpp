@@ -150,7 +150,7 @@ ErrorPrediction predict_error(const Quality& quality, const Quality& top, double
     }
     // The steps count where a lookup still runs; each lookup turned off adds its own term (measured
     // at the scene's own steps: with both off, lake's 0.1283 and the showcase pool's 0.0180 lie
-    // under the sum of the two lookups' terms, 0.1301 and 0.0224).
+    // under the sums of their own two lookups' excesses, 0.1301 and 0.0224).
     if (top.lookup_steps > 0 && quality.lookup_steps > 0) {
         terms.push_back({"scene lookup steps", error_term(Knob::LookupSteps, quality.lookup_steps) -
                                                    error_term(Knob::LookupSteps, top.lookup_steps)});

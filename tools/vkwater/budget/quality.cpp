@@ -208,42 +208,39 @@ void apply_quality(const Quality& quality, const Quality& top, Scene& scene) {
     }
 }
 
+namespace {
+
+// Each field the budget turns, the scene's beside the kept one's, in one list for both directions:
+// `copy(in_scene, kept)` reads or writes it (Scene and SceneKnobFields const as the direction asks).
+template <class SceneT, class FieldsT, class Copy>
+void each_knob_field(SceneT& scene, FieldsT& fields, Copy copy) {
+    if (scene.water) {
+        copy(scene.water->grid_resolution, fields.grid_resolution);
+        copy(scene.water->mesh_resolution, fields.mesh_resolution);
+        copy(scene.water->mesh_cell_pixels, fields.mesh_cell_pixels);
+    }
+    copy(scene.effects.godrays.grid, fields.godray_grid);
+    copy(scene.effects[Effect::VolumeCaustics].mode, fields.godrays);
+    copy(scene.effects[Effect::Reflection].mode, fields.reflection);
+    copy(scene.effects[Effect::Refraction].mode, fields.refraction);
+    copy(scene.effects[Effect::RefractionSecondLayer].mode, fields.second_layer);
+    copy(scene.effects[Effect::Reflection].max_steps, fields.reflection_steps);
+    copy(scene.effects[Effect::Refraction].max_steps, fields.refraction_steps);
+    copy(scene.effects.caustics.kernel, fields.kernel);
+    copy(scene.effects.caustics.map_scale, fields.map_scale);
+    copy(scene.sun.shadow_texels, fields.shadow_texels);
+}
+
+}  // namespace
+
 SceneKnobFields knob_fields(const Scene& scene) {
     SceneKnobFields fields;
-    if (scene.water) {
-        fields.grid_resolution = scene.water->grid_resolution;
-        fields.mesh_resolution = scene.water->mesh_resolution;
-        fields.mesh_cell_pixels = scene.water->mesh_cell_pixels;
-    }
-    fields.godray_grid = scene.effects.godrays.grid;
-    fields.godrays = scene.effects[Effect::VolumeCaustics].mode;
-    fields.reflection = scene.effects[Effect::Reflection].mode;
-    fields.refraction = scene.effects[Effect::Refraction].mode;
-    fields.second_layer = scene.effects[Effect::RefractionSecondLayer].mode;
-    fields.reflection_steps = scene.effects[Effect::Reflection].max_steps;
-    fields.refraction_steps = scene.effects[Effect::Refraction].max_steps;
-    fields.kernel = scene.effects.caustics.kernel;
-    fields.map_scale = scene.effects.caustics.map_scale;
-    fields.shadow_texels = scene.sun.shadow_texels;
+    each_knob_field(scene, fields, [](const auto& in_scene, auto& kept) { kept = in_scene; });
     return fields;
 }
 
 void restore_knob_fields(const SceneKnobFields& fields, Scene& scene) {
-    if (scene.water) {
-        scene.water->grid_resolution = fields.grid_resolution;
-        scene.water->mesh_resolution = fields.mesh_resolution;
-        scene.water->mesh_cell_pixels = fields.mesh_cell_pixels;
-    }
-    scene.effects.godrays.grid = fields.godray_grid;
-    scene.effects[Effect::VolumeCaustics].mode = fields.godrays;
-    scene.effects[Effect::Reflection].mode = fields.reflection;
-    scene.effects[Effect::Refraction].mode = fields.refraction;
-    scene.effects[Effect::RefractionSecondLayer].mode = fields.second_layer;
-    scene.effects[Effect::Reflection].max_steps = fields.reflection_steps;
-    scene.effects[Effect::Refraction].max_steps = fields.refraction_steps;
-    scene.effects.caustics.kernel = fields.kernel;
-    scene.effects.caustics.map_scale = fields.map_scale;
-    scene.sun.shadow_texels = fields.shadow_texels;
+    each_knob_field(scene, fields, [](auto& in_scene, const auto& kept) { in_scene = kept; });
 }
 
 std::vector<std::string> quality_arguments(const Quality& quality, const Quality& top, const Scene& scene) {
