@@ -75,6 +75,8 @@ TEST(BudgetErrorModel, TableIsTheLargestMeasuredExcessOfEachKnob) {
 // has the layer; a scene without it has no such term.
 TEST(BudgetErrorModel, TheSecondLayerOffCostsItsMeasuredExcess) {
     Quality top{1.0, 1024, 256, 64};
+    top.lookup_steps = 64;
+    top.reflection_lookup = top.refraction_lookup = true;  // the layer is the refraction view's
     top.second_layer = true;
     EXPECT_EQ(predict_error(top, top).excess, 0.0);
     Quality off = top;
@@ -89,8 +91,6 @@ TEST(BudgetErrorModel, TheSecondLayerOffCostsItsMeasuredExcess) {
 
     // Below the scene's lookup steps the layer finds nothing (its march takes a quarter of them):
     // the steps' term holds its loss, and turning it off there costs nothing more.
-    top.lookup_steps = 64;
-    top.reflection_lookup = top.refraction_lookup = true;
     for (uint32_t steps : {16u, 8u}) {
         Quality fewer = top;
         fewer.lookup_steps = steps;
@@ -283,6 +283,30 @@ TEST(BudgetErrorModel, ASceneLookupTurnedOffCostsItsMeasuredExcess) {
         EXPECT_GT(excess, last) << describe_quality(rung);
         last = excess;
     }
+}
+
+// Where the scene's previews measured what an on/off knob loses, that is its term, in place of the
+// table's worst case over the sweep's scenes; where they did not (below 0), the table stands.
+TEST(BudgetErrorModel, AnOnOffKnobCostsWhatTheScenesPreviewsMeasured) {
+    Quality top{1.0, 512, 256, 64};
+    top.lookup_steps = 64;
+    top.reflection_lookup = top.refraction_lookup = top.second_layer = true;
+    top.measured_off = {0.00131, -1.0, 0.00121};  // lake's previews; its refraction left unmeasured
+    Quality reflection_off = top;
+    reflection_off.reflection_lookup = false;
+    EXPECT_DOUBLE_EQ(predict_error(reflection_off, top).excess, 0.00131);
+    Quality refraction_off = top;
+    refraction_off.refraction_lookup = refraction_off.second_layer = false;
+    // The layer goes with the refraction lookup, whose loss holds the layer's.
+    EXPECT_DOUBLE_EQ(predict_error(refraction_off, top).excess, error_term(Knob::RefractionLookup, 0.0));
+    Quality layer_off = top;
+    layer_off.second_layer = false;
+    EXPECT_DOUBLE_EQ(predict_error(layer_off, top).excess, 0.00121);
+    EXPECT_EQ(predict_error(layer_off, top).dominant, "refraction second layer");
+    top.measured_off.reflection_lookup = 0.0;  // measured: it loses nothing
+    reflection_off.measured_off = top.measured_off;
+    EXPECT_DOUBLE_EQ(predict_error(reflection_off, top).excess, 0.0);
+    EXPECT_EQ(predict_error(reflection_off, top).dominant, "");
 }
 
 }  // namespace

@@ -201,6 +201,35 @@ TEST(BudgetQuality, TheSceneLookupsTurnOffAfterTheirFewestSteps) {
     for (const Quality& q : quality_candidates(pool_top)) EXPECT_EQ(q.scene_lookups(), 0u);
 }
 
+// Where the scene's previews measured both lookups, the one whose loss they measured as the smaller
+// goes first, whichever side the camera is on: box, seen from above, loses 0.138 without its
+// reflected rays' lookup (its red box in the water) and 0.0088 without its refracted rays'
+// (docs/performance.md "The frame-time budget"), so its refracted rays' lookup goes first. Equal
+// losses, or one not measured, leave the camera's rule.
+TEST(BudgetQuality, TheSceneLookupWhosePreviewsLostLessGoesFirst) {
+    const Scene box = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/box.json");
+    Quality top = scene_quality(box, decide_frame_needs(box, 4.0 / 3.0));
+    ASSERT_TRUE(top.reflection_lookup && top.refraction_lookup && !top.camera_in_water);
+    const auto single_off_rungs = [&] {
+        std::set<std::pair<bool, bool>> rungs;
+        for (const Quality& q : quality_candidates(top)) {
+            if (q.scene_lookups() == 1) rungs.insert({q.reflection_lookup, q.refraction_lookup});
+        }
+        return rungs;
+    };
+    const std::set<std::pair<bool, bool>> reflection_kept = {{true, false}}, refraction_kept = {{false, true}};
+    EXPECT_EQ(single_off_rungs(), refraction_kept) << "unmeasured: the camera's rule";
+    top.measured_off.reflection_lookup = 0.138;
+    top.measured_off.refraction_lookup = 0.0088;
+    EXPECT_EQ(single_off_rungs(), reflection_kept);
+    top.measured_off.refraction_lookup = 0.138;
+    EXPECT_EQ(single_off_rungs(), refraction_kept) << "equal losses: the camera's rule";
+    top.measured_off.refraction_lookup = -1.0;
+    EXPECT_EQ(single_off_rungs(), refraction_kept) << "one unmeasured: the camera's rule";
+    top.measured_off = {0.0003, 0.0, 0.0};  // the lagoon's order, measured, from above
+    EXPECT_EQ(single_off_rungs(), reflection_kept);
+}
+
 // The viewer applies each frame's setting to the scene it applied the last one to: with the scene's
 // own fields put back first, any setting followed by the top gives the scene as loaded (lake:
 // its mesh, second layer, shadow map, lookups and terrain all back).

@@ -4,6 +4,7 @@
 #include "passes/frame/frame_needs.hpp"
 #include "passes/frame/supersampled_frame.hpp"
 #include "tools/vkwater/budget/budget_controller.hpp"
+#include "tools/vkwater/budget_previews.hpp"
 #include "tools/vkwater/console.hpp"
 
 #include <cstdio>
@@ -31,8 +32,11 @@ BudgetedSettings choose_budgeted_settings(Renderer& renderer, Scene& scene, Rend
                                           uint32_t samples) {
     const Scene original = scene;
     const fg::FrameNeeds needs = decide_frame_needs(scene, double(options.width) / double(options.height));
-    const budget::Quality top = budget::scene_quality(scene, needs, samples);
     const uint32_t width = options.width, height = options.height;
+    budget::Quality top = budget::scene_quality(scene, needs, samples);
+    const OffExcessPreviews previews = measure_off_excess(renderer, scene, top, width, height);
+    top.measured_off = previews.measured;
+    if (previews.frames > 0) std::printf("%s\n", describe(previews).c_str());
     budget::BudgetController controller(
         budget_ms, top,
         [&original, width, height](const budget::Quality& q) {

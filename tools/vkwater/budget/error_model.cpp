@@ -155,11 +155,16 @@ ErrorPrediction predict_error(const Quality& quality, const Quality& top, double
         terms.push_back({"scene lookup steps", error_term(Knob::LookupSteps, quality.lookup_steps) -
                                                    error_term(Knob::LookupSteps, top.lookup_steps)});
     }
+    // An on/off knob turned off: this scene's own loss where its previews measured it, else the
+    // table's worst case.
+    const auto off_term = [](double measured, Knob knob) { return measured >= 0.0 ? measured : error_term(knob, 0.0); };
     if (top.reflection_lookup && !quality.reflection_lookup) {
-        terms.push_back({"reflection lookup off", error_term(Knob::ReflectionLookup, 0.0)});
+        terms.push_back(
+            {"reflection lookup off", off_term(top.measured_off.reflection_lookup, Knob::ReflectionLookup)});
     }
     if (top.refraction_lookup && !quality.refraction_lookup) {
-        terms.push_back({"refraction lookup off", error_term(Knob::RefractionLookup, 0.0)});
+        terms.push_back(
+            {"refraction lookup off", off_term(top.measured_off.refraction_lookup, Knob::RefractionLookup)});
     }
     if (top.map_scale > 0.0) {
         const bool bilinear = quality.caustic_kernel == CausticKernel::Bilinear;
@@ -179,8 +184,11 @@ ErrorPrediction predict_error(const Quality& quality, const Quality& top, double
     // and the lookup steps' term already holds the layer's loss. The sweep measured exactly that:
     // at 16 steps lake and the showcase pool lose what the layer off loses (0.0013757 and 0.00098328
     // against 0.0013903 and 0.00098328), so the layer's term counts only at the scene's own steps.
-    if (top.second_layer && quality.lookup_steps >= top.lookup_steps) {
-        terms.push_back({"refraction second layer", error_term(Knob::SecondLayer, quality.second_layer ? 1.0 : 0.0)});
+    // A refraction lookup turned off takes the layer with it, and its own term (measured so) holds
+    // the layer's loss.
+    if (top.second_layer && quality.refraction_lookup && quality.lookup_steps >= top.lookup_steps) {
+        terms.push_back({"refraction second layer",
+                         quality.second_layer ? 0.0 : off_term(top.measured_off.second_layer, Knob::SecondLayer)});
     }
     if (top.shadow_texels > 0) {
         terms.push_back({"sun shadow map", error_term(Knob::ShadowTexels, quality.shadow_texels) -

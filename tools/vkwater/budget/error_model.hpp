@@ -16,6 +16,10 @@
 // 30 m down in coastal water (visibility 3e-4), makes its caustic knobs nearly free, as the sweep
 // measured them (no excess at any photon grid).
 //
+// The on/off knobs' terms (a scene lookup, the refraction view's second layer) are measured on the
+// scene itself where the command could render it: small frames with the knob on and off
+// (tools/vkwater/budget_previews.hpp, Quality::measured_off); the table's entry stands in elsewhere.
+//
 // What it is not yet: the other error bounds derived per effect (the mesh's sag in pixels, the
 // photons seen per texel) with fitted weights, which would follow a scene's wavelengths and depths
 // instead of the measured scenes' worst case.

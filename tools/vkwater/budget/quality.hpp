@@ -39,6 +39,17 @@
 
 namespace vkw::budget {
 
+// What turning off an on/off knob adds to a scene's relMSE, measured on two small frames of the
+// scene, the knob on and off (tools/vkwater/budget_previews.hpp): the relMSE of the second against
+// the first. Below 0 where not measured; the error table's entry, the worst of the scenes it was
+// measured on, stands in there.
+struct MeasuredOffExcess {
+    double reflection_lookup = -1.0;
+    double refraction_lookup = -1.0;
+    double second_layer = -1.0;
+    bool operator==(const MeasuredOffExcess&) const = default;
+};
+
 struct Quality {
     double render_scale = 1.0;
     uint32_t photon_grid = 0;        // 0: the scene has no water
@@ -57,8 +68,11 @@ struct Quality {
     // model scales the caustic knobs' terms by it.
     double caustic_visibility = 1.0;
     // Not a knob: the camera is under the mean water level, which orders the lookups' ladder
-    // (quality.cpp, lookup_ladder).
+    // where the previews below did not measure it (quality.cpp, lookup_ladder).
     bool camera_in_water = false;
+    // Not knobs: what turning off each on/off knob adds to this scene's relMSE, measured on small
+    // frames of the scene itself, the same in every candidate.
+    MeasuredOffExcess measured_off;
     bool operator==(const Quality&) const = default;
     uint32_t scene_lookups() const { return uint32_t(reflection_lookup) + uint32_t(refraction_lookup); }
 };

@@ -20,6 +20,7 @@
 #include "passes/present/present_graph.hpp"
 #include "passes/present/present_handoff.hpp"
 #include "tools/vkwater/budget/budget_controller.hpp"
+#include "tools/vkwater/budget_previews.hpp"
 #include "tools/vkwater/image_provenance.hpp"
 #include "tools/vkwater/view/camera_controller.hpp"
 #include "tools/vkwater/view/frame_stats.hpp"
@@ -214,7 +215,6 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options) {
                     options_.budget_ms          ? "--budget-ms"
                     : context_->is_cpu_device() ? "the default on a CPU device"
                                                 : "the default: the display's refresh interval");
-        start_budget();
     }
     swapchain_ =
         std::make_unique<Swapchain>(*context_, window_->create_surface(context_->instance()), options_.present);
@@ -223,6 +223,7 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options) {
     imgui_ = std::make_unique<ImGuiLayer>(*context_, window_->handle(), FramesInFlight::kSlots);
     input_ = std::make_unique<WindowInput>(*window_);
     recreate_swapchain(window_->framebuffer_size());
+    if (budget_ms_ > 0.0) start_budget();  // its previews render with the renderer at the window's aspect
 }
 
 Viewer::~Viewer() {
@@ -268,8 +269,15 @@ double Viewer::choose_budget_ms() const {
 void Viewer::start_budget() {
     knobs_at_load_ = budget::knob_fields(*scene_);
     const fg::FrameNeeds needs = decide_frame_needs(*scene_, double(options_.width) / double(options_.height));
+    budget::Quality top = budget::scene_quality(*scene_, needs, most_samples_);
+    const VkExtent2D output = output_extent();
+    vkDeviceWaitIdle(context_->device());  // the previews may replace what the frames in flight use
+    const cli::OffExcessPreviews previews =
+        cli::measure_off_excess(*renderer_, *scene_, top, output.width, output.height);
+    top.measured_off = previews.measured;
+    if (previews.frames > 0) std::printf("%s\n", cli::describe(previews).c_str());
     budget_ = std::make_unique<budget::BudgetController>(
-        budget_ms_, budget::scene_quality(*scene_, needs, most_samples_),
+        budget_ms_, top,
         [this](const budget::Quality& q) {
             const VkExtent2D extent = output_extent();
             return budget::cost_drivers(*scene_, q, extent.width, extent.height);

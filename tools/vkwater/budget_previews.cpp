@@ -1,0 +1,93 @@
+// The budget's on/off knobs measured on small frames of the scene (budget_previews.hpp).
+#include "tools/vkwater/budget_previews.hpp"
+
+#include "engine/core/errors.hpp"
+#include "tools/metrics/metrics.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <vector>
+
+namespace vkw::cli {
+namespace {
+
+uint32_t preview_height(uint32_t output_width, uint32_t output_height) {
+    if (output_width == 0 || output_height == 0) throw InternalError("budget previews: an empty output");
+    const double height = std::round(double(kPreviewWidth) * double(output_height) / double(output_width));
+    return uint32_t(std::clamp(height, 1.0, double(4 * kPreviewWidth)));
+}
+
+ImageRGBA32F render_preview(Renderer& renderer, const Scene& scene, const budget::Quality& quality,
+                            const budget::Quality& top, uint32_t height) {
+    Scene preview = scene;
+    budget::apply_quality(quality, top, preview);
+    RenderOptions options;
+    options.width = kPreviewWidth;
+    options.height = height;
+    options.timing = fg::TimingMode::None;
+    return renderer.render(preview, options).image;
+}
+
+// relMSE of `off` against `on` over every pixel; 0 where `on` is black (metrics::rel_mse needs a
+// reference with light in it).
+double excess(const ImageRGBA32F& off, const ImageRGBA32F& on) {
+    double sum = 0.0;
+    for (size_t i = 0; i < on.rgba.size(); i += 4) sum += double(on.rgba[i]) + on.rgba[i + 1] + on.rgba[i + 2];
+    if (!(sum > 0.0)) return 0.0;
+    std::vector<size_t> pixels(size_t(on.width) * size_t(on.height));
+    std::iota(pixels.begin(), pixels.end(), size_t{0});
+    return metrics::rel_mse(metrics::rgb_view(off), metrics::rgb_view(on), pixels);
+}
+
+}  // namespace
+
+OffExcessPreviews measure_off_excess(Renderer& renderer, const Scene& scene, const budget::Quality& top,
+                                     uint32_t output_width, uint32_t output_height) {
+    OffExcessPreviews previews;
+    if (!top.reflection_lookup && !top.refraction_lookup && !top.second_layer) return previews;
+    const auto start = std::chrono::steady_clock::now();
+    previews.width = kPreviewWidth;
+    previews.height = preview_height(output_width, output_height);
+    const auto render = [&](const budget::Quality& quality) {
+        ++previews.frames;
+        return render_preview(renderer, scene, quality, top, previews.height);
+    };
+    const ImageRGBA32F on = render(top);
+    const auto turned_off = [&](bool budget::Quality::*knob) {
+        budget::Quality quality = top;
+        quality.*knob = false;
+        if (!quality.refraction_lookup) quality.second_layer = false;  // the layer is the refraction view's
+        return excess(render(quality), on);
+    };
+    budget::MeasuredOffExcess& measured = previews.measured;
+    if (top.reflection_lookup) measured.reflection_lookup = turned_off(&budget::Quality::reflection_lookup);
+    if (top.refraction_lookup) measured.refraction_lookup = turned_off(&budget::Quality::refraction_lookup);
+    if (top.second_layer) measured.second_layer = turned_off(&budget::Quality::second_layer);
+    previews.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return previews;
+}
+
+std::string describe(const OffExcessPreviews& previews) {
+    if (previews.frames == 0) return "";
+    char text[512];
+    int length =
+        std::snprintf(text, sizeof text, "budget: turned off in %ux%u previews (%d frames, %.1f s):", previews.width,
+                      previews.height, previews.frames, previews.seconds);
+    const char* separator = "";
+    const auto add = [&](double value, const char* name) {
+        if (value < 0.0 || length >= int(sizeof text)) return;
+        length += std::snprintf(text + length, sizeof text - size_t(length), "%s %s adds relMSE %.3g", separator, name,
+                                value);
+        separator = ",";
+    };
+    const budget::MeasuredOffExcess& measured = previews.measured;
+    add(measured.reflection_lookup, "the reflection lookup");
+    add(measured.refraction_lookup, "the refraction lookup");
+    add(measured.second_layer, "the refraction view's second layer");
+    return text;
+}
+
+}  // namespace vkw::cli
