@@ -139,10 +139,10 @@ TEST(BudgetQuality, TheTerrainTurnsDownOnlyWhereTheSceneHasOne) {
 }
 
 // The scene lookups' ladder where the water looks the scene up (lake, seen from above): the steps
-// 64, 16 and 8 with both lookups, then at 8 the reflected rays' lookup off, then both off, each rung
-// in every combination of the other knobs; with a lookup off its view's second layer is off too.
+// 64, 16 and 8, each with both lookups and with the reflected rays' lookup off, then both off, each
+// rung in every combination of the other knobs; with a lookup off its view's second layer is off too.
 // Pool looks nothing up and has no rung.
-TEST(BudgetQuality, TheSceneLookupsTurnOffAfterTheirFewestSteps) {
+TEST(BudgetQuality, TheSceneLookupsTurnOffOneAtEachStepsThenBoth) {
     const Scene lake = load_scene(kLake);
     const Quality top = scene_quality(lake, decide_frame_needs(lake, 4.0 / 3.0));
     ASSERT_TRUE(top.reflection_lookup && top.refraction_lookup);
@@ -154,8 +154,9 @@ TEST(BudgetQuality, TheSceneLookupsTurnOffAfterTheirFewestSteps) {
             EXPECT_FALSE(q.second_layer) << describe_quality(q);
         }
     }
-    const std::set<std::tuple<uint32_t, bool, bool>> ladder = {
-        {64, true, true}, {16, true, true}, {8, true, true}, {8, false, true}, {0, false, false}};
+    const std::set<std::tuple<uint32_t, bool, bool>> ladder = {{64, true, true},  {64, false, true}, {16, true, true},
+                                                               {16, false, true}, {8, true, true},   {8, false, true},
+                                                               {0, false, false}};
     EXPECT_EQ(rungs, ladder);
     const auto at_rung = [&](uint32_t steps, bool reflection, bool refraction) {
         return std::count_if(candidates.begin(), candidates.end(), [&](const Quality& q) {
@@ -164,9 +165,9 @@ TEST(BudgetQuality, TheSceneLookupsTurnOffAfterTheirFewestSteps) {
     };
     // With both lookups off there is no second layer to turn: half as many candidates at that rung.
     const std::ptrdiff_t each = at_rung(64, true, true), none = at_rung(0, false, false);
-    EXPECT_EQ(at_rung(8, false, true), each);
+    for (uint32_t steps : {64u, 16u, 8u}) EXPECT_EQ(at_rung(steps, false, true), each) << steps;
     EXPECT_EQ(2 * none, each);
-    EXPECT_EQ(static_cast<std::ptrdiff_t>(candidates.size()), 4 * each + none);
+    EXPECT_EQ(static_cast<std::ptrdiff_t>(candidates.size()), 6 * each + none);
 
     Quality reflection_off = top;
     reflection_off.lookup_steps = 8;

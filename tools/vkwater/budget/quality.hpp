@@ -8,11 +8,11 @@
 //   mesh_resolution  water.mesh_resolution: the triangles the water and its stencil draw
 //   godray_grid      effects.godrays.grid, the beams walked; 0 turns the godrays off
 //   lookup_steps     effects.reflection/refraction.max_steps: each pixel's refinement or march
-//                    steps through the scene views, where the water looks the scene up; below the
-//                    fewest steps, one lookup off (effects.reflection.mode or refraction.mode: the
-//                    reflected rays' from above the water, the refracted rays' from below), then
-//                    both (the views' passes and each pixel's lookups; the rays keep the exact
-//                    floor and sky and miss the receiver meshes)
+//                    steps through the scene views, where the water looks the scene up; at each
+//                    steps, also one lookup off (effects.reflection.mode or refraction.mode: the one
+//                    the scene's previews measured as losing less, quality.cpp), and at last both
+//                    (the views' passes and each pixel's lookups; the rays keep the exact floor and
+//                    sky and miss the receiver meshes)
 //   caustic_kernel   effects.caustics.kernel: the bilinear tent's 4 taps a photon against the
 //                    adaptive hat's 9 (and its 4 neighbours traced), where the light-space map is made
 //   map_scale        effects.caustics.map_scale: the map's texels (clear, resolve, blur) and the
