@@ -19,12 +19,12 @@ budget::Quality top_of(const Scene& scene) {
     return budget::scene_quality(scene, decide_frame_needs(scene, 4.0 / 3.0));
 }
 
-// The sweep (docs/sweeps/budget_error_terms.csv, box, 400x300 against tests/references/box.exr):
+// The sweep (docs/sweeps/budget_error_terms.csv, box, 400x300 against tests/references/box/box.exr):
 // reflection lookup off +0.135684, refraction lookup off +0.00972201. The previews compare with the
 // frame that has both lookups rather than with the reference, whose own distance from that frame
 // (relMSE 0.00041 at 400x300) is under a twentieth of either, and sample the box's edges with
-// 2.5 times fewer rows; they measured 0.138 and 0.00877 (docs/performance.md "The frame-time
-// budget"). 25% either way holds both and keeps their order, an order the camera's rule gets wrong.
+// 2.5 times fewer rows; they measured 0.138 and 0.00877 (docs/performance.md "The on/off knobs
+// measured on the scene"). 25% either way holds both and keeps their order, an order the camera's rule gets wrong.
 TEST_F(BudgetPreviews, BoxLosesWhatTheSweepMeasuredWithEachLookupOff) {
     const Scene box = load_scene(kScenes / "box.json");
     const budget::Quality top = top_of(box);
