@@ -309,5 +309,24 @@ TEST(BudgetErrorModel, AnOnOffKnobCostsWhatTheScenesPreviewsMeasured) {
     EXPECT_EQ(predict_error(reflection_off, top).dominant, "");
 }
 
+// Caustics turned off cost what the scene's previews measured, and the caustic knobs' terms no
+// longer count: the photon grid, the kernel and the map scale have nothing left to change.
+TEST(BudgetErrorModel, TheCausticsOffCostWhatThePreviewsMeasured) {
+    Quality top{1.0, 1024, 256, 0};
+    top.map_scale = 1.0;
+    top.caustics = true;
+    top.measured_off.caustics = 2e-7;
+    top.measured_off.caustics_largest_change = 0.001;
+    Quality off = top;
+    off.caustics = false;
+    EXPECT_DOUBLE_EQ(predict_error(off, top).excess, 2e-7);
+    EXPECT_EQ(predict_error(off, top).dominant, "caustics off");
+    off.photon_grid = 128;
+    EXPECT_DOUBLE_EQ(predict_error(off, top).excess, 2e-7) << "no photon grid term without caustics";
+    Quality fewer = top;
+    fewer.photon_grid = 128;
+    EXPECT_GT(predict_error(fewer, top).excess, 0.0) << "with them, the photon grid's term";
+}
+
 }  // namespace
 }  // namespace vkw::budget

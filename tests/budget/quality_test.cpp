@@ -231,6 +231,40 @@ TEST(BudgetQuality, TheSceneLookupWhosePreviewsLostLessGoesFirst) {
     EXPECT_EQ(single_off_rungs(), reflection_kept);
 }
 
+// The caustics off are a candidate only where the previews found that no pixel changes visibly
+// without them (at most kGodraysInvisibleChange of its value): then every candidate has a twin
+// without them, with the top's kernel and map scale, and an unmeasured or visible change offers none.
+TEST(BudgetQuality, TheCausticsTurnOffOnlyWhereThePreviewsSawNoChange) {
+    const Scene ocean = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/ocean.json");
+    Quality top = scene_quality(ocean, decide_frame_needs(ocean, 4.0 / 3.0));
+    ASSERT_TRUE(top.caustics);
+    const auto count_off = [&] {
+        const std::vector<Quality> candidates = quality_candidates(top);
+        const auto off = std::count_if(candidates.begin(), candidates.end(), [&](const Quality& q) {
+            EXPECT_TRUE(q.caustics || (q.caustic_kernel == top.caustic_kernel && q.map_scale == top.map_scale));
+            return !q.caustics;
+        });
+        return std::pair<std::ptrdiff_t, size_t>{off, candidates.size()};
+    };
+    const size_t on_only = count_off().second;
+    EXPECT_EQ(count_off().first, 0) << "unmeasured";
+    top.measured_off.caustics = 0.0;
+    top.measured_off.caustics_largest_change = 0.99 * kGodraysInvisibleChange;
+    const auto [off, all] = count_off();
+    EXPECT_GT(off, 0);
+    // Every combination of the knobs but the kernel and the map scale, once more.
+    const size_t kernels_and_scales = 2 * 2;
+    EXPECT_EQ(all, on_only + on_only / kernels_and_scales);
+    top.measured_off.caustics_largest_change = 1.01 * kGodraysInvisibleChange;
+    EXPECT_EQ(count_off().first, 0) << "a visible change";
+    Quality off_setting = top;
+    off_setting.caustics = false;
+    EXPECT_EQ(describe_arguments(quality_arguments(off_setting, top, ocean)), "--set effects.caustics.mode=off");
+    Scene applied = ocean;
+    apply_quality(off_setting, top, applied);
+    EXPECT_FALSE(decide_frame_needs(applied, 4.0 / 3.0).needs(Effect::SurfaceCaustics));
+}
+
 // The viewer applies each frame's setting to the scene it applied the last one to: with the scene's
 // own fields put back first, any setting followed by the top gives the scene as loaded (lake:
 // its mesh, second layer, shadow map, lookups and terrain all back).
@@ -342,13 +376,16 @@ TEST(BudgetQuality, ItsOptionsGiveTheSceneApplyQualityMakes) {
     ASSERT_EQ(top.shadow_texels, 1024u) << "lake's receivers cast into the sun shadow map";
     ASSERT_EQ(top.terrain_fraction, 1.0) << "lake's bed is a terrain";
     // The first two turn the second layer off, the third keeps it; each has its own shadow map and
-    // its own terrain detail; the last two turn the reflected rays' lookup off, then both.
+    // its own terrain detail; the next two turn the reflected rays' lookup off, then both, and the
+    // last before the top the caustics too.
     for (const Quality& q :
-         {Quality{0.5, 128, 128, 0, 8, true, true, CausticKernel::Bilinear, half_map, 1, false, 256, 0.25},
-          Quality{1.0, 256, 256, 32, 64, true, true, top.caustic_kernel, half_map, 1, false, 1024, 1.0},
-          Quality{0.35, 64, 64, 16, 16, true, true, CausticKernel::Bilinear, top.map_scale, 1, true, 512, 0.5},
-          Quality{0.25, 64, 64, 0, 8, false, true, CausticKernel::Bilinear, half_map, 1, false, 256, 0.25},
-          Quality{0.25, 64, 64, 0, 0, false, false, CausticKernel::Bilinear, half_map, 1, false, 256, 0.25}, top}) {
+         {Quality{0.5, 128, 128, 0, 8, true, true, CausticKernel::Bilinear, half_map, 1, false, 256, 0.25, true},
+          Quality{1.0, 256, 256, 32, 64, true, true, top.caustic_kernel, half_map, 1, false, 1024, 1.0, true},
+          Quality{0.35, 64, 64, 16, 16, true, true, CausticKernel::Bilinear, top.map_scale, 1, true, 512, 0.5, true},
+          Quality{0.25, 64, 64, 0, 8, false, true, CausticKernel::Bilinear, half_map, 1, false, 256, 0.25, true},
+          Quality{0.25, 64, 64, 0, 0, false, false, CausticKernel::Bilinear, half_map, 1, false, 256, 0.25, true},
+          Quality{0.25, 64, 64, 0, 0, false, false, top.caustic_kernel, top.map_scale, 1, false, 256, 0.25, false},
+          top}) {
         Scene applied = original;
         apply_quality(q, top, applied);
         std::vector<std::string> overrides;
@@ -370,6 +407,7 @@ TEST(BudgetQuality, ItsOptionsGiveTheSceneApplyQualityMakes) {
         EXPECT_EQ(given.effects[Effect::Refraction].max_steps, applied.effects[Effect::Refraction].max_steps);
         EXPECT_EQ(given.effects[Effect::Reflection].mode, applied.effects[Effect::Reflection].mode);
         EXPECT_EQ(given.effects[Effect::Refraction].mode, applied.effects[Effect::Refraction].mode);
+        EXPECT_EQ(given.effects[Effect::SurfaceCaustics].mode, applied.effects[Effect::SurfaceCaustics].mode);
         EXPECT_EQ(given.effects.caustics.kernel, applied.effects.caustics.kernel);
         EXPECT_EQ(given.effects.caustics.map_scale, applied.effects.caustics.map_scale);
         EXPECT_EQ(given.effects[Effect::RefractionSecondLayer].mode,
@@ -383,6 +421,10 @@ TEST(BudgetQuality, ItsOptionsGiveTheSceneApplyQualityMakes) {
         Quality in_the_scene = q;  // the resolution scale is the renderer's option, not the scene's
         in_the_scene.render_scale = 1.0;
         in_the_scene.terrain_fraction = 1.0;  // the given terrain's own cells are the lowered ones
+        if (!q.caustics) {                    // without caustics the scene has no photon map to turn
+            in_the_scene.map_scale = 0.0;
+            in_the_scene.caustic_kernel = CausticKernel::Adaptive;
+        }
         EXPECT_EQ(scene_quality(given, decide_frame_needs(given, 4.0 / 3.0)), in_the_scene);
     }
     EXPECT_EQ(describe_arguments(quality_arguments(top, top, original)), "the scene's own settings");

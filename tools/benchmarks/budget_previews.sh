@@ -5,8 +5,8 @@
 # scene, `vkwater render --budget-ms` with a budget every frame meets prints the previews' line;
 # prints a Markdown table (scene, knob, preview, sweep, preview / sweep) under a provenance line.
 # Errors only: the machine's load does not change them. About 10-20 s a scene on lavapipe.
-# Default scenes: those of the sweep whose own settings run a scene lookup. VKWATER=PATH for
-# another build.
+# Default scenes: the sweep's six (it has no row for the caustics off: "-"). VKWATER=PATH for another
+# build.
 #
 #   tools/benchmarks/budget_previews.sh lake box
 set -euo pipefail
@@ -16,7 +16,7 @@ csv=docs/sweeps/budget_error_terms.csv
 source tools/benchmarks/provenance.sh
 provenance_start
 scenes=("$@")
-[ ${#scenes[@]} -gt 0 ] || scenes=(lake box showcase/pool showcase/lagoon)
+[ ${#scenes[@]} -gt 0 ] || scenes=(pool lake ocean box showcase/pool showcase/lagoon)
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
@@ -27,9 +27,9 @@ for scene in "${scenes[@]}"; do
         2>/dev/null | grep '^budget: turned off in' || true)
     [ -n "$line" ] || { echo "budget_previews.sh: $scene: no previews (it runs no on/off knob)" >&2; continue; }
     for pair in "reflection lookup:reflection_lookup" "refraction lookup:refraction_lookup" \
-        "refraction view's second layer:second_layer"; do
+        "refraction view's second layer:second_layer" "caustics:caustics"; do
         name=${pair%%:*} knob=${pair#*:}
-        preview=$(sed -n "s/.*the $name adds relMSE \([^,]*\).*/\1/p" <<< "$line")
+        preview=$(sed -n "s/.*[:,] the $name \([^,( ]*\).*/\1/p" <<< "$line")
         [ -n "$preview" ] || continue
         sweep=$(awk -F, -v s="$scene" -v k="$knob" '$1 == s && $2 == k && $3 == 0 { print $5 }' "$csv")
         awk -v s="$scene" -v n="$name" -v p="$preview" -v w="${sweep:-}" 'BEGIN {

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -42,12 +43,26 @@ double excess(const ImageRGBA32F& off, const ImageRGBA32F& on) {
     return metrics::rel_mse(metrics::rgb_view(off), metrics::rgb_view(on), pixels);
 }
 
+// The largest change of any channel of `off` against `on`, relative to `on`'s value: 0 where both
+// are 0, infinite where only `off`'s is not.
+double largest_relative_change(const ImageRGBA32F& off, const ImageRGBA32F& on) {
+    double largest = 0.0;
+    for (size_t i = 0; i < on.rgba.size(); ++i) {
+        if (i % 4 == 3) continue;  // alpha carries no light
+        const double change = std::abs(double(off.rgba[i]) - double(on.rgba[i]));
+        if (change == 0.0) continue;
+        largest = std::max(largest, on.rgba[i] != 0.0f ? change / std::abs(double(on.rgba[i]))
+                                                       : std::numeric_limits<double>::infinity());
+    }
+    return largest;
+}
+
 }  // namespace
 
 OffExcessPreviews measure_off_excess(Renderer& renderer, const Scene& scene, const budget::Quality& top,
                                      uint32_t output_width, uint32_t output_height) {
     OffExcessPreviews previews;
-    if (!top.reflection_lookup && !top.refraction_lookup && !top.second_layer) return previews;
+    if (!top.reflection_lookup && !top.refraction_lookup && !top.second_layer && !top.caustics) return previews;
     const auto start = std::chrono::steady_clock::now();
     previews.width = kPreviewWidth;
     previews.height = preview_height(output_width, output_height);
@@ -66,6 +81,13 @@ OffExcessPreviews measure_off_excess(Renderer& renderer, const Scene& scene, con
     if (top.reflection_lookup) measured.reflection_lookup = turned_off(&budget::Quality::reflection_lookup);
     if (top.refraction_lookup) measured.refraction_lookup = turned_off(&budget::Quality::refraction_lookup);
     if (top.second_layer) measured.second_layer = turned_off(&budget::Quality::second_layer);
+    if (top.caustics) {
+        budget::Quality quality = top;
+        quality.caustics = false;
+        const ImageRGBA32F off = render(quality);
+        measured.caustics = excess(off, on);
+        measured.caustics_largest_change = largest_relative_change(off, on);
+    }
     previews.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return previews;
 }
@@ -74,19 +96,25 @@ std::string describe(const OffExcessPreviews& previews) {
     if (previews.frames == 0) return "";
     char text[512];
     int length =
-        std::snprintf(text, sizeof text, "budget: turned off in %ux%u previews (%d frames, %.1f s):", previews.width,
+        std::snprintf(text, sizeof text,
+                      "budget: turned off in %ux%u previews (%d frames, %.1f s), the relMSE each adds:", previews.width,
                       previews.height, previews.frames, previews.seconds);
     const char* separator = "";
     const auto add = [&](double value, const char* name) {
         if (value < 0.0 || length >= int(sizeof text)) return;
-        length += std::snprintf(text + length, sizeof text - size_t(length), "%s %s adds relMSE %.3g", separator, name,
-                                value);
+        length += std::snprintf(text + length, sizeof text - size_t(length), "%s %s %.3g", separator, name, value);
         separator = ",";
     };
     const budget::MeasuredOffExcess& measured = previews.measured;
     add(measured.reflection_lookup, "the reflection lookup");
     add(measured.refraction_lookup, "the refraction lookup");
     add(measured.second_layer, "the refraction view's second layer");
+    add(measured.caustics, "the caustics");
+    if (measured.caustics_largest_change >= 0.0 && length < int(sizeof text)) {
+        length +=
+            std::snprintf(text + length, sizeof text - size_t(length),
+                          " (the most a pixel changes without them: %.3g%%)", 100.0 * measured.caustics_largest_change);
+    }
     return text;
 }
 

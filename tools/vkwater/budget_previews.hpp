@@ -11,8 +11,8 @@
 // (tools/benchmarks/budget_previews.sh; docs/performance.md "The on/off knobs measured on the scene"): what these
 // knobs lose is whole objects in the water, which a small frame resolves about as a large one does.
 //
-// The knobs: the reflected rays' and the refracted rays' scene lookups, and the refraction view's
-// second layer, each where the scene's own settings run it. The previews cost one frame each at
+// The knobs: the reflected rays' and the refracted rays' scene lookups, the refraction view's
+// second layer and the surface caustics, each where the scene's own settings run it. The previews cost one frame each at
 // 160 pixels wide plus one with everything on, made once per scene (at the view's start and at a
 // reload); the camera of the scene file is the one measured.
 #pragma once
@@ -41,8 +41,8 @@ struct OffExcessPreviews {
 OffExcessPreviews measure_off_excess(Renderer& renderer, const Scene& scene, const budget::Quality& top,
                                      uint32_t output_width, uint32_t output_height);
 
-// One line for the console: "budget: turned off in 160x120 previews (4 frames, 1.2 s): the
-// reflection lookup adds relMSE 0.138, ..." ("" when nothing was measured).
+// One line for the console: "budget: turned off in 160x120 previews (4 frames, 1.2 s), the relMSE
+// each adds: the reflection lookup 0.138, ..." ("" when nothing was measured).
 std::string describe(const OffExcessPreviews& previews);
 
 }  // namespace vkw::cli

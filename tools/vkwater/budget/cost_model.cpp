@@ -27,7 +27,7 @@ struct KnownPass {
 // ratios matter once a frame has been timed; a GPU refits every factor.
 // A pass of the light-space photon map, which the first sub-frame makes for all of them.
 PassFormula once(std::vector<std::pair<Driver, double>> ns_per_unit) {
-    return {.ns_per_unit = std::move(ns_per_unit), .once_per_frame = true};
+    return {.ns_per_unit = std::move(ns_per_unit), .condition = PassCondition::Caustics, .once_per_frame = true};
 }
 // A pass that runs only under `condition`.
 PassFormula when(PassCondition condition, std::vector<std::pair<Driver, double>> ns_per_unit) {
@@ -116,6 +116,7 @@ bool holds(PassCondition condition, const CostDrivers& drivers, bool godrays, bo
         case PassCondition::SecondLayer: return at(drivers, Driver::SecondLayerPixels) > 0.0;
         case PassCondition::ReflectionView: return at(drivers, Driver::ReflectionLookupPixels) > 0.0;
         case PassCondition::RefractionView: return at(drivers, Driver::RefractionLookupPixels) > 0.0;
+        case PassCondition::Caustics: return at(drivers, Driver::MapTexels) > 0.0;
         case PassCondition::Count: break;
     }
     return true;
@@ -136,18 +137,22 @@ CostDrivers cost_drivers(const Scene& scene, const Quality& quality, uint32_t wi
         at(drivers, Driver::SurfaceVertices) = (grid + 1.0) * (grid + 1.0);
         at(drivers, Driver::MeshVertices) = (mesh + 1.0) * (mesh + 1.0);
         at(drivers, Driver::MeshTriangles) = 2.0 * mesh * mesh;
+    }
+    // The light-space photon map, where the frame makes one (quality.hpp: a map scale) and the
+    // caustics run.
+    if (scene.water && quality.photon_grid > 0 && quality.map_scale > 0.0 && quality.caustics) {
+        const double grid = quality.photon_grid;
         const double photons_per_side = grid * scene.effects.caustics.sub_photons;
         at(drivers, Driver::Photons) = photons_per_side * photons_per_side;
-        const double map_scale = quality.map_scale > 0.0 ? quality.map_scale : scene.effects.caustics.map_scale;
-        const double texels_per_side = std::max(1.0, std::round(grid * map_scale));
+        const double texels_per_side = std::max(1.0, std::round(grid * quality.map_scale));
         at(drivers, Driver::MapTexels) = texels_per_side * texels_per_side;
         // The bilinear tent adds to 2 x 2 texels. The adaptive hat reaches its neighbours' landing
         // points, s = map_scale / S texels apart under flat water, so it spans about 2 s + 1 texels
         // per axis (the footprint kernel is costed as the hat).
-        if (quality.map_scale > 0.0 && quality.caustic_kernel == CausticKernel::Bilinear) {
+        if (quality.caustic_kernel == CausticKernel::Bilinear) {
             at(drivers, Driver::PhotonTaps) = 4.0 * at(drivers, Driver::Photons);
         } else {
-            const double span = 2.0 * map_scale / scene.effects.caustics.sub_photons + 1.0;
+            const double span = 2.0 * quality.map_scale / scene.effects.caustics.sub_photons + 1.0;
             at(drivers, Driver::HatPhotons) = at(drivers, Driver::Photons);
             at(drivers, Driver::PhotonTaps) = span * span * at(drivers, Driver::Photons);
         }

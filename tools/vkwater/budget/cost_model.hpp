@@ -63,6 +63,7 @@ enum class PassCondition : uint8_t {
     SecondLayer,     // the refraction view's second layer
     ReflectionView,  // the reflected rays' scene lookup
     RefractionView,  // the refracted rays' scene lookup
+    Caustics,        // the light-space photon map (its photons, clear, resolve and blur)
     Count
 };
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -142,9 +143,18 @@ ErrorPrediction predict_error(const Quality& quality, const Quality& top, double
     };
     // The caustic knobs' terms scale with what the caustics can change in a pixel.
     const double visibility = top.caustic_visibility;
+    // Caustics turned off lose what the scene's previews measured (caustics_offered in quality.cpp
+    // offers them only then), and the caustic knobs' terms no longer count.
+    const bool caustics_off = top.caustics && !quality.caustics;
+    if (caustics_off) {
+        const double measured = top.measured_off.caustics;
+        terms.push_back({"caustics off", measured >= 0.0 ? measured : std::numeric_limits<double>::infinity()});
+    }
     if (top.photon_grid > 0) {
-        terms.push_back({"photon grid", visibility * error_term(Knob::PhotonGridFraction,
-                                                                double(quality.photon_grid) / top.photon_grid)});
+        terms.push_back({"photon grid", caustics_off
+                                            ? 0.0
+                                            : visibility * error_term(Knob::PhotonGridFraction,
+                                                                      double(quality.photon_grid) / top.photon_grid)});
         terms.push_back({"water mesh", error_term(Knob::MeshResolution, quality.mesh_resolution) -
                                            error_term(Knob::MeshResolution, top.mesh_resolution)});
     }
@@ -166,7 +176,7 @@ ErrorPrediction predict_error(const Quality& quality, const Quality& top, double
         terms.push_back(
             {"refraction lookup off", off_term(top.measured_off.refraction_lookup, Knob::RefractionLookup)});
     }
-    if (top.map_scale > 0.0) {
+    if (top.map_scale > 0.0 && !caustics_off) {
         const bool bilinear = quality.caustic_kernel == CausticKernel::Bilinear;
         // Measured against the scene's kernel at each photon grid: it grows as the grid coarsens.
         const double grid_fraction = top.photon_grid > 0 ? double(quality.photon_grid) / top.photon_grid : 1.0;

@@ -58,6 +58,19 @@ std::vector<SceneLookups> lookup_ladder(const Quality& top) {
     return ladder;
 }
 
+// The caustics off are offered only where the scene's previews found they change no pixel visibly:
+// no channel of any preview pixel moves by more than the needs rules' invisible change (kGodrays-
+// InvisibleChange, passes/frame/frame_needs.hpp: half a step of the PNG preview at its steepest).
+// Then the frame without them is the same picture for less time (no photons, no map): the ocean,
+// whose floor lies 30 m down in coastal water. Where they show, even faintly (the showcase pool
+// loses relMSE 0.005 without them, more than its fewest photons lose), they stay on at every
+// candidate, and the candidates stay as many.
+bool caustics_offered(const Quality& top) {
+    const MeasuredOffExcess& measured = top.measured_off;
+    return top.caustics && measured.caustics >= 0.0 && measured.caustics_largest_change >= 0.0 &&
+           measured.caustics_largest_change <= kGodraysInvisibleChange;
+}
+
 }  // namespace
 
 double caustic_visibility(const Scene& scene) {
@@ -105,6 +118,7 @@ Quality scene_quality(const Scene& scene, const fg::FrameNeeds& needs, uint32_t 
         // The kernel and the map's scale are knobs only where photons are splatted into the
         // light-space map (not the procedural caustics, not the camera-space splats).
         const fg::EffectDecision* caustics = needs.find(Effect::SurfaceCaustics);
+        quality.caustics = caustics && caustics->needed;
         const CausticSettings& settings = scene.effects.caustics;
         if (caustics && caustics->needed && settings.method == CausticMethod::Photons &&
             settings.splat == CausticSplat::LightSpace) {
@@ -168,8 +182,11 @@ std::vector<Quality> quality_candidates(const Quality& top) {
         q.reflection_lookup = v.reflection;
         q.refraction_lookup = v.refraction;
     });
-    vary(kernels, [](Quality& q, CausticKernel v) { q.caustic_kernel = v; });
-    vary(map_scales, [](Quality& q, double v) { q.map_scale = v; });
+    // The caustics off: a candidate's kernel and map scale stay the top's (no map to splat into).
+    vary(caustics_offered(top) ? std::vector<bool>{true, false} : std::vector<bool>{top.caustics},
+         [](Quality& q, bool v) { q.caustics = v; });
+    vary(kernels, [&top](Quality& q, CausticKernel v) { q.caustic_kernel = q.caustics ? v : top.caustic_kernel; });
+    vary(map_scales, [&top](Quality& q, double v) { q.map_scale = q.caustics ? v : top.map_scale; });
     vary(top.second_layer ? std::vector<bool>{true, false} : std::vector<bool>{false},
          [](Quality& q, bool v) { q.second_layer = v && q.refraction_lookup; });  // the layer is the refraction view's
     vary(steps_below(top.shadow_texels, kShadowTexels), [](Quality& q, uint32_t v) { q.shadow_texels = v; });
@@ -204,6 +221,7 @@ void apply_quality(const Quality& quality, const Quality& top, Scene& scene) {
     }
     if (top.reflection_lookup && !quality.reflection_lookup) scene.effects[Effect::Reflection].mode = EffectMode::Off;
     if (top.refraction_lookup && !quality.refraction_lookup) scene.effects[Effect::Refraction].mode = EffectMode::Off;
+    if (top.caustics && !quality.caustics) scene.effects[Effect::SurfaceCaustics].mode = EffectMode::Off;
     if (top.map_scale > 0.0) {
         scene.effects.caustics.kernel = quality.caustic_kernel;
         scene.effects.caustics.map_scale = quality.map_scale;
@@ -234,6 +252,7 @@ void each_knob_field(SceneT& scene, FieldsT& fields, Copy copy) {
     copy(scene.effects[Effect::Reflection].mode, fields.reflection);
     copy(scene.effects[Effect::Refraction].mode, fields.refraction);
     copy(scene.effects[Effect::RefractionSecondLayer].mode, fields.second_layer);
+    copy(scene.effects[Effect::SurfaceCaustics].mode, fields.caustics);
     copy(scene.effects[Effect::Reflection].max_steps, fields.reflection_steps);
     copy(scene.effects[Effect::Refraction].max_steps, fields.refraction_steps);
     copy(scene.effects.caustics.kernel, fields.kernel);
@@ -280,6 +299,7 @@ std::vector<std::string> quality_arguments(const Quality& quality, const Quality
     }
     if (top.reflection_lookup && !quality.reflection_lookup) arguments.push_back("--set effects.reflection.mode=off");
     if (top.refraction_lookup && !quality.refraction_lookup) arguments.push_back("--set effects.refraction.mode=off");
+    if (top.caustics && !quality.caustics) arguments.push_back("--set effects.caustics.mode=off");
     if (quality.caustic_kernel != top.caustic_kernel) {
         arguments.push_back(std::string("--set effects.caustics.kernel=") +
                             caustic_kernel_name(quality.caustic_kernel));
@@ -331,7 +351,8 @@ std::string describe_quality(const Quality& quality) {
     if (quality.second_layer) text += ", second layer";
     if (quality.shadow_texels > 0) text += ", shadow map " + std::to_string(quality.shadow_texels) + "^2";
     if (quality.terrain_fraction > 0.0) text += ", terrain cells x" + format_number(quality.terrain_fraction);
-    if (quality.map_scale > 0.0) {
+    if (!quality.caustics && quality.photon_grid > 0) text += ", caustics off";
+    if (quality.map_scale > 0.0 && quality.caustics) {
         text += std::string(", kernel ") + caustic_kernel_name(quality.caustic_kernel) + ", map scale " +
                 format_number(quality.map_scale);
     }

@@ -24,6 +24,10 @@
 //                    off where the needs run it
 //   shadow_texels    sun.shadow_texels: the sun shadow map's texels per side, where receiver
 //                    meshes cast into it
+//   caustics         effects.caustics.mode: the surface caustics off (the photons, the map and its
+//                    passes), offered only where the scene's previews found that turning them off
+//                    changes no pixel visibly (the ocean, whose floor lies 30 m down in coastal
+//                    water)
 //   terrain_fraction the terrain receivers' cells per side over the file's (receivers[i].resolution):
 //                    the triangles every view of the receivers draws (the camera's, the scene
 //                    views', the sun shadow map's), where the scene has terrain
@@ -47,6 +51,10 @@ struct MeasuredOffExcess {
     double reflection_lookup = -1.0;
     double refraction_lookup = -1.0;
     double second_layer = -1.0;
+    double caustics = -1.0;
+    // With the caustics off, the largest change of any preview pixel's channel, relative to its
+    // value with them on (0 where both are 0; infinite where only the one with them is not).
+    double caustics_largest_change = -1.0;
     bool operator==(const MeasuredOffExcess&) const = default;
 };
 
@@ -64,6 +72,7 @@ struct Quality {
     bool second_layer = false;      // the refraction view's second layer runs (only where the needs run it)
     uint32_t shadow_texels = 0;     // the sun shadow map's texels per side; 0: the frame makes none
     double terrain_fraction = 0.0;  // the terrain receivers' cells per side over their own; 0: no terrain
+    bool caustics = false;          // the surface caustics run (the scene's decision, or turned off)
     // Not a knob: the scene's caustic_visibility (below), the same in every candidate; the error
     // model scales the caustic knobs' terms by it.
     double caustic_visibility = 1.0;
@@ -112,7 +121,7 @@ struct SceneKnobFields {
     std::optional<uint32_t> mesh_resolution, mesh_cell_pixels;
     uint32_t godray_grid = 0;
     EffectMode godrays = EffectMode::Auto, reflection = EffectMode::Auto, refraction = EffectMode::Auto,
-               second_layer = EffectMode::Auto;
+               second_layer = EffectMode::Auto, caustics = EffectMode::Auto;
     int reflection_steps = 0, refraction_steps = 0;
     CausticKernel kernel = CausticKernel::Adaptive;
     double map_scale = 0.0;
