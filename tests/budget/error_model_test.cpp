@@ -285,8 +285,9 @@ TEST(BudgetErrorModel, ASceneLookupTurnedOffCostsItsMeasuredExcess) {
     }
 }
 
-// Where the scene's previews measured what an on/off knob loses, that is its term, in place of the
-// table's worst case over the sweep's scenes; where they did not (below 0), the table stands.
+// Where the scene's previews measured what an on/off knob loses, that is its term (made a bound as
+// the table's are, times kMeasuredTermBound), in place of the table's worst case over the sweep's
+// scenes; where they did not (below 0), the table stands.
 TEST(BudgetErrorModel, AnOnOffKnobCostsWhatTheScenesPreviewsMeasured) {
     Quality top{1.0, 512, 256, 64};
     top.lookup_steps = 64;
@@ -294,14 +295,14 @@ TEST(BudgetErrorModel, AnOnOffKnobCostsWhatTheScenesPreviewsMeasured) {
     top.measured_off = {0.00131, -1.0, 0.00121};  // lake's previews; its refraction left unmeasured
     Quality reflection_off = top;
     reflection_off.reflection_lookup = false;
-    EXPECT_DOUBLE_EQ(predict_error(reflection_off, top).excess, 0.00131);
+    EXPECT_DOUBLE_EQ(predict_error(reflection_off, top).excess, kMeasuredTermBound * 0.00131);
     Quality refraction_off = top;
     refraction_off.refraction_lookup = refraction_off.second_layer = false;
     // The layer goes with the refraction lookup, whose loss holds the layer's.
     EXPECT_DOUBLE_EQ(predict_error(refraction_off, top).excess, error_term(Knob::RefractionLookup, 0.0));
     Quality layer_off = top;
     layer_off.second_layer = false;
-    EXPECT_DOUBLE_EQ(predict_error(layer_off, top).excess, 0.00121);
+    EXPECT_DOUBLE_EQ(predict_error(layer_off, top).excess, kMeasuredTermBound * 0.00121);
     EXPECT_EQ(predict_error(layer_off, top).dominant, "refraction second layer");
     top.measured_off.reflection_lookup = 0.0;  // measured: it loses nothing
     reflection_off.measured_off = top.measured_off;
@@ -319,10 +320,11 @@ TEST(BudgetErrorModel, TheCausticsOffCostWhatThePreviewsMeasured) {
     top.measured_off.caustics_largest_change = 0.001;
     Quality off = top;
     off.caustics = false;
-    EXPECT_DOUBLE_EQ(predict_error(off, top).excess, 2e-7);
+    EXPECT_DOUBLE_EQ(predict_error(off, top).excess, kMeasuredTermBound * 2e-7);
     EXPECT_EQ(predict_error(off, top).dominant, "caustics off");
     off.photon_grid = 128;
-    EXPECT_DOUBLE_EQ(predict_error(off, top).excess, 2e-7) << "no photon grid term without caustics";
+    EXPECT_DOUBLE_EQ(predict_error(off, top).excess, kMeasuredTermBound * 2e-7)
+        << "no photon grid term without caustics";
     Quality fewer = top;
     fewer.photon_grid = 128;
     EXPECT_GT(predict_error(fewer, top).excess, 0.0) << "with them, the photon grid's term";

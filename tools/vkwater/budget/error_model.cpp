@@ -148,7 +148,8 @@ ErrorPrediction predict_error(const Quality& quality, const Quality& top, double
     const bool caustics_off = top.caustics && !quality.caustics;
     if (caustics_off) {
         const double measured = top.measured_off.caustics;
-        terms.push_back({"caustics off", measured >= 0.0 ? measured : std::numeric_limits<double>::infinity()});
+        terms.push_back({"caustics off",
+                         measured >= 0.0 ? kMeasuredTermBound * measured : std::numeric_limits<double>::infinity()});
     }
     if (top.photon_grid > 0) {
         terms.push_back({"photon grid", caustics_off
@@ -165,9 +166,11 @@ ErrorPrediction predict_error(const Quality& quality, const Quality& top, double
         terms.push_back({"scene lookup steps", error_term(Knob::LookupSteps, quality.lookup_steps) -
                                                    error_term(Knob::LookupSteps, top.lookup_steps)});
     }
-    // An on/off knob turned off: this scene's own loss where its previews measured it, else the
-    // table's worst case.
-    const auto off_term = [](double measured, Knob knob) { return measured >= 0.0 ? measured : error_term(knob, 0.0); };
+    // An on/off knob turned off: this scene's own loss where its previews measured it (made a bound,
+    // kMeasuredTermBound), else the table's worst case.
+    const auto off_term = [](double measured, Knob knob) {
+        return measured >= 0.0 ? kMeasuredTermBound * measured : error_term(knob, 0.0);
+    };
     if (top.reflection_lookup && !quality.reflection_lookup) {
         terms.push_back(
             {"reflection lookup off", off_term(top.measured_off.reflection_lookup, Knob::ReflectionLookup)});
