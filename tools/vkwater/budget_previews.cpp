@@ -71,20 +71,19 @@ OffExcessPreviews measure_off_excess(Renderer& renderer, const Scene& scene, con
         return render_preview(renderer, scene, quality, top, previews.height);
     };
     const ImageRGBA32F on = render(top);
-    const auto turned_off = [&](bool budget::Quality::*knob) {
+    // The top with one knob off (a refraction lookup off takes the second layer with it).
+    const auto without = [&](bool budget::Quality::*knob) {
         budget::Quality quality = top;
         quality.*knob = false;
-        if (!quality.refraction_lookup) quality.second_layer = false;  // the layer is the refraction view's
-        return excess(render(quality), on);
+        if (!quality.refraction_lookup) quality.second_layer = false;
+        return render(quality);
     };
     budget::MeasuredOffExcess& measured = previews.measured;
-    if (top.reflection_lookup) measured.reflection_lookup = turned_off(&budget::Quality::reflection_lookup);
-    if (top.refraction_lookup) measured.refraction_lookup = turned_off(&budget::Quality::refraction_lookup);
-    if (top.second_layer) measured.second_layer = turned_off(&budget::Quality::second_layer);
+    if (top.reflection_lookup) measured.reflection_lookup = excess(without(&budget::Quality::reflection_lookup), on);
+    if (top.refraction_lookup) measured.refraction_lookup = excess(without(&budget::Quality::refraction_lookup), on);
+    if (top.second_layer) measured.second_layer = excess(without(&budget::Quality::second_layer), on);
     if (top.caustics) {
-        budget::Quality quality = top;
-        quality.caustics = false;
-        const ImageRGBA32F off = render(quality);
+        const ImageRGBA32F off = without(&budget::Quality::caustics);
         measured.caustics = excess(off, on);
         measured.caustics_largest_change = largest_relative_change(off, on);
     }
