@@ -21,17 +21,6 @@ uint32_t preview_height(uint32_t output_width, uint32_t output_height) {
     return uint32_t(std::clamp(height, 1.0, double(4 * kPreviewWidth)));
 }
 
-ImageRGBA32F render_preview(Renderer& renderer, const Scene& scene, const budget::Quality& quality,
-                            const budget::Quality& top, uint32_t height) {
-    Scene preview = scene;
-    budget::apply_quality(quality, top, preview);
-    RenderOptions options;
-    options.width = kPreviewWidth;
-    options.height = height;
-    options.timing = fg::TimingMode::None;
-    return renderer.render(preview, options).image;
-}
-
 // relMSE of `off` against `on` over every pixel; 0 where `on` is black (metrics::rel_mse needs a
 // reference with light in it).
 double excess(const ImageRGBA32F& off, const ImageRGBA32F& on) {
@@ -66,9 +55,19 @@ OffExcessPreviews measure_off_excess(Renderer& renderer, const Scene& scene, con
     const auto start = std::chrono::steady_clock::now();
     previews.width = kPreviewWidth;
     previews.height = preview_height(output_width, output_height);
+    // One copy of the scene for every preview: each sets its knobs over the scene's own, put back
+    // first (apply_quality sets only what lies below the top, as for the viewer's frames).
+    Scene preview = scene;
+    const budget::SceneKnobFields own = budget::knob_fields(preview);
+    RenderOptions options;
+    options.width = previews.width;
+    options.height = previews.height;
+    options.timing = fg::TimingMode::None;
     const auto render = [&](const budget::Quality& quality) {
         ++previews.frames;
-        return render_preview(renderer, scene, quality, top, previews.height);
+        budget::restore_knob_fields(own, preview);
+        budget::apply_quality(quality, top, preview);
+        return renderer.render(preview, options).image;
     };
     const ImageRGBA32F on = render(top);
     // The top with one knob off (a refraction lookup off takes the second layer with it).

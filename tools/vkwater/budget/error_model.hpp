@@ -21,7 +21,6 @@
 // off (tools/vkwater/budget_previews.hpp, Quality::measured_off); the table's entry stands in
 // elsewhere. A measured term is made a bound as the table's are: times the largest ratio of the
 // sweep's excess to the previews' over the sweep's scenes (below).
-
 //
 // What it is not yet: the other error bounds derived per effect (the mesh's sag in pixels, the
 // photons seen per texel) with fitted weights, which would follow a scene's wavelengths and depths

@@ -159,10 +159,9 @@ private:
     FrameStats stats_;
     double budget_ms_ = 0.0;                            // 0: no budget
     std::unique_ptr<budget::BudgetController> budget_;  // with a budget, for the scene as loaded
-    // What the budget changes and must give back when it steps up: the godrays' mode (it turns
-    // them off) and the scene lookups' steps, as loaded.
-    budget::SceneKnobFields knobs_at_load_;  // what the budget turns, as the scene was loaded
-    uint64_t frame_ = 0;                     // frames shown so far: the number of the next one
+    // What the budget turns, as the scene was loaded: it gives these back when it steps up.
+    budget::SceneKnobFields knobs_at_load_;
+    uint64_t frame_ = 0;  // frames shown so far: the number of the next one
     uint64_t timing_due_ = FrameStats::kWarmupFrames;
     std::vector<std::string> pass_list_;           // the scene graph's living passes, last frame
     fg::FrameExecutor* scene_executor_ = nullptr;  // valid until the next prepare or reload
