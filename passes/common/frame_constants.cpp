@@ -1,5 +1,7 @@
 #include "passes/common/frame_constants.hpp"
 
+#include "engine/scene/receiver_boxes.hpp"
+
 #include <cmath>
 #include <cstdlib>
 
@@ -35,6 +37,12 @@ FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t
     constants.medium_sigma_t = glm::vec4(glm::vec3(scene.medium.sigma_t()), 0.0f);
     constants.medium_sigma_s = glm::vec4(glm::vec3(scene.medium.sigma_s), static_cast<float>(scene.medium.g));
     constants.medium_options = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);  // the renderer clears x when godrays run
+    const ReceiverBoxes boxes = receiver_boxes(scene);
+    constants.receiver_boxes = glm::vec4(static_cast<float>(boxes.count), 0.0f, 0.0f, 0.0f);
+    for (std::size_t i = 0; i < boxes.count; ++i) {
+        constants.receiver_box_min[i] = glm::vec4(glm::vec3(boxes.lo[i]), 0.0f);
+        constants.receiver_box_max[i] = glm::vec4(glm::vec3(boxes.hi[i]), 0.0f);
+    }
     if (scene.water) {
         const Water& water = *scene.water;
         constants.water = glm::vec4(static_cast<float>(water.level), static_cast<float>(water.ior),

@@ -2,6 +2,7 @@
 // generated) and the function that fills it from a scene.
 #pragma once
 
+#include "engine/scene/receiver_boxes.hpp"
 #include "engine/scene/scene.hpp"
 #include "engine/water/unresolved_slopes.hpp"
 
@@ -22,6 +23,7 @@ inline constexpr double kSunDiskAngularRadiusDeg = 0.2666;
 // generated from the SPIR-V of the shader that declares only the shared blocks.
 using FrameConstants = glsl::shared_blocks_comp::FrameConstants;
 static_assert(std::size(FrameConstants{}.unresolved_slopes) == kUnresolvedSlopeEntries);
+static_assert(std::size(FrameConstants{}.receiver_box_min) == kReceiverBoxes);
 
 FrameConstants make_frame_constants(const Scene& scene, uint32_t width, uint32_t height);
 

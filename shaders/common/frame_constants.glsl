@@ -32,6 +32,9 @@ layout(set = 0, binding = 0, std140) uniform FrameConstants {
     vec4 glitter;             // x: log of the first cutoff wavenumber, y: log step, z: 1 when the waves have slopes,
                               // w: the slopes' whole variance S_xx + S_zz
     vec4 unresolved_slopes[16];  // (S_xx, S_xz, S_zz, k_c): water/sun_glitter.glsl, engine/water/unresolved_slopes.hpp
+    vec4 receiver_boxes;         // x: how many of the boxes below hold the receiver meshes (passes/common/receiver_boxes.hpp)
+    vec4 receiver_box_min[8];    // xyz: world-space corners of boxes that together hold every receiver mesh
+    vec4 receiver_box_max[8];
 } frame;
 
 // sigma_s for the analytic single scattering along view rays: zero when the godrays

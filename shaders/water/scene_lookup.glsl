@@ -262,7 +262,29 @@ bool lookup_in(sampler2D view, bool peeled, uint method, bool mirrored, vec3 p, 
     return false;
 }
 
+// Whether the ray from p along d meets, before max_distance, one of the boxes that together hold
+// every receiver mesh (the frame constants', engine/scene/receiver_boxes.hpp). The views hold the
+// receiver meshes alone, so a ray that meets none of the boxes can find nothing in them, and its
+// lookup, the dearest part of a pixel where it runs, is left out: in lake most reflected rays rise
+// past the few objects over the water to the sky.
+bool ray_meets_receiver_box(vec3 p, vec3 d, float max_distance) {
+    // A zero component of d would make 0 * inf = NaN on a face: 1e-30 in its place gives the slab
+    // of a ray parallel to it (all of it, or none, by where p lies), whatever its sign.
+    const vec3 inverse = 1.0 / mix(d, vec3(1e-30), lessThan(abs(d), vec3(1e-30)));
+    for (int i = 0; i < int(frame.receiver_boxes.x); ++i) {
+        const vec3 a = (frame.receiver_box_min[i].xyz - p) * inverse;
+        const vec3 b = (frame.receiver_box_max[i].xyz - p) * inverse;
+        const vec3 enter = min(a, b), leave = max(a, b);
+        if (max(max(enter.x, enter.y), max(enter.z, 0.0)) <= min(min(leave.x, leave.y), min(leave.z, max_distance))) {
+            return true;
+        }
+    }
+    return false;
+}
+
 bool scene_lookup(uint method, bool reflected, vec3 p, vec3 d, float max_distance, int max_steps, out SceneHit hit) {
+    hit = SCENE_NO_HIT;
+    if (!ray_meets_receiver_box(p, d, max_distance)) return false;
     // Reflected rays read the reflection view (the mirrored one for the projective method); refracted
     // rays the camera's view of the other side.
     if (reflected) {

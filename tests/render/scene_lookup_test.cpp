@@ -4,6 +4,7 @@
 // floor under a sky without red, so the red channel is the box alone (seen directly, in
 // the reflection and through the surface). Plus the needs rules (culled = forced-on) and
 // finite output with the camera grazing the surface and under it.
+#include "engine/scene/receiver_boxes.hpp"
 #include "engine/scene/scene_loader.hpp"
 #include "passes/frame/frame_needs.hpp"
 #include "passes/frame/renderer.hpp"
@@ -147,6 +148,32 @@ TEST_P(SceneLookupEdges, ReflectedAndRefractedBoxEdgesLandWhereTheRayTracePutsTh
         "[ figures  ] %s: relMSE %.3g against the reference; %d pixels differ by > 1%% of the peak, "
         "%d of them more than %d px from an edge\n",
         GetParam().name, rel_mse, report.mismatched, report.far_from_edges, reach);
+}
+
+// The shader skips a ray's lookups where it meets none of the boxes that hold the receivers
+// (engine/scene/receiver_boxes.hpp); past the frame constants' eight boxes, the rest share the last.
+// Eight small spheres first, out of every ray's way (behind the camera, 8 m under the floor), so
+// that the red box shares the eighth box with the last sphere: its edges, seen directly, in the
+// reflection and through the surface, must still land where the ray trace puts them.
+TEST_P(SceneLookupEdges, ABoxThatSharesTheLastReceiverBoxIsStillLookedUp) {
+    std::string receivers;
+    for (int i = 0; i < 8; ++i) {
+        receivers += R"({"type": "sphere", "radius": 0.1, "translation": [)" + std::to_string(i - 4) +
+                     ", -10, 12], \"albedo\": [0, 0, 0]}, ";
+    }
+    receivers += R"({"type": "box", "half_size": [0.5, 1.0, 0.5], "translation": [0, -0.6, 0],
+                     "rotation_deg": [0, 25, 0], "albedo": [1, 0, 0]})";
+    const Scene scene = box_in_calm_water(kCameraAbove, GetParam().effects, "receivers=[" + receivers + "]");
+    const ReceiverBoxes boxes = receiver_boxes(scene);
+    ASSERT_EQ(boxes.count, kReceiverBoxes);
+    ASSERT_LT(boxes.lo[kReceiverBoxes - 1].z, scene.receivers[8].mesh.bounds_min.z);
+    ASSERT_GT(boxes.hi[kReceiverBoxes - 1].z, scene.receivers[7].mesh.bounds_min.z) << "the box shares no box";
+    const AgainstRayTrace run = render_against_ray_trace(context(), scene);
+    // delta and reach as in the first test.
+    EXPECT_EQ(run.report.far_from_edges, 0)
+        << GetParam().name << ": " << run.report.mismatched << " pixels differ by more than " << run.delta << ", "
+        << run.report.far_from_edges << " of them more than " << run.reach
+        << " pixels from any edge:" << run.report.examples;
 }
 
 // The box lowered whole under the flat water (from 1.6 m to 0.8 m deep): seen from above, every
