@@ -263,6 +263,55 @@ TEST(BudgetController, AStepUpMeasuredOverTheBudgetStopsStepsUpForABan) {
     EXPECT_EQ(controller.changes(), 4u) << "no step up after the ban";
 }
 
+// The viewer makes its previews again where the camera comes to rest, and hands the controller
+// the new top (BudgetController::retarget). Pool's caustics measured invisible from one camera
+// make "caustics off" a candidate, which a tight budget takes (the photons are pool's dearest
+// pass); measured visible from the next camera, that candidate is gone, and the controller leaves
+// it at once for one of the new candidates, keeping the cost model it fitted. The same top again
+// keeps the setting in force.
+TEST(BudgetController, APreviewMadeAgainWhereTheCameraRestsRetargetsTheCandidates) {
+    Quality top = scene_quality(pool(), decide_frame_needs(pool(), 4.0 / 3.0));
+    ASSERT_TRUE(top.caustics);
+    top.measured_off.caustics = 0.0;
+    top.measured_off.caustics_largest_change = 0.0;  // nothing visible: the knob is offered
+    ScriptedDevice device(pool());
+    BudgetController controller(
+        66.0, top, [](const Quality& q) { return cost_drivers(pool(), q, kWidth, kHeight); },
+        [] { return double(kHeight); });
+    uint64_t timing_due = 3;
+    const auto run_frames = [&](uint32_t count) {
+        for (uint32_t frame = 0; frame < count; ++frame) {
+            if (frame >= timing_due) {
+                controller.add_pass_times(device.pass_times(controller.current()));
+                timing_due = frame + 30;
+            }
+            if (controller.add_frame(device.frame_ms(controller.current()))) timing_due = frame + 1;
+        }
+    };
+    run_frames(200);
+    ASSERT_FALSE(controller.current().caustics) << "the tight budget kept the invisible caustics";
+    const Quality settled = controller.current();
+    const double predicted = controller.describe(settled).predicted_ms;
+
+    EXPECT_FALSE(controller.retarget(top)) << "the same top changed the setting";
+    EXPECT_EQ(controller.current(), settled);
+    EXPECT_DOUBLE_EQ(controller.describe(settled).predicted_ms, predicted) << "the cost model was not kept";
+
+    Quality visible = top;
+    visible.measured_off.caustics = 0.01;
+    visible.measured_off.caustics_largest_change = 1.0;  // the new camera sees them
+    const uint64_t changes = controller.changes();
+    EXPECT_TRUE(controller.retarget(visible));
+    EXPECT_EQ(controller.changes(), changes + 1);
+    EXPECT_TRUE(controller.current().caustics);
+    EXPECT_EQ(controller.top(), visible);
+    EXPECT_EQ(controller.current().measured_off, visible.measured_off);
+    // Settled again under the budget among the new candidates, none without the caustics.
+    run_frames(200);
+    EXPECT_TRUE(controller.current().caustics);
+    EXPECT_LE(device.true_frame_ms(controller.current()), 66.0);
+}
+
 // The second layer's pass runs only with the layer, and the water pass costs more with it. Fitted
 // to a frame with the layer, the model predicts the frame without it from the same factors; fitted
 // to one without, it takes the layer's pass at the device's typical factor.

@@ -394,6 +394,27 @@ TEST_F(ViewWindow, SupersampledScreenshotEqualsTheOffscreenRenderBitForBit) {
     EXPECT_NE(generous.output.find("settings at exit: --spp 4 (0 changes)"), std::string::npos) << generous.output;
 }
 
+// The budget's previews measure the on/off knobs where the camera is (tools/vkwater/budget_previews.hpp):
+// at start, and again once the camera has moved and then rested 30 frames. Box's red box, seen from
+// above and reflected, then from a camera turned away from it, where neither lookup shows it. Under
+// validation: the previews render between the window's frames.
+TEST_F(ViewWindow, TheBudgetsPreviewsAreMadeAgainWhereTheCameraRests) {
+    const fs::path script = write_text("budget_previews.txt", "2: camera 6 1.5 6   12 -1 12\n");
+    const Outcome view = vkwater("view " + kScenes + "box.json --width 160 --height 120 --frames 40 --budget-ms 1000" +
+                                 " --validation --script " + script.string());
+    ASSERT_EQ(view.exit_code, 0) << view.output;
+    std::vector<std::string> lines;
+    for (size_t at = view.output.find("budget: turned off in"); at != std::string::npos;
+         at = view.output.find("budget: turned off in", at + 1)) {
+        lines.push_back(view.output.substr(at, view.output.find('\n', at) - at));
+    }
+    ASSERT_EQ(lines.size(), 2u) << view.output;
+    // From the start the reflected box is the reflection lookup's loss; looking away, nothing is.
+    ASSERT_NE(lines[0].find("the reflection lookup "), std::string::npos) << lines[0];
+    EXPECT_EQ(lines[0].find("the reflection lookup 0,"), std::string::npos) << lines[0];
+    EXPECT_NE(lines[1].find("the reflection lookup 0,"), std::string::npos) << lines[1];
+}
+
 // --temporal: the view accumulates its frames as vkwater render --frames ... --temporal does, so the
 // screenshot of frame 4 is that sequence's frame 4 bit for bit (relMSE exactly 0), and not the
 // frame without accumulation (relMSE about 7e-5: the jittered edges of calm's flat water). Under

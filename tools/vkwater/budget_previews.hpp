@@ -13,8 +13,8 @@
 //
 // The knobs: the reflected rays' and the refracted rays' scene lookups, the refraction view's
 // second layer and the surface caustics, each where the scene's own settings run it. The previews cost one frame each at
-// 160 pixels wide plus one with everything on, made once per scene (at the view's start and at a
-// reload); the camera of the scene file is the one measured.
+// 160 pixels wide plus one with everything on, made at the view's start, at a reload, and again
+// where the viewer's camera comes to rest after moving (what a knob loses depends on what is seen).
 #pragma once
 
 #include "passes/frame/renderer.hpp"

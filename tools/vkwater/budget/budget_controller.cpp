@@ -19,14 +19,38 @@ double median_of(std::vector<double> values) {
 BudgetController::BudgetController(double budget_ms, const Quality& top,
                                    std::function<CostDrivers(const Quality&)> drivers,
                                    std::function<double()> output_rows)
-    : budget_ms_(budget_ms),
-      top_(top),
-      drivers_(std::move(drivers)),
-      output_rows_(std::move(output_rows)),
-      candidates_(quality_candidates(top)),
-      current_(top) {
+    : budget_ms_(budget_ms), drivers_(std::move(drivers)), output_rows_(std::move(output_rows)), current_(top) {
+    set_top(top);
+}
+
+void BudgetController::set_top(const Quality& top) {
+    top_ = top;
+    candidates_ = quality_candidates(top);
+    candidate_drivers_.clear();
     candidate_drivers_.reserve(candidates_.size());
     for (const Quality& candidate : candidates_) candidate_drivers_.push_back(drivers_(candidate));
+    // What choose() kept per candidate, and the bans, are by index into the old candidates.
+    candidate_errors_.clear();
+    error_rows_ = -1.0;
+    candidate_passes_ms_.clear();
+    passes_revision_ = ~uint64_t{0};
+    banned_until_.clear();
+}
+
+bool BudgetController::retarget(const Quality& top) {
+    set_top(top);
+    // The same knobs under the new top: the measured terms are the same in every candidate.
+    Quality same = current_;
+    same.measured_off = top.measured_off;
+    same.caustic_visibility = top.caustic_visibility;
+    same.camera_in_water = top.camera_in_water;
+    if (std::find(candidates_.begin(), candidates_.end(), same) != candidates_.end()) {
+        current_ = same;
+        return false;
+    }
+    change_to(choose(kTargetFraction * budget_ms_).quality);
+    stepped_up_ = false;
+    return true;
 }
 
 Choice BudgetController::describe(const Quality& quality) const {

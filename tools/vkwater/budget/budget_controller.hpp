@@ -71,6 +71,12 @@ public:
     void add_timed_frame(const std::vector<fg::PassTime>& passes, double frame_ms);
     Choice plan() const { return choose(kTargetFraction * budget_ms_); }
     void set_current(const Quality& quality) { change_to(quality); }
+    // A new top for the same scene (the viewer's previews made again where its camera rests: the
+    // on/off knobs' measured terms, and the needs there). The candidates follow it; the cost model,
+    // fitted to this device's passes, and the setting in force stay, where the setting is still a
+    // candidate. Returns true when it is not and current() changed to the best one predicted
+    // within the budget.
+    bool retarget(const Quality& top);
 
     // The best candidate predicted within `limit_ms`, or the cheapest when none is.
     Choice choose(double limit_ms) const;
@@ -83,6 +89,7 @@ public:
 
 private:
     void change_to(const Quality& quality);
+    void set_top(const Quality& top);  // with its candidates, and nothing kept of the last top's
     double budget_ms_;
     Quality top_;
     std::function<CostDrivers(const Quality&)> drivers_;

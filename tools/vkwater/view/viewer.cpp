@@ -115,12 +115,19 @@ private:
     void note_pass_list(const fg::FrameGraph& graph);
     double choose_budget_ms() const;
     void start_budget();
+    // The budget's top setting for the scene as loaded, at the viewer's camera, with its on/off
+    // knobs measured there in small previews (tools/vkwater/budget_previews.hpp).
+    budget::Quality measured_top();
+    // Once the camera has moved since the previews and then rested kPreviewRestFrames frames, the
+    // previews are made again where it rests: what a knob costs depends on what the camera sees.
+    void refresh_budget_previews();
     // The frame's size: the window's, or the options' before it has one.
     VkExtent2D output_extent() const {
         return swapchain_ ? swapchain_->extent() : VkExtent2D{options_.width, options_.height};
     }
     void apply_budget(RenderOptions& options);
     void feed_budget(double interval_ms);
+    void budget_setting_changed();  // the budget chose another setting for the next frame
 
     ViewerOptions options_;
     bool scripted_ = false;
@@ -161,7 +168,15 @@ private:
     std::unique_ptr<budget::BudgetController> budget_;  // with a budget, for the scene as loaded
     // What the budget turns, as the scene was loaded: it gives these back when it steps up.
     budget::SceneKnobFields knobs_at_load_;
-    uint64_t frame_ = 0;  // frames shown so far: the number of the next one
+    static constexpr uint64_t kPreviewRestFrames = 30;
+    struct CameraPose {
+        glm::dvec3 position{0.0}, target{0.0};
+        bool operator==(const CameraPose&) const = default;
+    };
+    CameraPose previews_pose_;  // where the budget's previews were made
+    CameraPose last_pose_;      // the camera's pose in the last frame,
+    uint64_t pose_since_ = 0;   // and the frame it has held it since
+    uint64_t frame_ = 0;        // frames shown so far: the number of the next one
     uint64_t timing_due_ = FrameStats::kWarmupFrames;
     std::vector<std::string> pass_list_;           // the scene graph's living passes, last frame
     fg::FrameExecutor* scene_executor_ = nullptr;  // valid until the next prepare or reload
@@ -265,8 +280,11 @@ double Viewer::choose_budget_ms() const {
     return refresh > 0.0 ? refresh : kGpuBudgetMs;
 }
 
-void Viewer::start_budget() {
-    knobs_at_load_ = budget::knob_fields(*scene_);
+budget::Quality Viewer::measured_top() {
+    // At the viewer's camera: after a reload it keeps its pose unless the file's camera moved.
+    scene_->camera.position = camera_.position();
+    scene_->camera.target = camera_.target();
+    previews_pose_ = {camera_.position(), camera_.target()};
     const fg::FrameNeeds needs = decide_frame_needs(*scene_, double(options_.width) / double(options_.height));
     budget::Quality top = budget::scene_quality(*scene_, needs, most_samples_);
     const VkExtent2D output = output_extent();
@@ -275,6 +293,12 @@ void Viewer::start_budget() {
         cli::measure_off_excess(*renderer_, *scene_, top, output.width, output.height);
     top.measured_off = previews.measured;
     if (previews.frames > 0) std::printf("%s\n", cli::describe(previews).c_str());
+    return top;
+}
+
+void Viewer::start_budget() {
+    knobs_at_load_ = budget::knob_fields(*scene_);
+    const budget::Quality top = measured_top();
     budget_ = std::make_unique<budget::BudgetController>(
         budget_ms_, top,
         [this](const budget::Quality& q) {
@@ -282,6 +306,20 @@ void Viewer::start_budget() {
             return budget::cost_drivers(*scene_, q, extent.width, extent.height);
         },
         [this] { return double(output_extent().height); });
+}
+
+void Viewer::refresh_budget_previews() {
+    const CameraPose pose{camera_.position(), camera_.target()};
+    if (pose != last_pose_) {
+        last_pose_ = pose;
+        pose_since_ = frame_;
+    }
+    if (!budget_ || pose == previews_pose_ || frame_ < pose_since_ + kPreviewRestFrames) return;
+    // The scene's own knobs, as the previews and the top read them (the next frame sets the
+    // budget's setting again, as every frame does).
+    budget::restore_knob_fields(knobs_at_load_, *scene_);
+    if (budget_->retarget(measured_top())) budget_setting_changed();
+    disturbed_ = true;  // this frame's interval holds the previews
 }
 
 void Viewer::apply_budget(RenderOptions& options) {
@@ -294,9 +332,12 @@ void Viewer::apply_budget(RenderOptions& options) {
 }
 
 void Viewer::feed_budget(double interval_ms) {
-    if (!budget_ || !budget_->add_frame(interval_ms)) return;
-    // A new setting: its first frame makes new pipelines and targets (not a fair interval), and
-    // its passes are timed soon, to refit the cost model where it now runs.
+    if (budget_ && budget_->add_frame(interval_ms)) budget_setting_changed();
+}
+
+void Viewer::budget_setting_changed() {
+    // Its first frame makes new pipelines and targets (not a fair interval), and its passes are
+    // timed soon, to refit the cost model where it now runs.
     disturbed_ = true;
     if (options_.timing_every > 0) timing_due_ = std::min(timing_due_, frame_ + 3);
     if (cli::verbose()) {
@@ -657,6 +698,7 @@ void Viewer::run() {
         last = now;
         update_ui_and_camera(wall_dt);
         serve_requests();
+        refresh_budget_previews();
         if (render_frame()) ++frame_;
     }
     frames_->wait_all();
