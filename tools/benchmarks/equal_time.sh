@@ -2,7 +2,8 @@
 # equal_time.sh OLD_COMMIT [ROUNDS] [SCENE ...]
 #
 # The error at equal frame time: OLD_COMMIT's defaults against this tree's settings of samples per
-# pixel and caustic map resolution, each scene's image and caustic-layer relMSE against its
+# pixel and caustic map resolution, each with the scene's other settings and with the godrays off
+# and a 128^2 water mesh ("light"), each scene's image and caustic-layer relMSE against its
 # box-filtered reference (tests/references/box/SCENE.exr), 400x300. Each round renders the old
 # build's default frame and then every setting of this tree (each render --repeat 2, the last
 # frame timed, the sum of its sub-frames); a setting's time is the median over the rounds of its
@@ -18,7 +19,15 @@ source "$(dirname "$0")/old_build.sh"
 source "$(dirname "$0")/provenance.sh"
 provenance_start
 [ ${#scenes[@]} -gt 0 ] || scenes=(pool lake ocean)
-settings=("1 1" "4 1" "9 1" "16 1" "1 2" "4 2" "9 2" "16 2")  # spp, effects.caustics.map_scale
+# spp, effects.caustics.map_scale, and the rest: the scene's own ("own"), or "light": the godrays
+# off and a 128^2 water mesh, what the budget turns first (their error is small where the samples'
+# time goes further).
+settings=()
+for rest in own light; do
+  for setting in "1 1" "4 1" "9 1" "16 1" "1 2" "4 2" "9 2" "16 2"; do settings+=("$setting $rest"); done
+done
+rest_args() { [ "$1" = light ] && echo "--set effects.godrays.mode=off --set water.mesh_resolution=128"; true; }
+rest_name() { [ "$1" = light ] && echo "godrays off, mesh 128" || echo "the scene's own"; }
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -50,11 +59,12 @@ for scene in "${scenes[@]}"; do
       exit 1
     fi
     for setting in "${settings[@]}"; do
-      read -r spp scale <<<"$setting"
-      ms=$(frame_ms "$new_vk" "$work/new-$spp-$scale.exr" "scenes/$scene.json" --spp "$spp" \
-        --set effects.caustics.map_scale="$scale") || true
-      [ -n "$ms" ] || { echo "equal_time.sh: $scene at --spp $spp, map_scale $scale: no frame time" >&2; exit 1; }
-      echo "$spp $scale $(awk -v a="$ms" -v b="$old_ms" 'BEGIN { printf "%.4f", a / b }') $ms $old_ms"
+      read -r spp scale rest <<<"$setting"
+      read -r -a extra <<<"$(rest_args "$rest")"
+      ms=$(frame_ms "$new_vk" "$work/new-$spp-$scale-$rest.exr" "scenes/$scene.json" --spp "$spp" \
+        --set effects.caustics.map_scale="$scale" "${extra[@]}") || true
+      [ -n "$ms" ] || { echo "equal_time.sh: $scene at --spp $spp, map_scale $scale, $rest: no frame time" >&2; exit 1; }
+      echo "$spp $scale $(awk -v a="$ms" -v b="$old_ms" 'BEGIN { printf "%.4f", a / b }') $ms $old_ms $rest"
     done
     # The budget's own choice for the old frame's time: its line names the settings and the time
     # it measured for them.
@@ -75,20 +85,20 @@ for scene in "${scenes[@]}"; do
   echo
   echo "$old_commit's defaults: relMSE $old_rel, caustic relMSE $old_caustic, frame $old_median ms (median)."
   echo
-  echo "| spp | map_scale | frame / $old_commit's frame | relMSE | / $old_commit's | caustic relMSE | / $old_commit's |"
-  echo "| --- | --- | --- | --- | --- | --- | --- |"
+  echo "| spp | map_scale | the rest | frame / $old_commit's frame | relMSE | / $old_commit's | caustic relMSE | / $old_commit's |"
+  echo "| --- | --- | --- | --- | --- | --- | --- | --- |"
   best=""
   for setting in "${settings[@]}"; do
-    read -r spp scale <<<"$setting"
-    ratio=$(awk -v s="$spp" -v m="$scale" '$1 == s && $2 == m { print $3 }' "$work/times.txt" | sort -g |
-      awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }')
-    read -r rel caustic <<<"$(errors "$work/new-$spp-$scale.exr" "$reference")"
+    read -r spp scale rest <<<"$setting"
+    ratio=$(awk -v s="$spp" -v m="$scale" -v r="$rest" '$1 == s && $2 == m && $6 == r { print $3 }' "$work/times.txt" |
+      sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }')
+    read -r rel caustic <<<"$(errors "$work/new-$spp-$scale-$rest.exr" "$reference")"
     rel_ratio=$(awk -v a="$rel" -v b="$old_rel" 'BEGIN { printf "%.2f", a / b }')
     caustic_ratio=$(awk -v a="$caustic" -v b="$old_caustic" 'BEGIN { printf "%.2f", a / b }')
-    echo "| $spp | $scale | $ratio | $rel | $rel_ratio | $caustic | $caustic_ratio |"
+    echo "| $spp | $scale | $(rest_name "$rest") | $ratio | $rel | $rel_ratio | $caustic | $caustic_ratio |"
     if awk -v r="$ratio" 'BEGIN { exit !(r <= 1) }'; then
       if [ -z "$best" ] || awk -v a="$rel" -v b="${best##* }" 'BEGIN { exit !(a < b) }'; then
-        best="spp $spp, map_scale $scale: relMSE x$rel_ratio, caustic relMSE x$caustic_ratio $rel"
+        best="spp $spp, map_scale $scale, $(rest_name "$rest"): relMSE x$rel_ratio, caustic relMSE x$caustic_ratio $rel"
       fi
     fi
   done
