@@ -67,9 +67,11 @@ public:
     bool add_frame(double ms);
 
     // A one-shot plan (vkwater render --budget-ms): a timed frame at current() fits the model, and
-    // plan() is the candidate to render next; set_current() makes it current().
+    // plan() is the candidate to render next; set_current() makes it current(). It aims at the
+    // budget itself, not kTargetFraction of it: the render times every setting it plans and keeps
+    // only one that measured within the budget, where the viewer's margin is for frames to come.
     void add_timed_frame(const std::vector<fg::PassTime>& passes, double frame_ms);
-    Choice plan() const { return choose(kTargetFraction * budget_ms_); }
+    Choice plan() const { return choose(budget_ms_); }
     void set_current(const Quality& quality) { change_to(quality); }
     // A new top for the same scene (the viewer's previews made again where its camera rests: the
     // on/off knobs' measured terms, and the needs there). The candidates follow it; the cost model,
