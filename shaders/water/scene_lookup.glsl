@@ -264,9 +264,10 @@ bool lookup_in(sampler2D view, bool peeled, uint method, bool mirrored, vec3 p, 
 
 // Whether the ray from p along d meets, before max_distance, one of the boxes that together hold
 // every receiver mesh (the frame constants', engine/scene/receiver_boxes.hpp). The views hold the
-// receiver meshes alone, so a ray that meets none of the boxes can find nothing in them, and its
-// lookup, the dearest part of a pixel where it runs, is left out: in lake most reflected rays rise
-// past the few objects over the water to the sky.
+// receiver meshes alone, so a ray that meets none of the boxes can find nothing in them: its lookup
+// is left out, and with it the lookup's false hits beside a silhouette. (In lake most reflected rays
+// rise past the few objects over the water. A GPU warp whose rays all miss skips the lookup; llvmpipe
+// runs it masked all the same, docs/performance.md "Lookups only for rays that can meet a receiver".)
 bool ray_meets_receiver_box(vec3 p, vec3 d, float max_distance) {
     // A zero component of d would make 0 * inf = NaN on a face: 1e-30 in its place gives the slab
     // of a ray parallel to it (all of it, or none, by where p lies), whatever its sign.
