@@ -2,6 +2,7 @@
 #include "tools/vkwater/budget_previews.hpp"
 
 #include "engine/core/errors.hpp"
+#include "passes/frame/frame_needs.hpp"
 #include "tools/metrics/metrics.hpp"
 
 #include <algorithm>
@@ -88,6 +89,16 @@ OffExcessPreviews measure_off_excess(Renderer& renderer, const Scene& scene, con
     }
     previews.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return previews;
+}
+
+budget::Quality measured_top(Renderer& renderer, const Scene& scene, uint32_t output_width, uint32_t output_height,
+                             uint32_t samples) {
+    const fg::FrameNeeds needs = decide_frame_needs(scene, double(output_width) / double(output_height));
+    budget::Quality top = budget::scene_quality(scene, needs, samples);
+    const OffExcessPreviews previews = measure_off_excess(renderer, scene, top, output_width, output_height);
+    top.measured_off = previews.measured;
+    if (previews.frames > 0) std::printf("%s\n", describe(previews).c_str());
+    return top;
 }
 
 std::string describe(const OffExcessPreviews& previews) {

@@ -41,6 +41,11 @@ struct OffExcessPreviews {
 OffExcessPreviews measure_off_excess(Renderer& renderer, const Scene& scene, const budget::Quality& top,
                                      uint32_t output_width, uint32_t output_height);
 
+// The budget's top for `scene` (the scene's own settings at `samples` per pixel, for the effects
+// its needs at the output's aspect run), with its on/off knobs measured by the previews above; prints
+// the previews' line. What `render --budget-ms` and the viewer start from.
+budget::Quality measured_top(Renderer& renderer, const Scene& scene, uint32_t output_width, uint32_t output_height,
+                             uint32_t samples);
 // One line for the console: "budget: turned off in 160x120 previews (4 frames, 1.2 s), the relMSE
 // each adds: the reflection lookup 0.138, ..." ("" when nothing was measured).
 std::string describe(const OffExcessPreviews& previews);

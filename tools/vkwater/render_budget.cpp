@@ -1,7 +1,6 @@
 // vkwater render --budget-ms (render_budget.hpp).
 #include "tools/vkwater/render_budget.hpp"
 
-#include "passes/frame/frame_needs.hpp"
 #include "passes/frame/supersampled_frame.hpp"
 #include "tools/vkwater/budget/budget_controller.hpp"
 #include "tools/vkwater/budget_previews.hpp"
@@ -31,12 +30,8 @@ std::string BudgetedSettings::describe(double budget_ms) const {
 BudgetedSettings choose_budgeted_settings(Renderer& renderer, Scene& scene, RenderOptions& options, double budget_ms,
                                           uint32_t samples) {
     const Scene original = scene;
-    const fg::FrameNeeds needs = decide_frame_needs(scene, double(options.width) / double(options.height));
     const uint32_t width = options.width, height = options.height;
-    budget::Quality top = budget::scene_quality(scene, needs, samples);
-    const OffExcessPreviews previews = measure_off_excess(renderer, scene, top, width, height);
-    top.measured_off = previews.measured;
-    if (previews.frames > 0) std::printf("%s\n", describe(previews).c_str());
+    const budget::Quality top = measured_top(renderer, scene, width, height, samples);
     budget::BudgetController controller(
         budget_ms, top,
         [&original, width, height](const budget::Quality& q) {

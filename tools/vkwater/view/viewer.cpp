@@ -19,13 +19,12 @@
 #include "passes/frame/supersampled_frame.hpp"
 #include "passes/present/present_graph.hpp"
 #include "passes/present/present_handoff.hpp"
-#include "tools/vkwater/budget/budget_controller.hpp"
-#include "tools/vkwater/budget_previews.hpp"
 #include "tools/vkwater/image_provenance.hpp"
 #include "tools/vkwater/view/camera_controller.hpp"
 #include "tools/vkwater/view/frame_stats.hpp"
 #include "tools/vkwater/view/parameter_panel.hpp"
 #include "tools/vkwater/view/stats_overlay.hpp"
+#include "tools/vkwater/view/view_budget.hpp"
 #include "tools/vkwater/view/view_script.hpp"
 #include "tools/vkwater/view/window_input.hpp"
 
@@ -115,17 +114,12 @@ private:
     void note_pass_list(const fg::FrameGraph& graph);
     double choose_budget_ms() const;
     void start_budget();
-    // The budget's top setting for the scene as loaded, at the viewer's camera, with its on/off
-    // knobs measured there in small previews (tools/vkwater/budget_previews.hpp).
-    budget::Quality measured_top();
-    // Once the camera has moved since the previews and then rested kPreviewRestFrames frames, the
-    // previews are made again where it rests: what a knob costs depends on what the camera sees.
+    // Where the camera has come to rest after moving, the budget's previews made again there.
     void refresh_budget_previews();
     // The frame's size: the window's, or the options' before it has one.
     VkExtent2D output_extent() const {
         return swapchain_ ? swapchain_->extent() : VkExtent2D{options_.width, options_.height};
     }
-    void apply_budget(RenderOptions& options);
     void feed_budget(double interval_ms);
     void budget_setting_changed();  // the budget chose another setting for the next frame
 
@@ -164,19 +158,9 @@ private:
     size_t next_command_ = 0;
 
     FrameStats stats_;
-    double budget_ms_ = 0.0;                            // 0: no budget
-    std::unique_ptr<budget::BudgetController> budget_;  // with a budget, for the scene as loaded
-    // What the budget turns, as the scene was loaded: it gives these back when it steps up.
-    budget::SceneKnobFields knobs_at_load_;
-    static constexpr uint64_t kPreviewRestFrames = 30;
-    struct CameraPose {
-        glm::dvec3 position{0.0}, target{0.0};
-        bool operator==(const CameraPose&) const = default;
-    };
-    CameraPose previews_pose_;  // where the budget's previews were made
-    CameraPose last_pose_;      // the camera's pose in the last frame,
-    uint64_t pose_since_ = 0;   // and the frame it has held it since
-    uint64_t frame_ = 0;        // frames shown so far: the number of the next one
+    double budget_ms_ = 0.0;              // 0: no budget
+    std::unique_ptr<ViewBudget> budget_;  // with a budget, for the scene as loaded
+    uint64_t frame_ = 0;                  // frames shown so far: the number of the next one
     uint64_t timing_due_ = FrameStats::kWarmupFrames;
     std::vector<std::string> pass_list_;           // the scene graph's living passes, last frame
     fg::FrameExecutor* scene_executor_ = nullptr;  // valid until the next prepare or reload
@@ -280,59 +264,24 @@ double Viewer::choose_budget_ms() const {
     return refresh > 0.0 ? refresh : kGpuBudgetMs;
 }
 
-budget::Quality Viewer::measured_top() {
+void Viewer::start_budget() {
     // At the viewer's camera: after a reload it keeps its pose unless the file's camera moved.
     scene_->camera.position = camera_.position();
     scene_->camera.target = camera_.target();
-    previews_pose_ = {camera_.position(), camera_.target()};
-    const fg::FrameNeeds needs = decide_frame_needs(*scene_, double(options_.width) / double(options_.height));
-    budget::Quality top = budget::scene_quality(*scene_, needs, most_samples_);
-    const VkExtent2D output = output_extent();
     vkDeviceWaitIdle(context_->device());  // the previews may replace what the frames in flight use
-    const cli::OffExcessPreviews previews =
-        cli::measure_off_excess(*renderer_, *scene_, top, output.width, output.height);
-    top.measured_off = previews.measured;
-    if (previews.frames > 0) std::printf("%s\n", cli::describe(previews).c_str());
-    return top;
-}
-
-void Viewer::start_budget() {
-    knobs_at_load_ = budget::knob_fields(*scene_);
-    const budget::Quality top = measured_top();
-    budget_ = std::make_unique<budget::BudgetController>(
-        budget_ms_, top,
-        [this](const budget::Quality& q) {
-            const VkExtent2D extent = output_extent();
-            return budget::cost_drivers(*scene_, q, extent.width, extent.height);
-        },
-        [this] { return double(output_extent().height); });
+    budget_ = std::make_unique<ViewBudget>(budget_ms_, *renderer_, *scene_, most_samples_,
+                                           [this] { return output_extent(); });
 }
 
 void Viewer::refresh_budget_previews() {
-    const CameraPose pose{camera_.position(), camera_.target()};
-    if (pose != last_pose_) {
-        last_pose_ = pose;
-        pose_since_ = frame_;
-    }
-    if (!budget_ || pose == previews_pose_ || frame_ < pose_since_ + kPreviewRestFrames) return;
-    // The scene's own knobs, as the previews and the top read them (the next frame sets the
-    // budget's setting again, as every frame does).
-    budget::restore_knob_fields(knobs_at_load_, *scene_);
-    if (budget_->retarget(measured_top())) budget_setting_changed();
+    if (!budget_ || !budget_->camera_rested(frame_)) return;
+    vkDeviceWaitIdle(context_->device());
+    if (budget_->measure_again()) budget_setting_changed();
     disturbed_ = true;  // this frame's interval holds the previews
 }
 
-void Viewer::apply_budget(RenderOptions& options) {
-    if (!budget_) return;
-    // The budget's knobs over the scene as loaded, every frame: the last frame's setting may have
-    // been lower. While the budget runs it owns these fields (a panel edit of one gives way to it).
-    budget::restore_knob_fields(knobs_at_load_, *scene_);
-    budget::apply_quality(budget_->current(), budget_->top(), *scene_);
-    options.render_scale = budget_->current().render_scale;
-}
-
 void Viewer::feed_budget(double interval_ms) {
-    if (budget_ && budget_->add_frame(interval_ms)) budget_setting_changed();
+    if (budget_ && budget_->controller().add_frame(interval_ms)) budget_setting_changed();
 }
 
 void Viewer::budget_setting_changed() {
@@ -342,7 +291,8 @@ void Viewer::budget_setting_changed() {
     if (options_.timing_every > 0) timing_due_ = std::min(timing_due_, frame_ + 3);
     if (cli::verbose()) {
         std::printf("frame %llu: budget chose %s (%s)\n", static_cast<unsigned long long>(frame_),
-                    budget::describe_quality(budget_->current()).c_str(), budget_->status().c_str());
+                    budget::describe_quality(budget_->controller().current()).c_str(),
+                    budget_->controller().status().c_str());
     }
 }
 
@@ -478,7 +428,9 @@ void Viewer::update_ui_and_camera(double wall_dt) {
         info.camera_position = camera_.position();
         info.camera_in_water = scene_->water && camera_.position().y < scene_->water->level;
         info.paused = controls_.paused;
-        if (budget_) info.budget = {budget_->status(), budget::describe_quality(budget_->current())};
+        if (budget_) {
+            info.budget = {budget_->controller().status(), budget::describe_quality(budget_->controller().current())};
+        }
         draw_stats_overlay(info);
     }
     imgui_->finish_frame();
@@ -534,7 +486,7 @@ fg::FrameExecutor& Viewer::prepare_scene_frame(uint32_t sub_frame) {
     options.render_scale = options_.render_scale;
     // The panel's switch (--temporal at start); a box filter jitters its sub-frames itself.
     options.temporal.enabled = controls_.temporal && !filter_.is_box();
-    apply_budget(options);
+    if (budget_) budget_->apply(options);
     // The hand-off image is imported: a new one (a new size) is a new graph.
     const FrameOutput output{[this, sub_frame](fg::FrameGraph& graph, fg::ImageHandle hdr) {
         if (filter_.is_box()) {
@@ -597,7 +549,7 @@ bool Viewer::render_frame() {
     const bool screenshot = !screenshots_.empty();
     const bool timing = options_.timing_every > 0 && frame_ >= timing_due_ && frame_ >= FrameStats::kWarmupFrames;
     // The frame's samples: the budget's choice holds for all of its sub-frames.
-    if (budget_) filter_ = pixel_filter_from_spp(budget_->current().samples);
+    if (budget_) filter_ = pixel_filter_from_spp(budget_->controller().current().samples);
     fg::FrameReport report = run_earlier_sub_frames(timing);
     fg::FrameExecutor& executor = prepare_scene_frame(filter_.samples - 1);
     note_pass_list(executor.graph());
@@ -636,7 +588,7 @@ bool Viewer::render_frame() {
             if (budget_) {
                 std::vector<fg::PassTime> passes = report.passes;
                 passes.push_back({"present", present_ms, 0});  // the window's own passes: a fixed cost
-                budget_->add_pass_times(passes);
+                budget_->controller().add_pass_times(passes);
             }
             timing_due_ = frame_ + options_.timing_every;
         }
@@ -704,10 +656,9 @@ void Viewer::run() {
     frames_->wait_all();
     std::printf("%s", stats_.summary(frame_).c_str());
     if (budget_) {
-        std::printf(
-            "%s; settings at exit: %s (%llu changes)\n", budget_->status().c_str(),
-            budget::describe_arguments(budget::quality_arguments(budget_->current(), budget_->top(), *scene_)).c_str(),
-            static_cast<unsigned long long>(budget_->changes()));
+        std::printf("%s; settings at exit: %s (%llu changes)\n", budget_->controller().status().c_str(),
+                    budget_->current_arguments().c_str(),
+                    static_cast<unsigned long long>(budget_->controller().changes()));
     }
     std::printf("frame graph device objects made %zu times; present mode %s\n", renderer_->realize_count(),
                 present_mode_name(swapchain_->mode()));
