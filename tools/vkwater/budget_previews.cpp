@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <numeric>
 #include <vector>
 
 namespace vkw::cli {
@@ -28,9 +27,8 @@ double excess(const ImageRGBA32F& off, const ImageRGBA32F& on) {
     double sum = 0.0;
     for (size_t i = 0; i < on.rgba.size(); i += 4) sum += double(on.rgba[i]) + on.rgba[i + 1] + on.rgba[i + 2];
     if (!(sum > 0.0)) return 0.0;
-    std::vector<size_t> pixels(size_t(on.width) * size_t(on.height));
-    std::iota(pixels.begin(), pixels.end(), size_t{0});
-    return metrics::rel_mse(metrics::rgb_view(off), metrics::rgb_view(on), pixels);
+    return metrics::rel_mse(metrics::rgb_view(off), metrics::rgb_view(on),
+                            metrics::counted_pixels(on.width, on.height, nullptr));
 }
 
 // The largest change of any channel of `off` against `on`, relative to `on`'s value: 0 where both
