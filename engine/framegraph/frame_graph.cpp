@@ -20,6 +20,18 @@ FrameGraph::FrameGraph(FrameNeeds needs) : needs_(std::move(needs)) {
 }
 
 void FrameGraph::clear(FrameNeeds needs) {
+    clear();
+    needs_ = std::move(needs);
+}
+
+FrameNeeds& FrameGraph::needs_to_decide() {
+    if (!passes_.empty() || !resources_.empty()) {
+        throw InternalError("frame graph: the needs are decided before the declaration's first pass or resource");
+    }
+    return needs_;
+}
+
+void FrameGraph::clear() {
     arena_.clear();  // the captures first: nothing else refers to them
     // Kept last to first, so that the next declaration, taking from the back, gives each pass the
     // storage of the pass at its place last time: most frames declare the same passes, and each
@@ -42,7 +54,6 @@ void FrameGraph::clear(FrameNeeds needs) {
     default_recording_ = RecordingKind::DynamicRendering;
     compiled_.reset();
     taken_over_from_ = nullptr;
-    needs_ = std::move(needs);
 }
 
 uint32_t FrameGraph::add_pass_decl(std::string_view name, PassKind kind) {

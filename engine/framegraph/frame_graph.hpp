@@ -242,6 +242,13 @@ public:
     // frame declared into a cleared graph allocates next to nothing (the renderer declares each
     // frame into the graph of two frames before).
     void clear(FrameNeeds needs);
+    // The same, keeping the graph's needs and their storage, for the next declaration to decide
+    // its own into them through needs_to_decide().
+    void clear();
+    // The needs of the declaration to come, to be decided in place of the last ones (the renderer
+    // decides every frame's needs into the strings of the graph's last reasons: fg::FrameNeeds::clear).
+    // Only before the declaration's first pass or resource.
+    FrameNeeds& needs_to_decide();
 
     // Data lives in the graph's arena until clear() or the graph's end, as does `execute`.
     template <class Data, class Setup, class Execute>

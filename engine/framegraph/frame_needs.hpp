@@ -47,9 +47,19 @@ struct FrameNeeds {
     // An effect with no decision is needed: passes are culled only for a stated reason.
     bool needs(EffectTag effect) const;
     const EffectDecision* find(EffectTag effect) const;
-    void decide(EffectTag effect, bool needed, std::string reason, bool forced = false);
+    void decide(EffectTag effect, bool needed, std::string_view reason, bool forced = false);
+    // The same, returning the decision's reason empty for the caller to write in place. A decision
+    // made again for the same effect replaces the earlier one.
+    std::string& decide_in_place(EffectTag effect, bool needed, bool forced = false);
+    // Forgets every decision but keeps their reasons' storage, which the next decisions write
+    // again: the renderer decides every frame's needs into the last one's, and the reasons' strings
+    // were most of the heap allocations of a frame's declaration.
+    void clear();
     // "needs:" and one line per decision: "  effect: on|off [(forced)] - reason".
     std::string describe() const;
+
+private:
+    std::vector<std::string> spare_reasons_;  // cleared, with their capacity
 };
 
 }  // namespace vkw::fg

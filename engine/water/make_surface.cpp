@@ -29,8 +29,18 @@ std::unique_ptr<WaterSurface> make_surface(const WaveSettings& settings, double 
 }
 
 double frame_amplitude_bound(const WaveSettings& settings, double level, double time) {
-    if (settings.model != WaveModel::FftOcean) return make_surface(settings, level, time)->max_amplitude();
+    if (!std::isfinite(level) || !std::isfinite(time)) {
+        throw InternalError("frame_amplitude_bound: the water level and the time must be finite");
+    }
     validate_waves(settings);
+    // What FlatSurface and WaveSumSurface::max_amplitude give, without building the surface: the
+    // renderer asks several times a frame, and each build allocated.
+    if (settings.model == WaveModel::Flat) return 0.0;
+    if (settings.model == WaveModel::Sum) {
+        double amplitude_sum = 0.0;
+        for (const WaveComponent& c : settings.components) amplitude_sum += c.amplitude;
+        return amplitude_sum;
+    }
     const std::shared_ptr<const FftOceanSpectrum> spectrum = shared_ocean_spectrum(settings.ocean, settings.seed);
     // The last spectrum's bound, kept with the spectrum itself (holding it keeps its address
     // from being reused by another).

@@ -14,13 +14,11 @@
 namespace vkw {
 namespace {
 
-// The reasons' text with their numbers, as snprintf would write it: std::to_chars is specified to
-// write a number as printf's %.Ng and %.Nf do, at a fraction of snprintf's cost (the needs are
-// decided every frame, and snprintf was an eighth of the frame's CPU share). The conversions
-// the reasons use: %.Ng, %.Nf and %%.
-std::string format(const char* pattern, std::initializer_list<double> values) {
-    std::string text;
-    text.reserve(std::strlen(pattern) + 16 * values.size());  // one allocation: most numbers are short
+// Appends a reason's text with its numbers, as snprintf would write it: std::to_chars is specified
+// to write a number as printf's %.Ng and %.Nf do, at a fraction of snprintf's cost (the needs are
+// decided every frame, and snprintf was an eighth of the frame's CPU share). The conversions the
+// reasons use: %.Ng, %.Nf and %%.
+void append_format(std::string& text, const char* pattern, std::initializer_list<double> values) {
     const double* value = values.begin();
     for (const char* c = pattern; *c != '\0'; ++c) {
         if (*c != '%') {
@@ -43,11 +41,7 @@ std::string format(const char* pattern, std::initializer_list<double> values) {
             text.append(digits, end.ptr);
         }
     }
-    return text;
 }
-
-std::string format(const char* pattern, double a) { return format(pattern, {a}); }
-std::string format(const char* pattern, double a, double b) { return format(pattern, {a, b}); }
 
 // True unless all eight corners of the box lie outside one clip plane (a conservative
 // frustum test: it may keep a box that is just outside a corner of the frustum).
@@ -67,21 +61,33 @@ bool box_may_be_visible(const glm::dmat4& view_proj, const glm::dvec3& lo, const
              all_outside([](const glm::dvec4& c) { return c.z > c.w; }));
 }
 
-// effects.<name>.mode: auto keeps the rule's decision, on/off force it.
-void decide(fg::FrameNeeds& needs, const Scene& scene, Effect effect, bool rule, const std::string& reason) {
-    switch (scene.effects[effect].mode) {
-        case EffectMode::Auto: needs.decide(effect, rule, reason); break;
-        case EffectMode::On:
-            needs.decide(effect, true,
-                         "effects." + std::string(effect_name(effect)) + ".mode = on (the rule says: " + reason + ")",
-                         true);
-            break;
-        case EffectMode::Off:
-            needs.decide(effect, false,
-                         "effects." + std::string(effect_name(effect)) + ".mode = off (the rule says: " + reason + ")",
-                         true);
-            break;
+// effects.<name>.mode: auto keeps the rule's decision, on/off force it. `write` appends the rule's
+// reason to the string it is given: the decision's own, written in place (FrameNeeds::clear).
+template <class Write>
+requires std::invocable<Write&, std::string&>
+void decide(fg::FrameNeeds& needs, const Scene& scene, Effect effect, bool rule, Write&& write) {
+    const EffectMode mode = scene.effects[effect].mode;
+    if (mode == EffectMode::Auto) {
+        write(needs.decide_in_place(effect, rule));
+        return;
     }
+    std::string& reason = needs.decide_in_place(effect, mode == EffectMode::On, /*forced=*/true);
+    reason += "effects.";
+    reason += effect_name(effect);
+    reason += mode == EffectMode::On ? ".mode = on" : ".mode = off";
+    reason += " (the rule says: ";
+    write(reason);
+    reason += ')';
+}
+
+void decide(fg::FrameNeeds& needs, const Scene& scene, Effect effect, bool rule, std::string_view reason) {
+    decide(needs, scene, effect, rule, [&](std::string& text) { text += reason; });
+}
+
+// A reason that is one pattern with its numbers (append_format).
+void decide(fg::FrameNeeds& needs, const Scene& scene, Effect effect, bool rule, const char* pattern,
+            std::initializer_list<double> values) {
+    decide(needs, scene, effect, rule, [&](std::string& text) { append_format(text, pattern, values); });
 }
 
 // The vertical span of the receivers whose box overlaps the water's horizontal extent
@@ -134,9 +140,12 @@ void decide_refraction_second_layer(fg::FrameNeeds& needs, const Scene& scene, c
         not_convex = not_convex || receiver.type == ReceiverType::Terrain || receiver.type == ReceiverType::Gltf;
     }
     const bool hidden = meshes >= 2 || not_convex;
+    if (meshes >= 2) {
+        return decide(needs, scene, Effect::RefractionSecondLayer, hidden,
+                      "%.0f receiver meshes lie on the refracted rays' side: one can hide another", {double(meshes)});
+    }
     decide(needs, scene, Effect::RefractionSecondLayer, hidden,
-           meshes >= 2   ? format("%.0f receiver meshes lie on the refracted rays' side: one can hide another", meshes)
-           : not_convex  ? "a receiver mesh that is not convex (a terrain or a glTF mesh) can hide part of itself"
+           not_convex    ? "a receiver mesh that is not convex (a terrain or a glTF mesh) can hide part of itself"
            : meshes == 1 ? "one convex receiver mesh on the refracted rays' side: it hides only its own back"
                          : "no receiver mesh on the refracted rays' side");
 }
@@ -156,21 +165,31 @@ void decide_scene_lookups(fg::FrameNeeds& needs, const Scene& scene, const Water
         water_visible && ((camera_may_be_above && objects_above) || (camera_may_be_below && objects_below));
     const bool refraction =
         water_visible && ((camera_may_be_above && objects_below) || (camera_may_be_below && objects_above));
-    const std::string sides = camera_may_be_above && camera_may_be_below ? "the near plane reaches into the waves"
-                              : camera_may_be_above                      ? "the camera is above the water"
-                                                                         : "the camera is in the water";
-    const std::string objects =
-        !span.any ? "no receiver mesh lies over the water (the floor and the sky are looked up exactly)"
-                  : format("receiver meshes over the water span y = %.3g to %.3g m", span.lowest, span.highest) +
-                        format(" (surface from %.3g to %.3g m)", trough, bounds.hi.y);
-    decide(needs, scene, Effect::Reflection, reflection,
-           !water_visible ? "the water is not in view"
-           : reflection   ? sides + "; " + objects + ": some lie on the reflected rays' side"
-                          : sides + "; " + objects + ": nothing but the floor and sky on the reflected rays' side");
-    decide(needs, scene, Effect::Refraction, refraction,
-           !water_visible ? "the water is not in view"
-           : refraction   ? sides + "; " + objects + ": some lie on the refracted rays' side"
-                          : sides + "; " + objects + ": nothing but the floor and sky on the refracted rays' side");
+    // Both views' reasons: where the camera is, what lies over the water, and what that gives.
+    const auto reason = [&](bool view, const char* rays) {
+        return [&, view, rays](std::string& text) {
+            if (!water_visible) {
+                text += "the water is not in view";
+                return;
+            }
+            text += camera_may_be_above && camera_may_be_below ? "the near plane reaches into the waves"
+                    : camera_may_be_above                      ? "the camera is above the water"
+                                                               : "the camera is in the water";
+            text += "; ";
+            if (!span.any) {
+                text += "no receiver mesh lies over the water (the floor and the sky are looked up exactly)";
+            } else {
+                append_format(text,
+                              "receiver meshes over the water span y = %.3g to %.3g m (surface from %.3g to %.3g m)",
+                              {span.lowest, span.highest, trough, bounds.hi.y});
+            }
+            text += view ? ": some lie on the " : ": nothing but the floor and sky on the ";
+            text += rays;
+            text += " rays' side";
+        };
+    };
+    decide(needs, scene, Effect::Reflection, reflection, reason(reflection, "reflected"));
+    decide(needs, scene, Effect::Refraction, refraction, reason(refraction, "refracted"));
     decide_refraction_second_layer(needs, scene, bounds, trough, camera_may_be_above, camera_may_be_below);
 }
 
@@ -186,21 +205,30 @@ void decide_godrays(fg::FrameNeeds& needs, const Scene& scene, const WaterBounds
     const glm::dvec3& sigma_s = scene.medium.sigma_s;
     const double most = std::max({sigma_s.x, sigma_s.y, sigma_s.z});
     const bool scatters = most > 0.0;
-    const auto rule = [&](bool needed, const std::string& reason) {
-        decide(needs, scene, Effect::VolumeCaustics, needed, reason);
+    const auto rule = [&](bool needed, const auto& write) {
+        decide(needs, scene, Effect::VolumeCaustics, needed, write);
+    };
+    // The reason of a rule that keeps them: the light and the medium, then why.
+    const auto lit = [&](std::string& text) {
+        append_format(text, "the sun is up, the water is in view and scatters (sigma_s up to %.3g 1/m); ", {most});
     };
     if (!water_visible) return rule(false, "the water is not in view");
     if (!sun_up) return rule(false, "the sun is below the horizon");
     if (!scatters) return rule(false, "the medium does not scatter (sigma_s = 0 in every channel)");
-    const std::string lit = format("the sun is up, the water is in view and scatters (sigma_s up to %.3g 1/m)", most);
-    if (receivers_over_water(scene, bounds).any)
-        return rule(true, lit + "; receiver meshes over the water shadow the beams");
+    if (receivers_over_water(scene, bounds).any) {
+        return rule(true, [&](std::string& text) {
+            lit(text);
+            text += "receiver meshes over the water shadow the beams";
+        });
+    }
     const Water& water = *scene.water;
     const double depth = water.level - water_bottom(scene);
     const std::optional<double>& max_depth = scene.effects.godrays.max_depth;
     if (max_depth && *max_depth < depth) {
-        return rule(true,
-                    lit + format("; effects.godrays.max_depth = %.3g m stops the beams above the bottom", *max_depth));
+        return rule(true, [&](std::string& text) {
+            lit(text);
+            append_format(text, "effects.godrays.max_depth = %.3g m stops the beams above the bottom", {*max_depth});
+        });
     }
     if (bounds.hi.y == water.level) {
         return rule(false,
@@ -208,24 +236,42 @@ void decide_godrays(fg::FrameNeeds& needs, const Scene& scene, const WaterBounds
     }
     // The FFT ocean's CPU surface would cost its FFTs to build, and its fields have no slope bound.
     if (water.waves.model == WaveModel::FftOcean) {
-        return rule(true, lit + "; the waves' beams: the FFT ocean gives no bound on its slope or curvature");
+        return rule(true, [&](std::string& text) {
+            lit(text);
+            text += "the waves' beams: the FFT ocean gives no bound on its slope or curvature";
+        });
     }
     const auto surface = make_surface(water.waves, water.level, water.time);
     const glm::dvec3 sigma_t = scene.medium.sigma_t();
     const BeamModulationBound bound =
         beam_modulation_bound({scene.sun.direction, water.ior, surface->max_amplitude(), surface->max_slope(),
                                surface->max_curvature(), depth, std::max({sigma_t.x, sigma_t.y, sigma_t.z})});
-    if (!bound.bounded) return rule(true, lit + "; the waves' beams: " + bound.unbounded_because);
-    const double change = bound.largest_relative_change();
-    const std::string range =
-        format("the waves keep the beams' irradiance within %.4g to %.4g of flat water's", bound.low, bound.high) +
-        format(" down to %.3g m, an in-scatter change of at most %.3g%%", depth, 100.0 * change);
-    if (change <= kGodraysInvisibleChange) {
-        return rule(false, range + format(" <= %.3g%% (no preview pixel moves by half a step): the analytic "
-                                          "in-scatter stands in",
-                                          100.0 * kGodraysInvisibleChange));
+    if (!bound.bounded) {
+        return rule(true, [&](std::string& text) {
+            lit(text);
+            text += "the waves' beams: ";
+            text += bound.unbounded_because;
+        });
     }
-    rule(true, lit + "; " + range + format(" > %.3g%%", 100.0 * kGodraysInvisibleChange));
+    const double change = bound.largest_relative_change();
+    const auto range = [&](std::string& text) {
+        append_format(text,
+                      "the waves keep the beams' irradiance within %.4g to %.4g of flat water's down to %.3g m, an "
+                      "in-scatter change of at most %.3g%%",
+                      {bound.low, bound.high, depth, 100.0 * change});
+    };
+    if (change <= kGodraysInvisibleChange) {
+        return rule(false, [&](std::string& text) {
+            range(text);
+            append_format(text, " <= %.3g%% (no preview pixel moves by half a step): the analytic in-scatter stands in",
+                          {100.0 * kGodraysInvisibleChange});
+        });
+    }
+    rule(true, [&](std::string& text) {
+        lit(text);
+        range(text);
+        append_format(text, " > %.3g%%", {100.0 * kGodraysInvisibleChange});
+    });
 }
 
 }  // namespace
@@ -253,6 +299,12 @@ std::array<glm::dvec3, 4> near_plane_corners(const Camera& camera, double aspect
 
 fg::FrameNeeds decide_frame_needs(const Scene& scene, double aspect) {
     fg::FrameNeeds needs;
+    decide_frame_needs(scene, aspect, needs);
+    return needs;
+}
+
+void decide_frame_needs(const Scene& scene, double aspect, fg::FrameNeeds& needs) {
+    needs.clear();
     if (!scene.water) {
         decide(needs, scene, Effect::Water, false, "the scene has no water");
         decide(needs, scene, Effect::UnderwaterView, false, "the scene has no water");
@@ -262,14 +314,17 @@ fg::FrameNeeds decide_frame_needs(const Scene& scene, double aspect) {
         decide(needs, scene, Effect::Refraction, false, "the scene has no water");
         decide(needs, scene, Effect::RefractionSecondLayer, false, "the scene has no water");
         decide(needs, scene, Effect::VolumeCaustics, false, "the scene has no water");
-        return needs;
+        return;
     }
     const WaterBounds bounds = water_bounds(scene);
     const glm::dmat4 view_proj = projection_matrix(scene.camera, aspect) * view_matrix(scene.camera);
     const bool water_visible = box_may_be_visible(view_proj, bounds.lo, bounds.hi);
-    decide(needs, scene, Effect::Water, water_visible,
-           water_visible ? format("the water's box (y from %.3g to %.3g m) is in the view", bounds.lo.y, bounds.hi.y)
-                         : "the water's box lies outside the view frustum");
+    if (water_visible) {
+        decide(needs, scene, Effect::Water, true, "the water's box (y from %.3g to %.3g m) is in the view",
+               {bounds.lo.y, bounds.hi.y});
+    } else {
+        decide(needs, scene, Effect::Water, false, "the water's box lies outside the view frustum");
+    }
 
     // Some pixel's ray starts in the water only if the near-plane rectangle reaches
     // below the highest crest inside the water's extent (and above its bottom).
@@ -291,16 +346,25 @@ fg::FrameNeeds decide_frame_needs(const Scene& scene, double aspect) {
     // Flat water: the stand-in (with the sun shadow map along the refracted beam) is exact.
     const bool flat_stand_in = bounds.hi.y == scene.water->level && scene.effects.caustics.analytic_flat;
     decide(needs, scene, Effect::SurfaceCaustics,
-           water_visible && sun_up && (floor_under || mesh_under) && !flat_stand_in,
-           !water_visible                ? "the water is not in view"
-           : !sun_up                     ? "the sun is below the horizon"
-           : !floor_under && !mesh_under ? "the floor and every receiver mesh lie above the highest crest"
-           : flat_stand_in ? "the water is flat: the flat-surface stand-in is exact (effects.caustics.analytic_flat)"
-           : floor_under   ? format("the sun is up and the floor (y = %.3g m) lies under the water (crest %.3g m)",
-                                    scene.floor.height, bounds.hi.y)
-                           : format("the sun is up and receiver meshes reach under the water (down to y = %.3g m, "
-                                      "crest %.3g m)",
-                                    meshes.lowest, bounds.hi.y));
+           water_visible && sun_up && (floor_under || mesh_under) && !flat_stand_in, [&](std::string& text) {
+               if (!water_visible) {
+                   text += "the water is not in view";
+               } else if (!sun_up) {
+                   text += "the sun is below the horizon";
+               } else if (!floor_under && !mesh_under) {
+                   text += "the floor and every receiver mesh lie above the highest crest";
+               } else if (flat_stand_in) {
+                   text += "the water is flat: the flat-surface stand-in is exact (effects.caustics.analytic_flat)";
+               } else if (floor_under) {
+                   append_format(text, "the sun is up and the floor (y = %.3g m) lies under the water (crest %.3g m)",
+                                 {scene.floor.height, bounds.hi.y});
+               } else {
+                   append_format(text,
+                                 "the sun is up and receiver meshes reach under the water (down to y = %.3g m, crest "
+                                 "%.3g m)",
+                                 {meshes.lowest, bounds.hi.y});
+               }
+           });
     // The blur feeds nothing but the light-space caustic map: needed when the map is and its radius
     // is not 0.
     const fg::EffectDecision* caustics = needs.find(Effect::SurfaceCaustics);
@@ -308,21 +372,26 @@ fg::FrameNeeds decide_frame_needs(const Scene& scene, double aspect) {
     const double blur_radius = scene.effects.caustic_blur.radius;
     const bool camera_space = scene.effects.caustics.splat == CausticSplat::CameraSpace;
     decide(needs, scene, Effect::CausticBlur, caustics_run && !camera_space && blur_radius > 0.0,
-           !caustics_run       ? "the caustic passes do not run"
-           : camera_space      ? "the caustics are splatted in camera space (effects.caustics.splat): no map to blur"
-           : blur_radius > 0.0 ? format("the caustic map runs and caustic_blur.radius = %.3g texels", blur_radius)
-                               : "caustic_blur.radius = 0 (no blur)");
+           [&](std::string& text) {
+               if (!caustics_run) {
+                   text += "the caustic passes do not run";
+               } else if (camera_space) {
+                   text += "the caustics are splatted in camera space (effects.caustics.splat): no map to blur";
+               } else if (blur_radius > 0.0) {
+                   append_format(text, "the caustic map runs and caustic_blur.radius = %.3g texels", {blur_radius});
+               } else {
+                   text += "caustic_blur.radius = 0 (no blur)";
+               }
+           });
     decide_godrays(needs, scene, bounds, water_visible, sun_up);
 
     const bool underwater = over_water && lowest < bounds.hi.y && highest > bounds.lo.y;
-    decide(
-        needs, scene, Effect::UnderwaterView, underwater,
-        underwater
-            ? format("the near plane reaches y = %.3g m, below the highest crest at %.3g m", lowest, bounds.hi.y)
-            : format("the near plane stays above y = %.3g m, over the highest crest at %.3g m", lowest, bounds.hi.y));
+    decide(needs, scene, Effect::UnderwaterView, underwater,
+           underwater ? "the near plane reaches y = %.3g m, below the highest crest at %.3g m"
+                      : "the near plane stays above y = %.3g m, over the highest crest at %.3g m",
+           {lowest, bounds.hi.y});
     const double trough = 2.0 * scene.water->level - bounds.hi.y;
     decide_scene_lookups(needs, scene, bounds, water_visible, !over_water || highest >= trough, underwater);
-    return needs;
 }
 
 }  // namespace vkw

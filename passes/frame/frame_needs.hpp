@@ -16,6 +16,10 @@
 namespace vkw {
 
 fg::FrameNeeds decide_frame_needs(const Scene& scene, double aspect);
+// The same into `needs`, cleared first: decisions made again in the same order write their reasons
+// into the strings the last ones left (fg::FrameNeeds::clear), which is how the renderer decides
+// every frame's needs without allocating for them.
+void decide_frame_needs(const Scene& scene, double aspect, fg::FrameNeeds& needs);
 
 // The bounds the rules use, exposed for tests.
 struct WaterBounds {

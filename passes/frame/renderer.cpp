@@ -555,7 +555,17 @@ Renderer::CompiledFrame& Renderer::prepare_graph(const Scene& scene, const Rende
     // The CPU's share of the frame, timed from the needs' decision to the compiled graph: the
     // decision runs every frame too (it reads the camera and the waves' bounds).
     const auto declare_start = std::chrono::steady_clock::now();
-    fg::FrameNeeds needs = decide_frame_needs(scene, double(width) / double(height));
+    // The graph is declared and compiled every frame (what its passes capture, the clock and
+    // every setting, is new each frame), in the storage of the graph before the last; the device
+    // objects are made only when the compiled graph's physical signature changes.
+    std::unique_ptr<fg::FrameGraph> graph = std::move(spare_graph_);
+    if (graph) {
+        graph->clear();
+    } else {
+        graph = std::make_unique<fg::FrameGraph>();
+    }
+    decide_frame_needs(scene, double(width) / double(height), graph->needs_to_decide());
+    const fg::FrameNeeds& needs = graph->needs();
     *constants_ = make_frame_constants(scene, width, height);
     // Counted once (docs/model.md section 1): the godray passes, when they run, are the
     // in-scatter of sunlight, and the shading's analytic in-scatter is switched off. (An
@@ -566,15 +576,6 @@ Renderer::CompiledFrame& Renderer::prepare_graph(const Scene& scene, const Rende
     const passes::ReceiverMeshes* receivers = receiver_meshes(scene);
     const Readback& readback = readback_targets(options, output != nullptr);
 
-    // The graph is declared and compiled every frame (what its passes capture, the clock and
-    // every setting, is new each frame); the device objects are made only when the compiled
-    // graph's physical signature changes.
-    std::unique_ptr<fg::FrameGraph> graph = std::move(spare_graph_);
-    if (graph) {
-        graph->clear(std::move(needs));
-    } else {
-        graph = std::make_unique<fg::FrameGraph>(std::move(needs));
-    }
     graph->set_default_recording(options.recording);
     CausticMapCarrying carry;
     carry.mode = options.caustic_map_carry;
@@ -605,7 +606,7 @@ Renderer::CompiledFrame& Renderer::prepare_graph(const Scene& scene, const Rende
         compiled->executor->adopt(*graph);
         // The previous frame's declaration goes (its storage stays for the next); its objects stay.
         std::swap(compiled->graph, graph);
-        graph->clear({});  // what its passes captured goes now, as when it was destroyed
+        graph->clear();  // what its passes captured goes now, as when it was destroyed
         spare_graph_ = std::move(graph);
         return *compiled;
     }

@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
+#include <vector>
 
 namespace vkw {
 namespace {
@@ -108,6 +110,29 @@ TEST(frame_needs, TheSecondLayerOfTheRefractionViewWhereOneReceiverCanHideAnothe
         R"({"type": "sphere", "radius": 0.3, "translation": [0, 1, 0]}, {"type": "sphere", "radius": 0.3, "translation": [1, 1, 0]})");
     EXPECT_FALSE(dry.needed);
     EXPECT_NE(dry.reason.find("not drawn"), std::string::npos) << dry.reason;
+}
+
+TEST(frame_needs, DecidedIntoTheLastFramesNeedsTheyEqualAFreshDecision) {
+    // The renderer decides each frame's needs into the strings of the last frame's reasons
+    // (fg::FrameNeeds::clear). Whatever the last frame decided, the new decisions, their order and
+    // their reasons must be a fresh decision's: every built-in scene after every other, with a
+    // mode forced and without.
+    const std::filesystem::path scenes = std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes";
+    std::vector<Scene> all;
+    for (const char* name : {"pool.json", "lake.json", "ocean.json", "box.json", "calm.json", "underwater.json",
+                             "showcase/shore.json", "showcase/lagoon.json"}) {
+        all.push_back(load_scene(scenes / name));
+        all.push_back(load_scene(scenes / name, {"effects.reflection.mode=on", "effects.godrays.mode=off"}));
+    }
+    all.push_back(scene_with(R"("position": [0, 2, 5], "target": [0, 0, 0])", {"water=null"}));
+    for (const Scene& last : all) {
+        for (const Scene& next : all) {
+            fg::FrameNeeds needs = decide_frame_needs(last, 4.0 / 3.0);
+            decide_frame_needs(next, 4.0 / 3.0, needs);
+            EXPECT_EQ(needs.describe(), decide_frame_needs(next, 4.0 / 3.0).describe())
+                << next.source << " decided after " << last.source;
+        }
+    }
 }
 
 TEST(frame_needs, WaterBoundsHoldTheCrestsAndTheBottom) {

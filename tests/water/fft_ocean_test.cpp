@@ -224,14 +224,29 @@ TEST(water_ocean, TheFramesAmplitudeBoundIsTheSpectrumsAllTimeOneAndHoldsAtEvery
     waves.seed = 7;
     EXPECT_EQ(frame_amplitude_bound(waves, 0.0, 0.0), shared_ocean_spectrum(waves.ocean, 7)->amplitude_bound());
     EXPECT_NE(frame_amplitude_bound(waves, 0.0, 0.0), all_time);
-    // The other models give their surface's own bound.
+    // The other models give their surface's own bound, bit for bit, without building it: sines,
+    // sines with a Gerstner term, and flat water (whose components are not read).
     WaveSettings sines;
     sines.model = WaveModel::Sum;
     WaveComponent sine;
     sine.amplitude = 0.05;
     sine.wavelength = 2.0;
+    WaveComponent gerstner = sine;
+    gerstner.amplitude = 0.0301;
+    gerstner.wavelength = 3.1;
+    gerstner.steepness = 0.4;
     sines.components = {sine};
     EXPECT_EQ(frame_amplitude_bound(sines, 0.0, 2.0), make_surface(sines, 0.0, 2.0)->max_amplitude());
+    sines.components = {sine, gerstner, sine};
+    EXPECT_EQ(frame_amplitude_bound(sines, 0.3, 2.0), make_surface(sines, 0.3, 2.0)->max_amplitude());
+    WaveSettings flat = sines;
+    flat.model = WaveModel::Flat;
+    EXPECT_EQ(frame_amplitude_bound(flat, 0.3, 2.0), 0.0);
+    EXPECT_EQ(make_surface(flat, 0.3, 2.0)->max_amplitude(), 0.0);
+    // Bad waves are refused as make_surface refuses them.
+    sines.components[1].steepness = 1.2;  // the steepness sums above 1: the waves fold
+    EXPECT_THROW(frame_amplitude_bound(sines, 0.0, 2.0), UserError);
+    EXPECT_THROW(make_surface(sines, 0.0, 2.0), UserError);
 }
 
 TEST(water_ocean, BadSettingsAreRefusedNamingTheField) {

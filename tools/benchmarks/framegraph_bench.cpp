@@ -268,17 +268,18 @@ int main(int argc, char** argv) {
     const auto declare_pool = [&](bool compile, bool take_over = true) {
         std::unique_ptr<fg::FrameGraph> graph = std::move(spare);
         if (graph) {
-            graph->clear(decide_frame_needs(pool_scene, aspect));
+            graph->clear();
         } else {
-            graph = std::make_unique<fg::FrameGraph>(decide_frame_needs(pool_scene, aspect));
+            graph = std::make_unique<fg::FrameGraph>();
         }
+        decide_frame_needs(pool_scene, aspect, graph->needs_to_decide());
         build_frame_graph(*graph, pool_scene, &constants, kWidth, kHeight, VK_NULL_HANDLE, nullptr, nullptr, nullptr,
                           {}, &read_regions);
         if (compile) {
             graph->compile(kWidth, kHeight, take_over ? last.get() : nullptr);
             std::swap(last, graph);
         }
-        if (graph) graph->clear({});
+        if (graph) graph->clear();
         spare = std::move(graph);
     };
     const double pool_declare_ms = median_ms(runs, [&] { declare_pool(false); });
@@ -301,6 +302,11 @@ int main(int argc, char** argv) {
     std::printf("| pool: heap allocations of one such frame, declared into a new graph | %zu |\n", fresh_allocations);
     std::printf("| pool: the same, declared into the storage of the graph before the last | %zu |\n",
                 recycled_allocations);
+    fg::FrameNeeds last_needs = decide_frame_needs(pool_scene, aspect);
+    const size_t before_needs = heap_allocations.load();
+    decide_frame_needs(pool_scene, aspect, last_needs);
+    std::printf("| pool: heap allocations of its needs alone, decided into the last frame's | %zu |\n",
+                heap_allocations.load() - before_needs);
     if (cpu_only) return 0;
 
     Context context(ContextOptions{});
@@ -340,16 +346,30 @@ int main(int argc, char** argv) {
         // Whether the renderer's figure is the caches or the code: pool's needs, declaration and
         // compilation timed right after an 800x600 frame that llvmpipe's threads rendered, then the
         // same again at once, in the same process.
-        std::vector<double> after_frame, again;
-        for (int frame = 0; frame < 9; ++frame) {
+        // Each step also alone right after its own frame, to see which of them the cold caches slow.
+        std::vector<double> after_frame, again, needs_after_frame, declaration_after_frame;
+        fg::FrameNeeds needs_storage = decide_frame_needs(pool_scene, aspect);
+        for (int frame = 0; frame < 27; ++frame) {
             renderer.render(pool_scene, {kWidth, kHeight, false, fg::TimingMode::None});
-            if (frame == 0) continue;  // it creates
-            after_frame.push_back(median_ms(1, [&] { declare_pool(true); }));
-            again.push_back(median_ms(1, [&] { declare_pool(true); }));
+            if (frame < 3) continue;  // it creates
+            switch (frame % 3) {
+                case 0:
+                    after_frame.push_back(median_ms(1, [&] { declare_pool(true); }));
+                    again.push_back(median_ms(1, [&] { declare_pool(true); }));
+                    break;
+                case 1:
+                    needs_after_frame.push_back(
+                        median_ms(1, [&] { decide_frame_needs(pool_scene, aspect, needs_storage); }));
+                    break;
+                case 2: declaration_after_frame.push_back(median_ms(1, [&] { declare_pool(false); })); break;
+            }
         }
         std::printf("| pool's needs, declaration, compilation right after an 800x600 frame | %.3f ms |\n",
                     median(after_frame));
         std::printf("| the same again at once | %.3f ms |\n", median(again));
+        std::printf("| pool's needs alone right after an 800x600 frame | %.3f ms |\n", median(needs_after_frame));
+        std::printf("| pool's needs and declaration (no compilation) right after an 800x600 frame | %.3f ms |\n",
+                    median(declaration_after_frame));
     }
     vkDestroyCommandPool(context.device(), pool, nullptr);
     return 0;
