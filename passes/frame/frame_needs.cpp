@@ -6,10 +6,11 @@
 
 #include <algorithm>
 #include <charconv>
-#include <cstring>
+#include <concepts>
 #include <initializer_list>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace vkw {
 namespace {
