@@ -26,7 +26,7 @@ budget::Quality top_of(const Scene& scene) {
 // reflection lookup off +0.135684, refraction lookup off +0.00972201. The previews compare with the
 // frame that has both lookups rather than with the reference, whose own distance from that frame
 // (relMSE 0.00041 at 400x300) is under a twentieth of either, and sample the box's edges with
-// 2.5 times fewer rows; they measured 0.138 and 0.00877 (docs/performance.md "The on/off knobs
+// 2.5 times fewer rows; they measured 0.138 and 0.00877 (docs/performance-log.md "The on/off knobs
 // measured on the scene"). 25% either way holds both and keeps their order, an order the camera's rule gets wrong.
 TEST_F(BudgetPreviews, BoxLosesWhatTheSweepMeasuredWithEachLookupOff) {
     const Scene box = load_scene(kScenes / "box.json");
@@ -46,7 +46,7 @@ TEST_F(BudgetPreviews, BoxLosesWhatTheSweepMeasuredWithEachLookupOff) {
 }
 
 // The ocean's floor lies 30 m down in coastal water: without its caustics no preview pixel changes
-// visibly (docs/performance.md "The on/off knobs measured on the scene"), so the budget may turn
+// visibly (docs/performance-log.md "The on/off knobs measured on the scene"), so the budget may turn
 // them off. Pool's show (a pixel of its floor changes by far more than half a preview step), and
 // they stay on at every candidate.
 TEST_F(BudgetPreviews, TheCausticsGoOffOnlyWhereNoPreviewPixelShowsThem) {

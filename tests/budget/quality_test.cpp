@@ -205,7 +205,7 @@ TEST(BudgetQuality, TheSceneLookupsTurnOffOneAtEachStepsThenBoth) {
 // Where the scene's previews measured both lookups, the one whose loss they measured as the smaller
 // goes first, whichever side the camera is on: box, seen from above, loses 0.138 without its
 // reflected rays' lookup (its red box in the water) and 0.0088 without its refracted rays'
-// (docs/performance.md "The on/off knobs measured on the scene"), so its refracted rays' lookup goes first. Equal
+// (docs/performance-log.md "The on/off knobs measured on the scene"), so its refracted rays' lookup goes first. Equal
 // losses, or one not measured, leave the camera's rule.
 TEST(BudgetQuality, TheSceneLookupWhosePreviewsLostLessGoesFirst) {
     const Scene box = load_scene(std::filesystem::path(VKWATER_SOURCE_DIR) / "scenes/box.json");

@@ -2,7 +2,7 @@
 # second_layer_parts.sh [ROUNDS]
 #
 # Where the water pass's extra time with the refraction view's second layer goes, on lake at
-# 800x600 (docs/performance.md, "The refraction view's second layer"). Shader-only variants of the
+# 800x600 (docs/performance-log.md, "The refraction view's second layer"). Shader-only variants of the
 # water's fragment shader (water_shader_variant.sh), each with the layer drawn, against the layer
 # off (`--set effects.refraction_second_layer.mode=off`, the shader as built):
 #   - as built: the retried rays marched through the peeled view;

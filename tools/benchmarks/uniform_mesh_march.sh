@@ -10,7 +10,7 @@
 # First the error against the committed point reference at 400x300 (tests/references/pool.exr,
 # whole image and caustic layer) at mesh resolutions 256 (pool's default), 128, 96 and 64; then the
 # water pass at 400x300 and 800x600, interleaved, the median of ROUNDS (default 5) rounds, in
-# calibration passes of the same frame. Prints two Markdown tables (docs/performance.md, "A coarser
+# calibration passes of the same frame. Prints two Markdown tables (docs/performance-log.md, "A coarser
 # uniform mesh with the march").
 set -euo pipefail
 cd "$(dirname "$0")/../.."

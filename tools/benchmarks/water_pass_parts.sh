@@ -11,7 +11,7 @@
 #   constant       the fragment shader writes the mesh's normal and nothing else: what is left is
 #                  the mesh's vertices, its triangles' setup and rasterisation.
 # The variants change the picture; only their times are read. Prints a Markdown table
-# (docs/performance.md, "Where the water pass's time goes").
+# (docs/performance-log.md, "Where the water pass's time goes").
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source "$(dirname "$0")/provenance.sh"

@@ -8,7 +8,7 @@
 // term (Quality::measured_off). Against the committed sweep (docs/sweeps/budget_error_terms.csv,
 // 400x300 against the references) these previews at 160x120 measured 0.67 to 1.15 of the sweep's
 // excess for every such term the sweep put above 0.0005, and 0 where it measured 0
-// (tools/benchmarks/budget_previews.sh; docs/performance.md "The on/off knobs measured on the scene"): what these
+// (tools/benchmarks/budget_previews.sh; docs/performance-log.md "The on/off knobs measured on the scene"): what these
 // knobs lose is whole objects in the water, which a small frame resolves about as a large one does.
 //
 // The knobs: the reflected rays' and the refracted rays' scene lookups, the refraction view's

@@ -23,7 +23,7 @@ struct KnownPass {
 // at 800x600 and 400x300 with mesh resolutions 256 and 64; the lookup steps from lake's water
 // pass at max_steps 64, 16 and 8; the photons' from pool with the adaptive kernel at map scales
 // 0.5, 1 and 2 and the bilinear one at 1; the kept map's copy from pool at --spp 4
-// (docs/performance.md "The frame-time budget"). Only their
+// (docs/performance-log.md "The frame-time budget"). Only their
 // ratios matter once a frame has been timed; a GPU refits every factor.
 // A pass of the light-space photon map, which the first sub-frame makes for all of them.
 PassFormula once(std::vector<std::pair<Driver, double>> ns_per_unit) {
@@ -38,12 +38,12 @@ const std::vector<KnownPass>& known_passes() {
     using D = Driver;
     static const std::vector<KnownPass> table = {
         // With the second layer the water pass costs lake 1.31-1.42 times as much (its refracted
-        // rays checked against the layer, a few marched through it; docs/performance.md "The
+        // rays checked against the layer, a few marched through it; docs/performance-log.md "The
         // refraction view's second layer"): about 150 ns a pixel on lake's prior of 200 ms. Each
         // scene lookup costs about 200 ns a pixel before its steps: lake's, the showcase pool's
         // and the lagoon's water passes at their cheapest settings (200x150) took 17.7, 28 and 22
         // ms more with both lookups than without, 190-230 ns a pixel and lookup at the factors
-        // their passes without lookups fitted (docs/performance.md "The scene lookups turned off").
+        // their passes without lookups fitted (docs/performance-log.md "The scene lookups turned off").
         {"water",
          {{{D::Pixels, 130.0},
            {D::MeshTriangles, 300.0},
@@ -56,7 +56,7 @@ const std::vector<KnownPass>& known_passes() {
         {"floor", {{{D::Pixels, 5.0}}}},
         // The views of the receiver meshes: their triangles' rates from lake's cheapest setting at
         // 200x150 with its bed at 128, 64 and 32 cells per side, 37,500, 12,900 and 6,800 triangles
-        // (docs/performance.md "The frame-time budget"); the second layer draws what the refraction
+        // (docs/performance-log.md "The frame-time budget"); the second layer draws what the refraction
         // view draws.
         {"receivers", {{{D::Pixels, 40.0}, {D::ReceiverTriangles, 340.0}}}},
         {"refraction view",
@@ -77,7 +77,7 @@ const std::vector<KnownPass>& known_passes() {
         {"water mesh (ocean grid)", {{{D::MeshVertices, 21.0}}}},
         // A hat photon's 4 neighbours' rays cost 95 ns when each was traced for it; shared along
         // the column it walks and with the lanes beside it, about a quarter of that (pool's photon
-        // pass went from 243 to 200 ms, docs/performance.md "The photons' neighbours shared").
+        // pass went from 243 to 200 ms, docs/performance-log.md "The photons' neighbours shared").
         {"caustic photons", once({{D::Photons, 10.0}, {D::HatPhotons, 24.0}, {D::PhotonTaps, 16.0}})},
         {"caustic flux clear", once({{D::MapTexels, 2.3}})},
         {"caustic resolve", once({{D::MapTexels, 18.0}})},

@@ -2,7 +2,7 @@
 // device, fitted to the frames it has timed.
 //
 // Each pass's cost is a formula in what drives it (pixels, triangles, photons, map texels, beams)
-// with prior rates measured on lavapipe (2 cores, pool at 800x600; docs/performance.md "The
+// with prior rates measured on lavapipe (2 cores, pool at 800x600; docs/performance-log.md "The
 // frame-time budget"), times a factor fitted to that pass's measured time: on another device or
 // in another scene the factor absorbs the difference (lake's water pass costs about five times
 // pool's per pixel; a GPU about a hundredth of lavapipe). A pass the table does not know costs

@@ -132,7 +132,7 @@ ErrorPrediction predict_error(const Quality& quality, const Quality& top, double
     const double output = output_rows / kErrorTableRows;
     // Below full scale the frame is stretched to the output after its samples are averaged, and
     // the samples count as no more rows: measured, 4 samples at scales 0.75 and 0.5 sampled pool
-    // and lake as 1.1-1.3 times the rows, not 2 (docs/performance.md "The frame-time budget").
+    // and lake as 1.1-1.3 times the rows, not 2 (docs/performance-log.md "The frame-time budget").
     const auto sampled_rows = [output](const Quality& q) {
         return q.render_scale * (q.render_scale < 1.0 ? 1.0 : std::sqrt(double(q.samples))) * output;
     };

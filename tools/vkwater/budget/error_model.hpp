@@ -3,7 +3,7 @@
 // six of the scenes that have a reference (tools/benchmarks/budget_error_terms.sh writes
 // docs/sweeps/budget_error_terms.csv): each entry is the largest relMSE excess any of those scenes
 // showed with that knob alone at that value, so the table errs towards overestimating. Terms add
-// up: docs/performance.md "The frame-time budget" checks that against combined settings.
+// up: docs/performance-log.md "The frame-time budget" checks that against combined settings.
 //
 // Two terms are more than one figure per knob value: the resolution scale's follows the rows
 // actually sampled, samples per pixel counted as rows (predict_error below), and the bilinear kernel's is measured at each photon
@@ -55,7 +55,7 @@ inline constexpr double kErrorTableRows = 300.0;
 // costs box itself 0.0036, and the viewer took it). So a measured term counts times the largest ratio
 // of the sweep's excess to the previews' for every term the sweep put above 0.0005
 // (tools/benchmarks/budget_previews.sh at 42810c3: the showcase pool's second layer, 0.00098328 over
-// 0.000658 = 1.494; lake's reflection lookup 1.478; docs/performance.md "The on/off knobs measured on
+// 0.000658 = 1.494; lake's reflection lookup 1.478; docs/performance-log.md "The on/off knobs measured on
 // the scene").
 inline constexpr double kMeasuredTermBound = 1.5;
 ErrorPrediction predict_error(const Quality& quality, const Quality& top, double output_rows = kErrorTableRows);
