@@ -26,7 +26,7 @@ Mesh make_box_mesh(const glm::dvec3& half_size);
 // UV sphere with smooth (radial) normals: (rings + 1) (segments + 1) vertices with a seam.
 Mesh make_sphere_mesh(double radius);
 
-// The procedural heightfield of a terrain receiver (scenes/README.md, "terrain"):
+// The procedural heightfield of a terrain receiver (scenes/README.md, "Terrain heightfield"):
 //   h(x, z) = height * sum_{i=0..3} w_i sin(k_i (x cos(theta_i) + z sin(theta_i)) + phi_i)
 // with w = (8, 4, 2, 1) / 15 (so |h| <= height), k_i = 2 pi 2^i / size, and theta_i, phi_i
 // = 2 pi u_{2i}, 2 pi u_{2i+1}, u_j the j-th output of splitmix64 seeded with `seed`, mapped
