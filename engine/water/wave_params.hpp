@@ -33,6 +33,8 @@ struct WaveComponent {
     double phase_deg = 0.0;      // phase offset
     double steepness = 0.0;  // 0: sine; (0, 1]: Gerstner (the total over all components <= 1 unless folding is allowed)
     double speed = -1.0;     // phase speed m/s; < 0: deep-water dispersion sqrt(g / k)
+
+    bool operator==(const WaveComponent&) const = default;
 };
 
 enum class OceanSpectrum : uint8_t { Phillips, Jonswap };

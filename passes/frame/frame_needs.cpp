@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace vkw {
 namespace {
@@ -194,6 +195,44 @@ void decide_scene_lookups(fg::FrameNeeds& needs, const Scene& scene, const Water
     decide_refraction_second_layer(needs, scene, bounds, trough, camera_may_be_above, camera_may_be_below);
 }
 
+// The waves' bound on the beams' modulation (engine/water/beam_modulation_bound.hpp) for a sum of
+// sines and Gerstner waves. It reads the surface's amplitude, slope and curvature bounds, which the
+// clock does not move, so it is kept, per thread, while the waves and the other inputs stay: a
+// running clock then builds neither the surface nor the bound. Right after a lavapipe frame the
+// two were most of the needs' time, for the code they run more than for their work
+// (docs/performance-log.md "The needs decided into the last frame's").
+const BeamModulationBound& waves_beam_bound(const Scene& scene, double depth) {
+    const Water& water = *scene.water;
+    const glm::dvec3 sigma_t = scene.medium.sigma_t();
+    const double most_sigma_t = std::max({sigma_t.x, sigma_t.y, sigma_t.z});
+    struct Kept {
+        bool valid = false;
+        std::vector<WaveComponent> components;
+        bool allow_folding = false;
+        glm::dvec3 sun{0.0};
+        double ior = 0.0, depth = 0.0, sigma_t = 0.0;
+        BeamModulationBound bound;
+    };
+    thread_local Kept kept;
+    if (kept.valid && kept.components == water.waves.components && kept.allow_folding == water.waves.allow_folding &&
+        kept.sun == scene.sun.direction && kept.ior == water.ior && kept.depth == depth &&
+        kept.sigma_t == most_sigma_t) {
+        return kept.bound;
+    }
+    kept.valid = false;  // until the new bound is made: make_surface may throw
+    const auto surface = make_surface(water.waves, water.level, water.time);
+    kept.bound = beam_modulation_bound({scene.sun.direction, water.ior, surface->max_amplitude(), surface->max_slope(),
+                                        surface->max_curvature(), depth, most_sigma_t});
+    kept.components = water.waves.components;
+    kept.allow_folding = water.waves.allow_folding;
+    kept.sun = scene.sun.direction;
+    kept.ior = water.ior;
+    kept.depth = depth;
+    kept.sigma_t = most_sigma_t;
+    kept.valid = true;
+    return kept.bound;
+}
+
 // Godrays (volume caustics): the sun's refracted beams scattered toward the camera, as lines
 // (passes/godrays/godrays.hpp). They need a lit, scattering medium in view. Without them the shading
 // adds the flat beams' analytic in-scatter (docs/model.md section 6), which differs from theirs by
@@ -242,11 +281,7 @@ void decide_godrays(fg::FrameNeeds& needs, const Scene& scene, const WaterBounds
             text += "the waves' beams: the FFT ocean gives no bound on its slope or curvature";
         });
     }
-    const auto surface = make_surface(water.waves, water.level, water.time);
-    const glm::dvec3 sigma_t = scene.medium.sigma_t();
-    const BeamModulationBound bound =
-        beam_modulation_bound({scene.sun.direction, water.ior, surface->max_amplitude(), surface->max_slope(),
-                               surface->max_curvature(), depth, std::max({sigma_t.x, sigma_t.y, sigma_t.z})});
+    const BeamModulationBound& bound = waves_beam_bound(scene, depth);
     if (!bound.bounded) {
         return rule(true, [&](std::string& text) {
             lit(text);

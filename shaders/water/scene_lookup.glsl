@@ -267,7 +267,7 @@ bool lookup_in(sampler2D view, bool peeled, uint method, bool mirrored, vec3 p, 
 // receiver meshes alone, so a ray that meets none of the boxes can find nothing in them: its lookup
 // is left out, and with it the lookup's false hits beside a silhouette. (In lake most reflected rays
 // rise past the few objects over the water. A GPU warp whose rays all miss skips the lookup; llvmpipe
-// runs it masked all the same, docs/performance.md "Lookups only for rays that can meet a receiver".)
+// runs it masked all the same, docs/performance-log.md "Lookups only for rays that can meet a receiver".)
 bool ray_meets_receiver_box(vec3 p, vec3 d, float max_distance) {
     // A zero component of d would make 0 * inf = NaN on a face: 1e-30 in its place gives the slab
     // of a ray parallel to it (all of it, or none, by where p lies), whatever its sign.

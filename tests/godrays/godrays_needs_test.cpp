@@ -15,6 +15,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace vkw {
@@ -152,6 +153,50 @@ TEST(godrays_needs, CulledJustBelowTheWavesBoundAndKeptJustAbove) {
     const auto above = godrays(needs_of(gentle_sine(1.03 * lo)));
     EXPECT_TRUE(above.needed) << above.reason;
     EXPECT_TRUE(says(above, "in-scatter change of at most")) << above.reason;
+}
+
+// The waves' bound is kept, per thread, while its inputs stay (passes/frame/frame_needs.cpp): a
+// running clock reuses it, and any other input changed alone must make it again. Each variant is
+// decided right after the base scene, and on a new thread, whose kept bound is empty: the two
+// decisions must be the same, and differ from the base's wherever the input is one the bound reads.
+TEST(godrays_needs, TheWavesBoundKeptWhileTheClockRunsFollowsEveryOtherInput) {
+    const auto sine = [](const std::string& fields) {
+        return R"(water.waves={"model": "sum", "components": [{)" + fields + "}]}";
+    };
+    const std::string base_waves = R"("amplitude": 0.002, "wavelength": 4, "direction_deg": 20)";
+    const std::vector<std::string> base = {sine(base_waves)};
+    struct Variant {
+        std::vector<std::string> overrides;
+        bool moves_the_bound;
+    };
+    const std::vector<Variant> variants = {
+        {{sine(base_waves), "water.time=7"}, false},
+        {{sine(base_waves + R"(, "phase_deg": 90)")}, false},
+        {{sine(R"("amplitude": 0.003, "wavelength": 4, "direction_deg": 20)")}, true},
+        {{sine(R"("amplitude": 0.002, "wavelength": 3, "direction_deg": 20)")}, true},
+        {{sine(R"("amplitude": 0.002, "wavelength": 4, "direction_deg": 20, "steepness": 0.05)")}, true},
+        {{sine(base_waves), "sun.elevation_deg=40"}, true},
+        {{sine(base_waves), "water.ior=1.4"}, true},
+        {{sine(base_waves), "floor.height=-3"}, true},
+        {{sine(base_waves), "medium.preset=turbid-harbour"}, true},
+    };
+    const fg::EffectDecision base_decision = godrays(needs_of(base));
+    ASSERT_TRUE(says(base_decision, "in-scatter change of at most")) << base_decision.reason;
+    for (const Variant& variant : variants) {
+        std::string where;
+        for (const std::string& o : variant.overrides) where += o + " ";
+        (void)needs_of(base);  // the base's bound kept
+        const fg::EffectDecision kept = godrays(needs_of(variant.overrides));
+        fg::EffectDecision fresh;
+        std::thread([&] { fresh = godrays(needs_of(variant.overrides)); }).join();
+        EXPECT_EQ(kept.needed, fresh.needed) << where;
+        EXPECT_EQ(kept.reason, fresh.reason) << where;
+        if (variant.moves_the_bound) {
+            EXPECT_NE(fresh.reason, base_decision.reason) << where;
+        } else {
+            EXPECT_EQ(fresh.reason, base_decision.reason) << where;
+        }
+    }
 }
 
 TEST(godrays_needs, NeededWhereTheBeamsFocusOrTheModelGivesNoBound) {
