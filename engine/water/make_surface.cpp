@@ -1,7 +1,9 @@
 // make_surface: picks the model of a WaveSettings (surface.hpp).
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <mutex>
+#include <vector>
 
 #include "engine/core/errors.hpp"
 #include "engine/water/fft_ocean_surface.hpp"
@@ -53,6 +55,28 @@ double frame_amplitude_bound(const WaveSettings& settings, double level, double 
         last = spectrum;
     }
     return last_bound;
+}
+
+double frame_slope_bound(const WaveSettings& settings, double level, double time) {
+    if (settings.model == WaveModel::FftOcean) return std::numeric_limits<double>::infinity();
+    if (settings.model == WaveModel::Flat) {
+        validate_waves(settings);
+        return 0.0;
+    }
+    thread_local bool kept = false;
+    thread_local std::vector<WaveComponent> kept_components;
+    thread_local bool kept_allow_folding = false;
+    thread_local double kept_slope = 0.0;
+    if (kept && kept_components == settings.components && kept_allow_folding == settings.allow_folding &&
+        std::isfinite(level) && std::isfinite(time)) {
+        return kept_slope;
+    }
+    kept = false;  // until the new bound is made: make_surface may throw
+    kept_slope = make_surface(settings, level, time)->max_slope();
+    kept_components = settings.components;
+    kept_allow_folding = settings.allow_folding;
+    kept = true;
+    return kept_slope;
 }
 
 }  // namespace vkw

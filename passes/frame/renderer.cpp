@@ -141,9 +141,7 @@ passes::CausticReadInputs caustic_read_inputs(const Scene& scene, double aspect,
     in.half_extent = water.half_extent;
     in.amplitude = amplitude;
     // The FFT ocean's fields have no slope bound (a CPU surface would cost its FFTs to build).
-    in.max_slope = water.waves.model == WaveModel::FftOcean
-                       ? std::numeric_limits<double>::infinity()
-                       : make_surface(water.waves, water.level, water.time)->max_slope();
+    in.max_slope = frame_slope_bound(water.waves, water.level, water.time);
     in.ior = water.ior;
     in.lowest_receiver = lowest_receiver;
     in.camera_may_be_in_water = needs.needs(Effect::UnderwaterView);

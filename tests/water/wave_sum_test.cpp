@@ -2,6 +2,7 @@
 // phase and dispersion conventions, Newton's height_at, and the steepness check.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/core/errors.hpp"
+#include "engine/water/surface.hpp"
 #include "engine/water/validate_waves.hpp"
 #include "engine/water/wave_sum_surface.hpp"
 #include "tests/water/water_test_support.hpp"
@@ -178,6 +180,42 @@ TEST(water_wave_sum, SteepnessSumAboveOneIsRefusedNamingTheField) {
     EXPECT_NE(message.find("sum over all waves <= 1"), std::string::npos) << message;
     EXPECT_THROW(WaveSumSurface(settings, 0.0, 0.0), UserError);
     EXPECT_THROW(make_surface(settings, 0.0, 0.0), UserError);
+}
+
+// frame_slope_bound (surface.hpp) is the surface's own max_slope(), kept per thread while the waves
+// stay: each setting, decided after a different one and again after itself, gives its surface's
+// bound bit for bit, whatever the clock.
+TEST(water_wave_sum, TheFramesSlopeBoundIsTheSurfacesOwnAndFollowsTheWaves) {
+    WaveComponent sine;
+    sine.amplitude = 0.05;
+    sine.wavelength = 2.0;
+    WaveComponent gerstner = sine;
+    gerstner.amplitude = 0.03;
+    gerstner.wavelength = 3.1;
+    gerstner.direction_deg = 40.0;
+    gerstner.steepness = 0.4;
+    std::vector<WaveSettings> settings(5);
+    for (WaveSettings& s : settings) s.model = WaveModel::Sum;
+    settings[0].components = {sine};
+    settings[1].components = {sine, gerstner};
+    settings[2].components = {sine, gerstner};
+    settings[2].components[1].direction_deg = 70.0;  // only a direction differs from [1]
+    settings[3].components = {sine};
+    settings[3].components[0].wavelength = 2.5;  // only a wavelength differs from [0]
+    settings[4].model = WaveModel::Flat;
+    for (int round = 0; round < 2; ++round) {
+        for (const WaveSettings& s : settings) {
+            for (const double time : {0.0, 3.7}) {
+                EXPECT_EQ(frame_slope_bound(s, 0.0, time), make_surface(s, 0.0, time)->max_slope())
+                    << "components " << s.components.size() << ", time " << time;
+            }
+        }
+    }
+    EXPECT_NE(frame_slope_bound(settings[1], 0.0, 0.0), frame_slope_bound(settings[2], 0.0, 0.0));
+    EXPECT_NE(frame_slope_bound(settings[0], 0.0, 0.0), frame_slope_bound(settings[3], 0.0, 0.0));
+    WaveSettings ocean;
+    ocean.model = WaveModel::FftOcean;
+    EXPECT_EQ(frame_slope_bound(ocean, 0.0, 0.0), std::numeric_limits<double>::infinity());
 }
 
 TEST(water_wave_sum, FoldingIsAcceptedWhenAllowed) {
