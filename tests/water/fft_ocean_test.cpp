@@ -228,13 +228,8 @@ TEST(water_ocean, TheFramesAmplitudeBoundIsTheSpectrumsAllTimeOneAndHoldsAtEvery
     // sines with a Gerstner term, and flat water (whose components are not read).
     WaveSettings sines;
     sines.model = WaveModel::Sum;
-    WaveComponent sine;
-    sine.amplitude = 0.05;
-    sine.wavelength = 2.0;
-    WaveComponent gerstner = sine;
-    gerstner.amplitude = 0.0301;
-    gerstner.wavelength = 3.1;
-    gerstner.steepness = 0.4;
+    const WaveComponent sine{.amplitude = 0.05, .wavelength = 2.0};
+    const WaveComponent gerstner{.amplitude = 0.0301, .wavelength = 3.1, .steepness = 0.4};
     sines.components = {sine};
     EXPECT_EQ(frame_amplitude_bound(sines, 0.0, 2.0), make_surface(sines, 0.0, 2.0)->max_amplitude());
     sines.components = {sine, gerstner, sine};

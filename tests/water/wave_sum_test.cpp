@@ -186,14 +186,8 @@ TEST(water_wave_sum, SteepnessSumAboveOneIsRefusedNamingTheField) {
 // stay: each setting, decided after a different one and again after itself, gives its surface's
 // bound bit for bit, whatever the clock.
 TEST(water_wave_sum, TheFramesSlopeBoundIsTheSurfacesOwnAndFollowsTheWaves) {
-    WaveComponent sine;
-    sine.amplitude = 0.05;
-    sine.wavelength = 2.0;
-    WaveComponent gerstner = sine;
-    gerstner.amplitude = 0.03;
-    gerstner.wavelength = 3.1;
-    gerstner.direction_deg = 40.0;
-    gerstner.steepness = 0.4;
+    const WaveComponent sine{.amplitude = 0.05, .wavelength = 2.0};
+    const WaveComponent gerstner{.amplitude = 0.03, .wavelength = 3.1, .direction_deg = 40.0, .steepness = 0.4};
     std::vector<WaveSettings> settings(5);
     for (WaveSettings& s : settings) s.model = WaveModel::Sum;
     settings[0].components = {sine};
