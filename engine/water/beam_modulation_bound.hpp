@@ -19,6 +19,8 @@ struct BeamModulationInputs {
     double curvature = 0.0;          // kappa: |u^T H u| <= kappa for unit horizontal u, 1/m
     double depth = 0.0;              // D: the deepest lit water below the mean level, m
     double sigma_t = 0.0;            // the medium's largest extinction coefficient, 1/m
+
+    bool operator==(const BeamModulationInputs&) const = default;
 };
 
 struct BeamModulationBound {

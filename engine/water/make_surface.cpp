@@ -57,26 +57,29 @@ double frame_amplitude_bound(const WaveSettings& settings, double level, double 
     return last_bound;
 }
 
-double frame_slope_bound(const WaveSettings& settings, double level, double time) {
-    if (settings.model == WaveModel::FftOcean) return std::numeric_limits<double>::infinity();
+ShapeBounds frame_shape_bounds(const WaveSettings& settings, double level, double time) {
+    if (settings.model == WaveModel::FftOcean) {
+        return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    }
     if (settings.model == WaveModel::Flat) {
         validate_waves(settings);
-        return 0.0;
+        return {};
     }
     thread_local bool kept = false;
     thread_local std::vector<WaveComponent> kept_components;
     thread_local bool kept_allow_folding = false;
-    thread_local double kept_slope = 0.0;
+    thread_local ShapeBounds kept_bounds;
     if (kept && kept_components == settings.components && kept_allow_folding == settings.allow_folding &&
         std::isfinite(level) && std::isfinite(time)) {
-        return kept_slope;
+        return kept_bounds;
     }
-    kept = false;  // until the new bound is made: make_surface may throw
-    kept_slope = make_surface(settings, level, time)->max_slope();
+    kept = false;  // until the new bounds are made: make_surface may throw
+    const std::unique_ptr<WaterSurface> surface = make_surface(settings, level, time);
+    kept_bounds = {surface->max_slope(), surface->max_curvature()};
     kept_components = settings.components;
     kept_allow_folding = settings.allow_folding;
     kept = true;
-    return kept_slope;
+    return kept_bounds;
 }
 
 }  // namespace vkw

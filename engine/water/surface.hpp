@@ -82,10 +82,15 @@ std::unique_ptr<WaterSurface> make_surface(const WaveSettings& settings, double 
 // costs a complex exponential per mode (65,536 of them at 256^2: milliseconds of CPU a frame).
 double frame_amplitude_bound(const WaveSettings& settings, double level, double time);
 
-// max_slope() of the surface, at a cost a frame can pay every time: the sums of sines and Gerstner
-// waves give their surface's own bound, which reads only the waves' amplitudes, wave vectors and
-// steepness (the clock does not move it), kept per thread while the waves stay, so that a running
-// clock builds no surface for it; flat water 0; the FFT ocean, which has no slope bound, +infinity.
-double frame_slope_bound(const WaveSettings& settings, double level, double time);
+// max_slope() and max_curvature() of the surface, at a cost a frame can pay every time: the sums of
+// sines and Gerstner waves give their surface's own bounds, which read only the waves' amplitudes,
+// wave vectors and steepness (the clock does not move them), kept per thread while the waves stay,
+// so that a running clock builds no surface for them; flat water 0; the FFT ocean, which has
+// neither bound, +infinity.
+struct ShapeBounds {
+    double slope = 0.0;
+    double curvature = 0.0;
+};
+ShapeBounds frame_shape_bounds(const WaveSettings& settings, double level, double time);
 
 }  // namespace vkw

@@ -11,7 +11,6 @@
 #include <optional>
 #include <string>
 #include <string_view>
-#include <vector>
 
 namespace vkw {
 namespace {
@@ -196,41 +195,31 @@ void decide_scene_lookups(fg::FrameNeeds& needs, const Scene& scene, const Water
 }
 
 // The waves' bound on the beams' modulation (engine/water/beam_modulation_bound.hpp) for a sum of
-// sines and Gerstner waves. It reads the surface's amplitude, slope and curvature bounds, which the
-// clock does not move, so it is kept, per thread, while the waves and the other inputs stay: a
-// running clock then builds neither the surface nor the bound. Right after a lavapipe frame the
-// two were most of the needs' time, for the code they run more than for their work
-// (docs/performance-log.md "The needs decided into the last frame's").
+// sines and Gerstner waves. Its inputs are the waves' amplitude, slope and curvature bounds (kept
+// while the waves stay: frame_shape_bounds), the sun, the water and its depth, none of which the
+// clock moves, so it is kept, per thread, while they stay: a running clock then runs neither the
+// surface's bounds nor this one. Right after a lavapipe frame the two were most of the needs' time,
+// for the code they run more than for their work (docs/performance-log.md "The needs decided into
+// the last frame's").
 const BeamModulationBound& waves_beam_bound(const Scene& scene, double depth) {
     const Water& water = *scene.water;
     const glm::dvec3 sigma_t = scene.medium.sigma_t();
-    const double most_sigma_t = std::max({sigma_t.x, sigma_t.y, sigma_t.z});
-    struct Kept {
-        bool valid = false;
-        std::vector<WaveComponent> components;
-        bool allow_folding = false;
-        glm::dvec3 sun{0.0};
-        double ior = 0.0, depth = 0.0, sigma_t = 0.0;
-        BeamModulationBound bound;
-    };
-    thread_local Kept kept;
-    if (kept.valid && kept.components == water.waves.components && kept.allow_folding == water.waves.allow_folding &&
-        kept.sun == scene.sun.direction && kept.ior == water.ior && kept.depth == depth &&
-        kept.sigma_t == most_sigma_t) {
-        return kept.bound;
+    const ShapeBounds shape = frame_shape_bounds(water.waves, water.level, water.time);
+    const BeamModulationInputs inputs{scene.sun.direction,
+                                      water.ior,
+                                      frame_amplitude_bound(water.waves, water.level, water.time),
+                                      shape.slope,
+                                      shape.curvature,
+                                      depth,
+                                      std::max({sigma_t.x, sigma_t.y, sigma_t.z})};
+    thread_local std::optional<BeamModulationInputs> kept_inputs;
+    thread_local BeamModulationBound kept_bound;
+    if (kept_inputs != inputs) {
+        kept_inputs.reset();  // until the new bound is made
+        kept_bound = beam_modulation_bound(inputs);
+        kept_inputs = inputs;
     }
-    kept.valid = false;  // until the new bound is made: make_surface may throw
-    const auto surface = make_surface(water.waves, water.level, water.time);
-    kept.bound = beam_modulation_bound({scene.sun.direction, water.ior, surface->max_amplitude(), surface->max_slope(),
-                                        surface->max_curvature(), depth, most_sigma_t});
-    kept.components = water.waves.components;
-    kept.allow_folding = water.waves.allow_folding;
-    kept.sun = scene.sun.direction;
-    kept.ior = water.ior;
-    kept.depth = depth;
-    kept.sigma_t = most_sigma_t;
-    kept.valid = true;
-    return kept.bound;
+    return kept_bound;
 }
 
 // Godrays (volume caustics): the sun's refracted beams scattered toward the camera, as lines

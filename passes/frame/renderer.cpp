@@ -141,7 +141,7 @@ passes::CausticReadInputs caustic_read_inputs(const Scene& scene, double aspect,
     in.half_extent = water.half_extent;
     in.amplitude = amplitude;
     // The FFT ocean's fields have no slope bound (a CPU surface would cost its FFTs to build).
-    in.max_slope = frame_slope_bound(water.waves, water.level, water.time);
+    in.max_slope = frame_shape_bounds(water.waves, water.level, water.time).slope;
     in.ior = water.ior;
     in.lowest_receiver = lowest_receiver;
     in.camera_may_be_in_water = needs.needs(Effect::UnderwaterView);

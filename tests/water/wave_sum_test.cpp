@@ -182,10 +182,10 @@ TEST(water_wave_sum, SteepnessSumAboveOneIsRefusedNamingTheField) {
     EXPECT_THROW(make_surface(settings, 0.0, 0.0), UserError);
 }
 
-// frame_slope_bound (surface.hpp) is the surface's own max_slope(), kept per thread while the waves
-// stay: each setting, decided after a different one and again after itself, gives its surface's
-// bound bit for bit, whatever the clock.
-TEST(water_wave_sum, TheFramesSlopeBoundIsTheSurfacesOwnAndFollowsTheWaves) {
+// frame_shape_bounds (surface.hpp) are the surface's own max_slope() and max_curvature(), kept per
+// thread while the waves stay: each setting, asked after a different one and again after itself,
+// gives its surface's bounds bit for bit, whatever the clock.
+TEST(water_wave_sum, TheFramesShapeBoundsAreTheSurfacesOwnAndFollowTheWaves) {
     const WaveComponent sine{.amplitude = 0.05, .wavelength = 2.0};
     const WaveComponent gerstner{.amplitude = 0.03, .wavelength = 3.1, .direction_deg = 40.0, .steepness = 0.4};
     std::vector<WaveSettings> settings(5);
@@ -200,16 +200,21 @@ TEST(water_wave_sum, TheFramesSlopeBoundIsTheSurfacesOwnAndFollowsTheWaves) {
     for (int round = 0; round < 2; ++round) {
         for (const WaveSettings& s : settings) {
             for (const double time : {0.0, 3.7}) {
-                EXPECT_EQ(frame_slope_bound(s, 0.0, time), make_surface(s, 0.0, time)->max_slope())
+                const ShapeBounds bounds = frame_shape_bounds(s, 0.0, time);
+                const auto surface = make_surface(s, 0.0, time);
+                EXPECT_EQ(bounds.slope, surface->max_slope())
+                    << "components " << s.components.size() << ", time " << time;
+                EXPECT_EQ(bounds.curvature, surface->max_curvature())
                     << "components " << s.components.size() << ", time " << time;
             }
         }
     }
-    EXPECT_NE(frame_slope_bound(settings[1], 0.0, 0.0), frame_slope_bound(settings[2], 0.0, 0.0));
-    EXPECT_NE(frame_slope_bound(settings[0], 0.0, 0.0), frame_slope_bound(settings[3], 0.0, 0.0));
+    EXPECT_NE(frame_shape_bounds(settings[1], 0.0, 0.0).slope, frame_shape_bounds(settings[2], 0.0, 0.0).slope);
+    EXPECT_NE(frame_shape_bounds(settings[0], 0.0, 0.0).slope, frame_shape_bounds(settings[3], 0.0, 0.0).slope);
     WaveSettings ocean;
     ocean.model = WaveModel::FftOcean;
-    EXPECT_EQ(frame_slope_bound(ocean, 0.0, 0.0), std::numeric_limits<double>::infinity());
+    EXPECT_EQ(frame_shape_bounds(ocean, 0.0, 0.0).slope, std::numeric_limits<double>::infinity());
+    EXPECT_EQ(frame_shape_bounds(ocean, 0.0, 0.0).curvature, std::numeric_limits<double>::infinity());
 }
 
 TEST(water_wave_sum, FoldingIsAcceptedWhenAllowed) {
