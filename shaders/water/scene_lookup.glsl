@@ -16,6 +16,8 @@
 // finds nothing, or a surface it passes behind (behind a receiver that floats through the surface,
 // behind a ridge), is marched again through the peeled view: the second layer where it shows
 // something, else the first.
+// Both end on one texel of the view; what the hit shows is then read between that texel and its
+// neighbours on the same surface (filter_hit), not copied from the one texel.
 #ifndef VKWATER_SCENE_LOOKUP_GLSL
 #define VKWATER_SCENE_LOOKUP_GLSL
 
@@ -318,29 +320,20 @@ bool refracted_lookup(uint method, vec3 p, vec3 d, float max_distance, int max_s
     return true;
 }
 
-
-// The texel of the view at integer coordinates; peeled: of the refraction view's second layer alone.
-// (Without the second layer nothing is peeled: the specialization constant lets the compiler drop
-// the second layer's fetch, which llvmpipe would otherwise run beside the first.)
-vec4 view_texel_at(sampler2D view, bool peeled, ivec2 texel) {
-    return REFRACTION_SECOND_LAYER != 0u && peeled ? texelFetch(refraction_view_behind, texel, 0)
-                                                   : texelFetch(view, texel, 0);
-}
-
-// The view bilinearly at uv over the four texels around it that show the surface seen at distance
+// `texels` bilinearly at uv over the four texels around it that show the surface seen at distance
 // `shown` (a distance from the eye within SCENE_VIEW_THICKNESS of it), their weights renormalised:
 // texels base plus (0, 0), (1, 0), (0, 1) and (1, 1) with `weights`, and the radiance (rgb) and
 // distance (a) they give. False where none of the four shows that surface.
-bool read_surface_between_texels(sampler2D view, bool peeled, vec2 uv, float shown, out ivec2 base, out vec4 weights,
+bool read_surface_between_texels(sampler2D texels, vec2 uv, float shown, out ivec2 base, out vec4 weights,
                                  out vec4 value) {
-    const ivec2 size = textureSize(view, 0);
+    const ivec2 size = textureSize(texels, 0);
     const vec2 position = uv * vec2(size) - 0.5;  // in texels, from the first texel's centre
     base = ivec2(floor(position));
     const vec2 t = position - vec2(base);
     weights = vec4((1.0 - t.x) * (1.0 - t.y), t.x * (1.0 - t.y), (1.0 - t.x) * t.y, t.x * t.y);
     value = vec4(0.0);
     for (int i = 0; i < 4; ++i) {
-        const vec4 texel = view_texel_at(view, peeled, clamp(base + ivec2(i & 1, i >> 1), ivec2(0), size - 1));
+        const vec4 texel = texelFetch(texels, clamp(base + ivec2(i & 1, i >> 1), ivec2(0), size - 1), 0);
         const bool same_surface = texel.a > 0.0 && abs(texel.a - shown) <= SCENE_VIEW_THICKNESS * shown;
         weights[i] = same_surface ? weights[i] : 0.0;
         value += weights[i] * texel;
@@ -352,11 +345,22 @@ bool read_surface_between_texels(sampler2D view, bool peeled, vec2 uv, float sho
     return true;
 }
 
+// The same in the view a hit was found in: peeled, the refraction view's second layer alone. (One
+// branch per hit rather than a choice per texel, which llvmpipe would run as both fetches; without
+// the second layer the specialization constant leaves the branch out.)
+bool read_hit_surface(sampler2D view, bool peeled, vec2 uv, float shown, out ivec2 base, out vec4 weights,
+                      out vec4 value) {
+    if (REFRACTION_SECOND_LAYER != 0u && peeled) {
+        return read_surface_between_texels(refraction_view_behind, uv, shown, base, weights, value);
+    }
+    return read_surface_between_texels(view, uv, shown, base, weights, value);
+}
+
 // A hit's radiance read between the view's texels. The lookups end on one texel; its radiance alone
 // would be copied to every pixel whose ray lands in that texel, so where the waves magnify what lies
 // under them each texel shows as a block, and a caustic's focal line on a receiver as steps. Instead
 // it is read bilinearly where the ray's point at the hit projects, over the texels around it that
-// show the surface the hit's texel shows (read_surface_between_texels: across a silhouette the other
+// show the surface the hit's texel shows (read_hit_surface: across a silhouette the other
 // side is left out, so edges stay where the lookup puts them). Where none of them shows that surface
 // the hit keeps its own texel. (One more fixed-point step on the bilinear surface first lowered lake's
 // error by a further 1-3% for 3-24% more of the water pass on lavapipe: docs/accuracy.md, "Hits read
@@ -366,7 +370,7 @@ void filter_hit(sampler2D view, bool mirrored, vec3 p, vec3 d, inout SceneHit hi
     ivec2 base;
     vec4 weights, value;
     if (!scene_view_uv(p + hit.distance * d, mirrored, uv) ||
-        !read_surface_between_texels(view, hit.peeled, uv, hit.shown, base, weights, value)) {
+        !read_hit_surface(view, hit.peeled, uv, hit.shown, base, weights, value)) {
         return;
     }
     hit.radiance = value.rgb;
@@ -391,18 +395,21 @@ bool scene_lookup(uint method, bool reflected, vec3 p, vec3 d, float max_distanc
 }
 
 #ifdef VKWATER_CAUSTIC_LAYER
-// The caustic layer's value on what a refracted ray's hit shows.
-// Read from the texels and with the weights the hit's radiance was read with (filter_hit).
-vec3 refraction_view_caustic_at(SceneHit hit) {
-    const ivec2 size = textureSize(refraction_view_caustic, 0);
+// `layer` at the texels and with the weights a hit's radiance was read with (filter_hit).
+vec3 caustic_between_texels(sampler2D layer, SceneHit hit) {
+    const ivec2 size = textureSize(layer, 0);
     vec3 caustic = vec3(0.0);
     for (int i = 0; i < 4; ++i) {
-        const ivec2 texel = clamp(hit.texel_base + ivec2(i & 1, i >> 1), ivec2(0), size - 1);
-        caustic += hit.texel_weights[i] * (REFRACTION_SECOND_LAYER != 0u && hit.peeled
-                                               ? texelFetch(refraction_view_behind_caustic, texel, 0).rgb
-                                               : texelFetch(refraction_view_caustic, texel, 0).rgb);
+        caustic += hit.texel_weights[i] *
+                   texelFetch(layer, clamp(hit.texel_base + ivec2(i & 1, i >> 1), ivec2(0), size - 1), 0).rgb;
     }
     return caustic;
+}
+
+// The caustic layer's value on what a refracted ray's hit shows.
+vec3 refraction_view_caustic_at(SceneHit hit) {
+    if (REFRACTION_SECOND_LAYER != 0u && hit.peeled) return caustic_between_texels(refraction_view_behind_caustic, hit);
+    return caustic_between_texels(refraction_view_caustic, hit);
 }
 #endif
 

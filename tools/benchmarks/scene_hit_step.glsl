@@ -5,7 +5,7 @@
     ivec2 stepped_base;
     vec4 stepped_weights, stepped_value;
     if (scene_view_uv(p + s * d, mirrored, stepped_uv) &&
-        read_surface_between_texels(view, hit.peeled, stepped_uv, hit.shown, stepped_base, stepped_weights,
+        read_hit_surface(view, hit.peeled, stepped_uv, hit.shown, stepped_base, stepped_weights,
                                     stepped_value)) {
         hit.distance = s;
         base = stepped_base;
